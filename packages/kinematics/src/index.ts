@@ -1,0 +1,19 @@
+export { getStepsPerCm, PI, V1_GEOMETRY, wheelCircumferenceCm } from './geometry.js';
+export type { MotionLimits, RobotGeometry } from './geometry.js';
+export {
+  calculateArcSpeeds,
+  distanceToSteps,
+  exactStepsForDistance,
+  rotationArcCm,
+  rotationToSteps,
+  StepAccumulator,
+  stepsToDistance,
+  truncateSteps,
+  velocityToStepsPerSecond,
+} from './steps.js';
+export type { WheelPair } from './steps.js';
+export { calculateMoveDuration, toMicros, TrapezoidalProfile, VelocityProfile } from './profile.js';
+export { MovePlan, VelocityPlan } from './planner.js';
+export type { StepPlan } from './planner.js';
+export { integrateOdometry, normalizeAngle, OdometryIntegrator } from './odometry.js';
+export type { PlanarPose } from './odometry.js';

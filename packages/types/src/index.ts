@@ -1,0 +1,111 @@
+export {
+  HAL_ERROR_CODES,
+  HalError,
+  HalErrorCodeSchema,
+  isHalError,
+  toHalError,
+} from './errors.js';
+export type { HalErrorCode, HalErrorDetails, HalErrorOptions } from './errors.js';
+
+export { HALModeSchema } from './mode.js';
+export type { HALMode } from './mode.js';
+
+export { HALToolResultSchema, failureResult, successResult } from './result.js';
+export type { HALToolResult } from './result.js';
+
+export {
+  ConnectionConfigSchema,
+  HALConfigSchema,
+  RobotConfigSchema,
+  V1_ROBOT,
+  maxDistancePerCommandCm,
+  maxLinearSpeedMPerS,
+  maxRotationPerCommandDeg,
+  robotConfig,
+  stepsPerCm,
+} from './robot-config.js';
+export type { ConnectionConfig, HALConfig, RobotConfig } from './robot-config.js';
+
+export {
+  DetectedObjectSchema,
+  DeviceInfoSchema,
+  DistanceSensorsSchema,
+  IMUReadingSchema,
+  PoseSchema,
+  SafetyStatusSchema,
+  ScanResultSchema,
+  ValueSourceSchema,
+  Vector3Schema,
+} from './pose.js';
+export type {
+  DeviceInfo,
+  DistanceSensors,
+  IMUReading,
+  Pose,
+  SafetyStatus,
+  ScanResult,
+  ValueSource,
+  Vector3,
+} from './pose.js';
+
+export type {
+  CommunicationInterface,
+  HALLogLevel,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  ManipulationInterface,
+  SafetyInterface,
+  VisionInterface,
+} from './interfaces.js';
+
+export {
+  DriveParamsSchema,
+  EmergencyStopParamsSchema,
+  MOTION_CALLS,
+  MoveDistanceParamsSchema,
+  MoveToParamsSchema,
+  PlaySoundParamsSchema,
+  RotateParamsSchema,
+  SetLEDParamsSchema,
+  SpeakParamsSchema,
+  V1_CALL_SCHEMAS,
+  createCallSchemas,
+} from './schemas/calls.js';
+export type {
+  CallName,
+  CallParams,
+  CallSchemas,
+  DriveParams,
+  EmergencyStopParams,
+  MoveDistanceParams,
+  MoveToParams,
+  PlaySoundParams,
+  RotateParams,
+  SetLEDParams,
+  SpeakParams,
+} from './schemas/calls.js';
+
+export { HalBoundary } from './validation.js';
+export type { HalBoundaryOptions } from './validation.js';
+
+export {
+  CAPABILITIES,
+  findCapability,
+  formatCapability,
+  hasCapability,
+  isCapabilityCompatible,
+  parseCapability,
+} from './capabilities.js';
+export type { Capability } from './capabilities.js';
+
+export {
+  EnvelopeSchema,
+  HAL_MAJOR,
+  HAL_MINOR,
+  HalErrorPayloadSchema,
+  buildSubject,
+  makeEnvelope,
+  parseEnvelope,
+  parseSubject,
+} from './envelope.js';
+export type { Envelope, HalErrorPayload, SubjectParts } from './envelope.js';

@@ -1,0 +1,104 @@
+import { z } from 'zod';
+
+const finite = z.number();
+
+export const Vector3Schema = z
+  .object({ x: finite, y: finite, z: finite })
+  .describe('A vector in the robot frame (REP-103: x forward, y left, z up)');
+export type Vector3 = z.infer<typeof Vector3Schema>;
+
+/**
+ * Where the robot is, which way it faces and how fast it goes. Frame REP-103: x forward, y left,
+ * z up; yaw counter-clockwise positive. Position in metres, angles in radians, yaw in (-pi, pi].
+ */
+export const PoseSchema = z
+  .object({
+    position: z
+      .object({
+        x: finite.describe('metres, forward from the start'),
+        y: finite.describe('metres, left of the start'),
+        z: finite.describe('metres, up'),
+      })
+      .describe('Position, metres'),
+    rotation: z
+      .object({
+        yaw: finite.describe('radians, counter-clockwise positive, (-pi, pi]'),
+        pitch: finite.describe('radians'),
+        roll: finite.describe('radians'),
+      })
+      .describe('Orientation, radians'),
+    velocity: z
+      .object({
+        linear: finite.describe('m/s, forward positive'),
+        angular: finite.describe('rad/s, counter-clockwise positive'),
+      })
+      .describe('Current velocity'),
+  })
+  .describe('Robot pose, REP-103 frame');
+export type Pose = z.infer<typeof PoseSchema>;
+
+/** Where a value comes from, when it is not a direct measurement (e.g. heading from odometry). */
+export const ValueSourceSchema = z
+  .enum(['sensor', 'odometry', 'simulation', 'unavailable'])
+  .describe('Where the reading comes from');
+export type ValueSource = z.infer<typeof ValueSourceSchema>;
+
+export const DistanceSensorsSchema = z
+  .object({
+    front: finite.describe('metres to the nearest obstacle ahead'),
+    left: finite.describe('metres to the nearest obstacle on the left'),
+    right: finite.describe('metres to the nearest obstacle on the right'),
+    frontLeft: finite.optional().describe('metres, 45 degrees left'),
+    frontRight: finite.optional().describe('metres, 45 degrees right'),
+    source: ValueSourceSchema.optional(),
+  })
+  .describe('Range readings, metres (the sensor\'s maximum range when nothing is in range)');
+export type DistanceSensors = z.infer<typeof DistanceSensorsSchema>;
+
+export const IMUReadingSchema = z
+  .object({
+    acceleration: Vector3Schema.describe('m/s^2, robot frame'),
+    gyroscope: Vector3Schema.describe('rad/s, robot frame'),
+    heading: finite.describe('radians, counter-clockwise positive, (-pi, pi]'),
+    source: ValueSourceSchema.optional(),
+  })
+  .describe('Inertial reading');
+export type IMUReading = z.infer<typeof IMUReadingSchema>;
+
+export const DetectedObjectSchema = z.object({
+  id: z.string(),
+  type: z.string(),
+  position: Vector3Schema.describe('metres, world frame'),
+  confidence: z.number().min(0).max(1),
+});
+
+export const ScanResultSchema = z
+  .object({
+    objects: z.array(DetectedObjectSchema),
+    clearAhead: z.boolean().describe('True when nothing is within the clearance distance ahead'),
+    nearestObstacle: finite.optional().describe('metres'),
+    source: ValueSourceSchema.optional(),
+  })
+  .describe('Environment scan');
+export type ScanResult = z.infer<typeof ScanResultSchema>;
+
+export const SafetyStatusSchema = z
+  .object({
+    emergencyStopped: z.boolean(),
+    batteryLevel: z.number().min(0).max(100).describe('percent; 100 where the robot has no gauge'),
+    temperature: finite.optional().describe('degrees Celsius'),
+    errors: z.array(z.string()).describe('Active faults and recorded safety trips'),
+    emergencyStopReason: z.string().optional(),
+  })
+  .describe('Safety state');
+export type SafetyStatus = z.infer<typeof SafetyStatusSchema>;
+
+export const DeviceInfoSchema = z
+  .object({
+    id: z.string(),
+    type: z.string(),
+    mode: z.enum(['simulation', 'physical', 'hybrid']),
+    capabilities: z.array(z.string()),
+  })
+  .describe('Who the robot is and what it can do');
+export type DeviceInfo = z.infer<typeof DeviceInfoSchema>;

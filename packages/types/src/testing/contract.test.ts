@@ -1,0 +1,4 @@
+import { describeHalContract } from './contract.js';
+import { ReferenceHAL } from './reference-hal.fixture.js';
+
+describeHalContract('ReferenceHAL', { create: () => new ReferenceHAL() });

@@ -1,0 +1,2 @@
+export { describeHalContract } from './contract.js';
+export type { HalContractOptions } from './contract.js';

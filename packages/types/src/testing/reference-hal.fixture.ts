@@ -1,0 +1,140 @@
+// A minimal, ideal HAL used only to prove the contract suite: motions complete instantly and
+// exactly. Not exported; real HALs live in @hal/simulation and @hal/physical.
+import { CAPABILITIES } from '../capabilities.js';
+import { HalError } from '../errors.js';
+import type {
+  CommunicationInterface,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  SafetyInterface,
+  VisionInterface,
+} from '../interfaces.js';
+import type { DeviceInfo, Pose, SafetyStatus } from '../pose.js';
+import type { HALToolResult } from '../result.js';
+import { maxLinearSpeedMPerS, V1_ROBOT } from '../robot-config.js';
+import { HalBoundary } from '../validation.js';
+
+function wrap(angle: number): number {
+  const a = Math.atan2(Math.sin(angle), Math.cos(angle));
+  return a === -Math.PI ? Math.PI : a;
+}
+
+export class ReferenceHAL implements HardwareAbstractionLayer {
+  readonly mode = 'simulation' as const;
+  readonly locomotion: LocomotionInterface;
+  readonly vision: VisionInterface;
+  readonly communication: CommunicationInterface;
+  readonly safety: SafetyInterface;
+  /** Every message passed to communication.log, for tests. */
+  readonly logged: string[] = [];
+
+  #ready = false;
+  #estop = false;
+  #x = 0;
+  #y = 0;
+  #yaw = 0;
+  readonly #boundary = new HalBoundary({
+    mode: this.mode,
+    config: () => V1_ROBOT,
+    isEmergencyStopped: () => this.#estop,
+    isReady: () => this.#ready,
+  });
+
+  constructor() {
+    const b = this.#boundary;
+    const forward = (cm: number) => {
+      this.#x += (cm / 100) * Math.cos(this.#yaw);
+      this.#y += (cm / 100) * Math.sin(this.#yaw);
+    };
+    this.locomotion = {
+      drive: (left, right, durationMs) =>
+        b.call('drive', { left, right, durationMs }, async (p) => {
+          const seconds = (p.durationMs ?? 0) / 1000;
+          const v = (maxLinearSpeedMPerS(V1_ROBOT) * 100) / 255;
+          const dl = p.left * v * seconds;
+          const dr = p.right * v * seconds;
+          this.#yaw = wrap(this.#yaw + (dr - dl) / V1_ROBOT.wheelBaseCm);
+          forward((dl + dr) / 2);
+        }),
+      moveTo: (x, y, z, speed) =>
+        b.call('moveTo', { x, y, z, speed }, async (p) => {
+          this.#yaw = Math.atan2(p.y - this.#y, p.x - this.#x);
+          this.#x = p.x;
+          this.#y = p.y;
+        }),
+      rotate: (direction, degrees) =>
+        b.call('rotate', { direction, degrees }, async (p) => {
+          const sign = p.direction === 'left' ? 1 : -1;
+          this.#yaw = wrap(this.#yaw + (sign * p.degrees * Math.PI) / 180);
+        }),
+      moveForward: (distanceCm) => b.call('moveForward', { distanceCm }, async (p) => forward(p.distanceCm)),
+      moveBackward: (distanceCm) => b.call('moveBackward', { distanceCm }, async (p) => forward(-p.distanceCm)),
+      stop: () => b.call('stop', {}, async () => undefined),
+      getPose: async (): Promise<Pose> => ({
+        position: { x: this.#x, y: this.#y, z: 0 },
+        rotation: { yaw: this.#yaw, pitch: 0, roll: 0 },
+        velocity: { linear: 0, angular: 0 },
+      }),
+    };
+    const lacks = (what: string) => () =>
+      Promise.reject(new HalError('NOT_IMPLEMENTED', `the reference robot has no ${what}`));
+    this.vision = {
+      captureFrame: lacks('camera'),
+      scan: lacks('range sensors'),
+      getDistanceSensors: lacks('range sensors'),
+      getLineSensors: lacks('line sensors'),
+      getIMU: async () => ({
+        acceleration: { x: 0, y: 0, z: 0 },
+        gyroscope: { x: 0, y: 0, z: 0 },
+        heading: this.#yaw,
+        source: 'odometry' as const,
+      }),
+    };
+    const notImplemented = (what: string): Promise<HALToolResult> =>
+      b.call('stop', {}, async () => {
+        throw new HalError('NOT_IMPLEMENTED', `the reference robot has no ${what}`);
+      });
+    this.communication = {
+      speak: () => notImplemented('speaker'),
+      playSound: () => notImplemented('speaker'),
+      setLED: (r, g, bl, pattern) => b.call('setLED', { r, g, b: bl, pattern }, async () => undefined),
+      log: (message) => {
+        this.logged.push(message);
+      },
+    };
+    this.safety = {
+      emergencyStop: (reason) =>
+        b.call('stop', {}, async () => {
+          this.#estop = true;
+          return reason === undefined ? {} : { reason };
+        }),
+      isEmergencyStopped: () => this.#estop,
+      resetEmergencyStop: () =>
+        b.call('stop', {}, async () => {
+          this.#estop = false;
+        }),
+      getSafetyStatus: (): SafetyStatus => ({ emergencyStopped: this.#estop, batteryLevel: 100, errors: [] }),
+    };
+  }
+
+  async initialize(): Promise<void> {
+    this.#ready = true;
+  }
+
+  async cleanup(): Promise<void> {
+    this.#ready = false;
+  }
+
+  isReady(): boolean {
+    return this.#ready;
+  }
+
+  getDeviceInfo(): DeviceInfo {
+    return {
+      id: 'reference-1',
+      type: 'reference',
+      mode: this.mode,
+      capabilities: [CAPABILITIES.differentialDrive, CAPABILITIES.led, CAPABILITIES.emergencyStop],
+    };
+  }
+}

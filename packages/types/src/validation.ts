@@ -1,0 +1,150 @@
+import type { z } from 'zod';
+import { HalError } from './errors.js';
+import type { HALMode } from './mode.js';
+import { failureResult, successResult } from './result.js';
+import type { HALToolResult } from './result.js';
+import type { RobotConfig } from './robot-config.js';
+import { createCallSchemas, MOTION_CALLS } from './schemas/calls.js';
+import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
+
+function describeValue(value: unknown): string {
+  if (typeof value === 'number' || typeof value === 'boolean') return String(value);
+  if (typeof value === 'string') return JSON.stringify(value.length > 40 ? `${value.slice(0, 40)}...` : value);
+  if (value === undefined) return 'nothing';
+  if (value === null) return 'null';
+  return Array.isArray(value) ? 'an array' : `a ${typeof value}`;
+}
+
+function valueAt(input: unknown, path: readonly PropertyKey[]): unknown {
+  let current: unknown = input;
+  for (const key of path) {
+    if (current === null || typeof current !== 'object') return undefined;
+    current = (current as Record<PropertyKey, unknown>)[key];
+  }
+  return current;
+}
+
+/**
+ * Turns the first zod issue into a HalError whose message names the parameter and the limit.
+ * Out-of-range finite numbers are RANGE_EXCEEDED; everything else (NaN, Infinity, wrong type,
+ * missing, unknown enum value) is INVALID_PARAMETER.
+ */
+function issueToError(call: CallName, schema: z.ZodType, args: unknown, issue: z.core.$ZodIssue): HalError {
+  const name = issue.path.map(String).join('.') || 'arguments';
+  const received = valueAt(args, issue.path);
+  const shape = (schema as unknown as { shape?: Record<string, z.ZodType> }).shape;
+  const field = shape?.[String(issue.path[0])];
+  const meaning = field?.description ? ` (${field.description})` : '';
+  const details = { call, parameter: name, received: describeValue(received) };
+  if (issue.code === 'too_big' || issue.code === 'too_small') {
+    const limit = Number(issue.code === 'too_big' ? issue.maximum : issue.minimum);
+    const inclusive = issue.inclusive !== false;
+    const bound =
+      issue.code === 'too_big'
+        ? `${inclusive ? 'at most' : 'less than'} ${limit}`
+        : `${inclusive ? 'at least' : 'greater than'} ${limit}`;
+    if (typeof received === 'number') {
+      return new HalError(
+        'RANGE_EXCEEDED',
+        `${call}: "${name}" must be ${bound}, got ${received}${meaning}`,
+        { details: { ...details, limit, bound: issue.code === 'too_big' ? 'max' : 'min' } },
+      );
+    }
+    return new HalError('INVALID_PARAMETER', `${call}: "${name}" must be ${bound} long${meaning}`, {
+      details: { ...details, limit },
+    });
+  }
+  const why =
+    typeof received === 'number' && !Number.isFinite(received)
+      ? `must be a finite number, got ${received}`
+      : issue.code === 'invalid_value'
+        ? `must be one of ${issue.values.map((v) => JSON.stringify(v)).join(', ')}, got ${describeValue(received)}`
+        : `is invalid: ${issue.message}, got ${describeValue(received)}`;
+  return new HalError('INVALID_PARAMETER', `${call}: "${name}" ${why}${meaning}`, { details });
+}
+
+/** What a {@link HalBoundary} needs to know about the HAL it guards. */
+export interface HalBoundaryOptions {
+  /** Which world the HAL drives (stamped on every result). */
+  mode: HALMode;
+  /** The robot's current configuration; limits are read from it on every call. */
+  config: () => RobotConfig;
+  /** Whether the emergency stop is latched. */
+  isEmergencyStopped: () => boolean;
+  /** Whether the HAL is initialised and reachable. */
+  isReady: () => boolean;
+  /** The clock results are stamped with, ms. Default `Date.now`. */
+  now?: () => number;
+}
+
+/**
+ * Safety layer 2, shared by every HAL implementation: each public call goes through `call()`,
+ * which refuses before anything moves (not ready, emergency-stopped motion, bad parameters),
+ * runs the body with validated parameters, times it, and converts whatever is thrown into a
+ * failed {@link HALToolResult} once, here.
+ */
+export class HalBoundary {
+  readonly #options: HalBoundaryOptions;
+  readonly #now: () => number;
+  #schemasFor: RobotConfig | undefined;
+  #schemas: CallSchemas | undefined;
+
+  constructor(options: HalBoundaryOptions) {
+    this.#options = options;
+    this.#now = options.now ?? Date.now;
+  }
+
+  /** The call schemas for the robot's current configuration (rebuilt only when it changes). */
+  schemas(): CallSchemas {
+    const config = this.#options.config();
+    if (this.#schemas === undefined || this.#schemasFor !== config) {
+      this.#schemas = createCallSchemas(config);
+      this.#schemasFor = config;
+    }
+    return this.#schemas;
+  }
+
+  /** Validates a call's parameters; throws a HalError that names the parameter and the limit. */
+  validate<N extends CallName>(call: N, args: unknown): CallParams<N> {
+    const schema = this.schemas()[call] as z.ZodType;
+    const parsed = schema.safeParse(args);
+    if (!parsed.success) {
+      const issue = parsed.error.issues[0];
+      if (issue === undefined) throw new HalError('INVALID_PARAMETER', `${call}: invalid arguments`);
+      throw issueToError(call, schema, args, issue);
+    }
+    return parsed.data as CallParams<N>;
+  }
+
+  /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
+  checkAllowed(call: CallName): void {
+    if (!this.#options.isReady()) {
+      throw new HalError('NOT_READY', `${call}: the HAL is not initialised; call initialize() first`);
+    }
+    if (MOTION_CALLS.includes(call) && this.#options.isEmergencyStopped()) {
+      throw new HalError(
+        'EMERGENCY_STOPPED',
+        `${call}: the emergency stop is latched; call safety.resetEmergencyStop() first`,
+      );
+    }
+  }
+
+  /** Guards, validates, runs and times one call; never throws. */
+  async call<N extends CallName>(
+    call: N,
+    args: unknown,
+    body: (params: CallParams<N>) => Promise<Record<string, unknown> | void>,
+  ): Promise<HALToolResult> {
+    const started = this.#now();
+    try {
+      this.checkAllowed(call);
+      const params = this.validate(call, args);
+      const data = await body(params);
+      const finished = this.#now();
+      return successResult(this.#options.mode, finished, data ?? undefined, finished - started);
+    } catch (thrown) {
+      const finished = this.#now();
+      return failureResult(this.#options.mode, finished, thrown, finished - started);
+    }
+  }
+}
