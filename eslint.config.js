@@ -9,12 +9,22 @@ export default tseslint.config(
     rules: {
       '@typescript-eslint/no-explicit-any': 'error',
       '@typescript-eslint/consistent-type-imports': 'error',
-      '@typescript-eslint/no-unused-vars': ['error', { argsIgnorePattern: '^_', varsIgnorePattern: '^_' }],
+      '@typescript-eslint/no-unused-vars': [
+        'error',
+        { argsIgnorePattern: '^_', varsIgnorePattern: '^_' },
+      ],
       'no-console': 'error',
     },
   },
   {
-    files: ['**/*.test.ts', 'tests/**', 'bench/**', 'examples/**', 'apps/**/scripts/**', 'scripts/**'],
+    files: [
+      '**/*.test.ts',
+      'tests/**',
+      'bench/**',
+      'examples/**',
+      'apps/**/scripts/**',
+      'scripts/**',
+    ],
     rules: { 'no-console': 'off' },
   },
 );

@@ -10,7 +10,6 @@ export default defineConfig({
   ssr: { resolve: { conditions: ['@hal/source'] } },
   test: {
     setupFiles: ['./vitest.setup.ts'],
-    benchmark: { include: ['bench/**/*.bench.ts'] },
     projects: [
       ...packageNames.map((name) => ({
         extends: true as const,

@@ -2,7 +2,10 @@ import { V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 
 /** The geometry the step math needs. Any {@link RobotConfig} is one. */
-export type RobotGeometry = Pick<RobotConfig, 'stepsPerRevolution' | 'wheelDiameterCm' | 'wheelBaseCm'>;
+export type RobotGeometry = Pick<
+  RobotConfig,
+  'stepsPerRevolution' | 'wheelDiameterCm' | 'wheelBaseCm'
+>;
 
 /** The motion limits of the step planner. Any {@link RobotConfig} is one. */
 export type MotionLimits = Pick<RobotConfig, 'maxSpeedStepsPerS' | 'accelerationStepsPerS2'>;

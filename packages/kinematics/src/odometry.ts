@@ -77,7 +77,11 @@ export class OdometryIntegrator {
   }
 
   /** Restarts from a pose and counters. */
-  reset(start: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 }, leftSteps = 0, rightSteps = 0): void {
+  reset(
+    start: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 },
+    leftSteps = 0,
+    rightSteps = 0,
+  ): void {
     this.#pose = { ...start };
     this.#left = leftSteps;
     this.#right = rightSteps;

@@ -38,7 +38,10 @@ export class MovePlan implements StepPlan {
 
   constructor(left: number, right: number, speed: number, acceleration: number) {
     if (!Number.isInteger(left) || !Number.isInteger(right)) {
-      throw new HalError('INVALID_PARAMETER', `wheel steps must be whole numbers, got left ${left}, right ${right}`);
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `wheel steps must be whole numbers, got left ${left}, right ${right}`,
+      );
     }
     this.left = left;
     this.right = right;
@@ -83,14 +86,18 @@ export class VelocityPlan implements StepPlan {
 
   constructor(leftSpeed: number, rightSpeed: number, acceleration: number) {
     if (!Number.isInteger(leftSpeed) || !Number.isInteger(rightSpeed)) {
-      throw new HalError('INVALID_PARAMETER', `wheel speeds must be whole steps/s, got ${leftSpeed}, ${rightSpeed}`);
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `wheel speeds must be whole steps/s, got ${leftSpeed}, ${rightSpeed}`,
+      );
     }
     this.leftSpeed = leftSpeed;
     this.rightSpeed = rightSpeed;
     this.leftIsMaster = Math.abs(leftSpeed) >= Math.abs(rightSpeed);
     this.#master = Math.abs(this.leftIsMaster ? leftSpeed : rightSpeed);
     this.#slave = Math.abs(this.leftIsMaster ? rightSpeed : leftSpeed);
-    this.#profile = this.#master === 0 ? undefined : new VelocityProfile(this.#master, acceleration);
+    this.#profile =
+      this.#master === 0 ? undefined : new VelocityProfile(this.#master, acceleration);
   }
 
   stepsAt(elapsedUs: number): WheelPair {

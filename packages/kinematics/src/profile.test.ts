@@ -6,7 +6,11 @@ import { calculateMoveDuration, toMicros, TrapezoidalProfile, VelocityProfile } 
 describe('calculateMoveDuration', () => {
   it('holds the specification figures (triangular 1706 steps, trapezoidal 2172 steps)', () => {
     for (const figure of seed.trapezoidal_profile_derived) {
-      const ms = calculateMoveDuration(figure.steps, figure.max_speed_steps_per_s, figure.acceleration_steps_per_s2);
+      const ms = calculateMoveDuration(
+        figure.steps,
+        figure.max_speed_steps_per_s,
+        figure.acceleration_steps_per_s2,
+      );
       expect(ms / 1000).toBeCloseTo(figure.duration_s_approx, 3);
     }
   });
@@ -26,7 +30,10 @@ describe('TrapezoidalProfile', () => {
   });
 
   it('places step times strictly increasing, the last at the duration', () => {
-    for (const profile of [new TrapezoidalProfile(1706, 1024, 512), new TrapezoidalProfile(3000, 2048, 512)]) {
+    for (const profile of [
+      new TrapezoidalProfile(1706, 1024, 512),
+      new TrapezoidalProfile(3000, 2048, 512),
+    ]) {
       let previous = 0;
       for (let k = 1; k <= profile.steps; k += 1) {
         const t = profile.stepTimeUs(k);
@@ -55,7 +62,10 @@ describe('TrapezoidalProfile', () => {
     expect(profile.positionAt(profile.durationSeconds)).toBe(2172);
     const t = 1.3;
     const dt = 1e-6;
-    expect((profile.positionAt(t + dt) - profile.positionAt(t - dt)) / (2 * dt)).toBeCloseTo(profile.velocityAt(t), 2);
+    expect((profile.positionAt(t + dt) - profile.positionAt(t - dt)) / (2 * dt)).toBeCloseTo(
+      profile.velocityAt(t),
+      2,
+    );
     expect(profile.positionAt(profile.durationSeconds / 2)).toBeCloseTo(1086, 6);
   });
 

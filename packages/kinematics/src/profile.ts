@@ -8,7 +8,10 @@ import { HalError } from '@hal/types';
 
 function requirePositive(name: string, value: number): void {
   if (typeof value !== 'number' || !Number.isFinite(value) || value <= 0) {
-    throw new HalError('INVALID_PARAMETER', `"${name}" must be a finite number greater than 0, got ${String(value)}`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"${name}" must be a finite number greater than 0, got ${String(value)}`,
+    );
   }
 }
 
@@ -34,7 +37,10 @@ export class TrapezoidalProfile {
 
   constructor(steps: number, speed: number, acceleration: number) {
     if (!Number.isInteger(steps) || steps < 0) {
-      throw new HalError('INVALID_PARAMETER', `"steps" must be a whole number >= 0, got ${String(steps)}`);
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `"steps" must be a whole number >= 0, got ${String(steps)}`,
+      );
     }
     requirePositive('speed', speed);
     requirePositive('acceleration', acceleration);
@@ -154,8 +160,14 @@ export class VelocityProfile {
  * Duration of a trapezoidal move in milliseconds, rounded (the seed's function). 1706 steps at
  * 1024 steps/s and 512 steps/s^2 -> 3651 ms; 2172 steps -> 4121 ms.
  */
-export function calculateMoveDuration(steps: number, maxSpeed: number, acceleration: number): number {
+export function calculateMoveDuration(
+  steps: number,
+  maxSpeed: number,
+  acceleration: number,
+): number {
   const n = Math.abs(steps);
   if (n === 0) return 0;
-  return Math.round(new TrapezoidalProfile(Math.round(n), maxSpeed, acceleration).durationSeconds * 1000);
+  return Math.round(
+    new TrapezoidalProfile(Math.round(n), maxSpeed, acceleration).durationSeconds * 1000,
+  );
 }

@@ -17,7 +17,10 @@ describe('geometry', () => {
   it('has the seed figures: ~18.85 cm circumference and ~217.3 steps/cm', () => {
     expect(wheelCircumferenceCm()).toBeCloseTo(seed.robot_v1.wheel_circumference_cm_approx, 2);
     expect(getStepsPerCm()).toBeCloseTo(seed.robot_v1.steps_per_cm_approx, 1);
-    expect(V1_GEOMETRY.maxSpeedStepsPerS / getStepsPerCm()).toBeCloseTo(seed.robot_v1.max_speed_cm_per_s_approx, 2);
+    expect(V1_GEOMETRY.maxSpeedStepsPerS / getStepsPerCm()).toBeCloseTo(
+      seed.robot_v1.max_speed_cm_per_s_approx,
+      2,
+    );
   });
 });
 
@@ -48,7 +51,9 @@ describe('distanceToSteps', () => {
 
   it('refuses NaN and Infinity with INVALID_PARAMETER', () => {
     expect(() => distanceToSteps(Number.NaN)).toThrow(HalError);
-    expect(() => distanceToSteps(Number.POSITIVE_INFINITY)).toThrow(/"distanceCm" must be a finite number/);
+    expect(() => distanceToSteps(Number.POSITIVE_INFINITY)).toThrow(
+      /"distanceCm" must be a finite number/,
+    );
   });
 
   it('round-trips through stepsToDistance within one step', () => {
@@ -63,7 +68,10 @@ describe('rotationToSteps', () => {
   it('turns 90 degrees with 1706 steps per wheel, the specification figure', () => {
     const [spec] = seed.rotation;
     expect(rotationArcCm(90)).toBeCloseTo(spec?.arc_per_wheel_cm_approx ?? Number.NaN, 2);
-    expect(rotationToSteps(90)).toEqual({ left: -spec!.steps_per_wheel, right: spec!.steps_per_wheel });
+    expect(rotationToSteps(90)).toEqual({
+      left: -spec!.steps_per_wheel,
+      right: spec!.steps_per_wheel,
+    });
   });
 
   it('turns counter-clockwise for positive degrees: left wheel back, right wheel forward', () => {
@@ -95,7 +103,10 @@ describe('calculateArcSpeeds', () => {
     const speeds = calculateArcSpeeds(30, 2);
     expect(speeds.left).toBeLessThan(speeds.right);
     expect(speeds.left).toBeGreaterThan(0);
-    expect((speeds.right - speeds.left) / ((speeds.right + speeds.left) / 2)).toBeCloseTo(10 / 30, 9);
+    expect((speeds.right - speeds.left) / ((speeds.right + speeds.left) / 2)).toBeCloseTo(
+      10 / 30,
+      9,
+    );
   });
 
   it('scales both wheels together at the top speed so the radius is kept', () => {

@@ -10,7 +10,10 @@ export interface WheelPair {
 
 function requireFinite(name: string, value: number): void {
   if (typeof value !== 'number' || !Number.isFinite(value)) {
-    throw new HalError('INVALID_PARAMETER', `"${name}" must be a finite number, got ${String(value)}`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"${name}" must be a finite number, got ${String(value)}`,
+    );
   }
 }
 
@@ -24,7 +27,10 @@ export function truncateSteps(exactSteps: number): number {
 }
 
 /** Exact (fractional) steps for a wheel travel in cm; the firmware computes `(cm * S) / (kPi * D)`. */
-export function exactStepsForDistance(distanceCm: number, geometry: RobotGeometry = V1_GEOMETRY): number {
+export function exactStepsForDistance(
+  distanceCm: number,
+  geometry: RobotGeometry = V1_GEOMETRY,
+): number {
   return (distanceCm * geometry.stepsPerRevolution) / (PI * geometry.wheelDiameterCm);
 }
 
@@ -78,7 +84,10 @@ export function calculateArcSpeeds(
   requireFinite('radiusCm', radiusCm);
   requireFinite('speedCmPerS', speedCmPerS);
   if (radiusCm === 0) {
-    throw new HalError('RANGE_EXCEEDED', '"radiusCm" must not be 0; an in-place turn is a rotation');
+    throw new HalError(
+      'RANGE_EXCEEDED',
+      '"radiusCm" must not be 0; an in-place turn is a rotation',
+    );
   }
   const halfBase = geometry.wheelBaseCm / 2;
   const perCm = getStepsPerCm(geometry);

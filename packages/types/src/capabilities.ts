@@ -73,7 +73,10 @@ export function formatCapability(capability: Capability): string {
  * Whether an offered capability satisfies a required one: same domain and type, same major
  * version, minor at least the required one. Metadata does not take part.
  */
-export function isCapabilityCompatible(offered: Capability | string, required: Capability | string): boolean {
+export function isCapabilityCompatible(
+  offered: Capability | string,
+  required: Capability | string,
+): boolean {
   const have = typeof offered === 'string' ? parseCapability(offered) : offered;
   const want = typeof required === 'string' ? parseCapability(required) : required;
   return (

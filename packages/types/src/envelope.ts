@@ -33,7 +33,9 @@ export const EnvelopeSchema = z
     payload: z.unknown().describe('The message body'),
   })
   .describe('HAL message envelope');
-export type Envelope<P = unknown> = Omit<z.infer<typeof EnvelopeSchema>, 'payload'> & { payload: P };
+export type Envelope<P = unknown> = Omit<z.infer<typeof EnvelopeSchema>, 'payload'> & {
+  payload: P;
+};
 
 /** Wraps a payload in an envelope of this library's version. */
 export function makeEnvelope<P>(
@@ -41,7 +43,10 @@ export function makeEnvelope<P>(
   payload: P,
 ): Envelope<P> {
   if (!DEVICE_ID.test(init.device_id)) {
-    throw new HalError('INVALID_PARAMETER', `"device_id" must use letters, digits, "-" and "_", got "${init.device_id}"`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"device_id" must use letters, digits, "-" and "_", got "${init.device_id}"`,
+    );
   }
   return {
     hal_major: HAL_MAJOR,
@@ -55,17 +60,29 @@ export function makeEnvelope<P>(
 }
 
 /** Parses an envelope, checking its payload with `payload`; a newer major version is refused. */
-export function parseEnvelope<S extends z.ZodType>(raw: unknown, payload: S): Envelope<z.output<S>> {
+export function parseEnvelope<S extends z.ZodType>(
+  raw: unknown,
+  payload: S,
+): Envelope<z.output<S>> {
   const envelope = EnvelopeSchema.safeParse(raw);
   if (!envelope.success) {
-    throw new HalError('MALFORMED', `not a HAL envelope: ${envelope.error.issues[0]?.message ?? 'invalid'}`);
+    throw new HalError(
+      'MALFORMED',
+      `not a HAL envelope: ${envelope.error.issues[0]?.message ?? 'invalid'}`,
+    );
   }
   if (envelope.data.hal_major !== HAL_MAJOR) {
-    throw new HalError('MALFORMED', `envelope is hal_major ${envelope.data.hal_major}; this library speaks ${HAL_MAJOR}`);
+    throw new HalError(
+      'MALFORMED',
+      `envelope is hal_major ${envelope.data.hal_major}; this library speaks ${HAL_MAJOR}`,
+    );
   }
   const body = payload.safeParse(envelope.data.payload);
   if (!body.success) {
-    throw new HalError('MALFORMED', `envelope payload does not match "${envelope.data.schema}": ${body.error.issues[0]?.message ?? 'invalid'}`);
+    throw new HalError(
+      'MALFORMED',
+      `envelope payload does not match "${envelope.data.schema}": ${body.error.issues[0]?.message ?? 'invalid'}`,
+    );
   }
   return { ...envelope.data, payload: body.data };
 }
@@ -83,7 +100,8 @@ export interface SubjectParts {
 function subjectToken(name: string, value: string, allowWildcard: boolean): string {
   if (allowWildcard && (value === '*' || value === '>')) return value;
   const ok = name === 'device' ? DEVICE_ID.test(value) : TOKEN.test(value);
-  if (!ok) throw new HalError('INVALID_PARAMETER', `subject "${name}" token is invalid: "${value}"`);
+  if (!ok)
+    throw new HalError('INVALID_PARAMETER', `subject "${name}" token is invalid: "${value}"`);
   return value;
 }
 
@@ -112,7 +130,10 @@ export function parseSubject(subject: string): Required<SubjectParts> {
   const tokens = subject.split('.');
   const match = /^v(\d+)$/.exec(tokens[1] ?? '');
   if (tokens.length !== 6 || tokens[0] !== 'hal' || match === null) {
-    throw new HalError('INVALID_PARAMETER', `"${subject}" is not a hal.v{major}.{device}.{domain}.{type}.{action} subject`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"${subject}" is not a hal.v{major}.{device}.{domain}.{type}.{action} subject`,
+    );
   }
   const [, , device = '', domain = '', type = '', action = ''] = tokens;
   const parts = { device, domain, type, action, major: Number(match[1]) };

@@ -40,7 +40,9 @@ export const HAL_ERROR_CODES = [
 /** A HAL error code (see {@link HAL_ERROR_CODES}). */
 export type HalErrorCode = (typeof HAL_ERROR_CODES)[number];
 
-export const HalErrorCodeSchema = z.enum(HAL_ERROR_CODES).describe('Machine-readable reason a call failed');
+export const HalErrorCodeSchema = z
+  .enum(HAL_ERROR_CODES)
+  .describe('Machine-readable reason a call failed');
 
 /** Extra, structured facts about an error: the parameter, the limit, the value received, ... */
 export type HalErrorDetails = Record<string, unknown>;

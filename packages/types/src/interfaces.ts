@@ -104,7 +104,12 @@ export interface CommunicationInterface {
   /** Say `text` through the robot's speaker. */
   speak(text: string, urgency?: 'info' | 'warning' | 'alert'): Promise<HALToolResult>;
   /** Set the status LED: r, g, b 0..255 each, and a pattern (default solid). */
-  setLED(r: number, g: number, b: number, pattern?: 'solid' | 'blink' | 'pulse'): Promise<HALToolResult>;
+  setLED(
+    r: number,
+    g: number,
+    b: number,
+    pattern?: 'solid' | 'blink' | 'pulse',
+  ): Promise<HALToolResult>;
   /** Play a sound effect by id. */
   playSound(soundId: string): Promise<HALToolResult>;
   /** Record a message in the HAL's log and telemetry. Never throws. */

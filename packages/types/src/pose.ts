@@ -52,7 +52,7 @@ export const DistanceSensorsSchema = z
     frontRight: finite.optional().describe('metres, 45 degrees right'),
     source: ValueSourceSchema.optional(),
   })
-  .describe('Range readings, metres (the sensor\'s maximum range when nothing is in range)');
+  .describe("Range readings, metres (the sensor's maximum range when nothing is in range)");
 export type DistanceSensors = z.infer<typeof DistanceSensorsSchema>;
 
 export const IMUReadingSchema = z

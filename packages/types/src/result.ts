@@ -34,7 +34,9 @@ export const HALToolResultSchema = z
     error: z.string().optional().describe('Human-readable failure reason'),
     code: HalErrorCodeSchema.optional(),
     details: z.record(z.string(), z.unknown()).optional().describe('Structured failure facts'),
-    timestamp: z.number().describe('Completion time, ms since the Unix epoch or the simulated clock'),
+    timestamp: z
+      .number()
+      .describe('Completion time, ms since the Unix epoch or the simulated clock'),
     mode: HALModeSchema,
     executionTime: z.number().nonnegative().optional().describe('Duration of the call, ms'),
   })

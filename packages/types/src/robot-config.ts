@@ -12,7 +12,9 @@ export const RobotConfigSchema = z.object({
     .min(1)
     .max(1_000_000)
     .default(4096)
-    .describe('Motor steps per wheel revolution (28BYJ-48 half-step: 4096 nominal, ~4076 measured)'),
+    .describe(
+      'Motor steps per wheel revolution (28BYJ-48 half-step: 4096 nominal, ~4076 measured)',
+    ),
   wheelDiameterCm: z.number().gt(0).max(100).default(6).describe('Wheel diameter, cm'),
   wheelBaseCm: z
     .number()
@@ -47,7 +49,9 @@ export const RobotConfigSchema = z.object({
     .min(500)
     .max(10_000)
     .default(2000)
-    .describe('Motors stop when the robot hears nothing from its host for this long, ms (500..10000)'),
+    .describe(
+      'Motors stop when the robot hears nothing from its host for this long, ms (500..10000)',
+    ),
   maxDriveDurationMs: z
     .number()
     .int()
@@ -100,7 +104,13 @@ export const ConnectionConfigSchema = z.object({
   port: z.string().min(1).optional().describe('Serial device path, e.g. /dev/ttyUSB0'),
   baudRate: z.number().int().positive().optional().describe('Serial baud rate, bits/s'),
   host: z.string().min(1).optional().describe('Robot IP address or host name (wifi)'),
-  udpPort: z.number().int().min(1).max(65_535).optional().describe('Robot UDP port (wifi), default 4210'),
+  udpPort: z
+    .number()
+    .int()
+    .min(1)
+    .max(65_535)
+    .optional()
+    .describe('Robot UDP port (wifi), default 4210'),
   cameraUrl: z.string().url().optional().describe('ESP32-CAM base URL, e.g. http://192.168.4.2'),
   key: z
     .string()
@@ -120,7 +130,9 @@ export const HALConfigSchema = z.object({
   connection: ConnectionConfigSchema.optional(),
   simulator: z.unknown().optional().describe('Simulation mode: the world or simulator to bind to'),
   capabilities: z.array(z.string()).optional().describe('Capability strings to enable'),
-  robot: RobotConfigSchema.partial().optional().describe('Geometry and limits, default the V1 robot'),
+  robot: RobotConfigSchema.partial()
+    .optional()
+    .describe('Geometry and limits, default the V1 robot'),
 });
 
 /** Configuration for creating a HAL instance. */

@@ -9,7 +9,8 @@ import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
 
 function describeValue(value: unknown): string {
   if (typeof value === 'number' || typeof value === 'boolean') return String(value);
-  if (typeof value === 'string') return JSON.stringify(value.length > 40 ? `${value.slice(0, 40)}...` : value);
+  if (typeof value === 'string')
+    return JSON.stringify(value.length > 40 ? `${value.slice(0, 40)}...` : value);
   if (value === undefined) return 'nothing';
   if (value === null) return 'null';
   return Array.isArray(value) ? 'an array' : `a ${typeof value}`;
@@ -29,7 +30,12 @@ function valueAt(input: unknown, path: readonly PropertyKey[]): unknown {
  * Out-of-range finite numbers are RANGE_EXCEEDED; everything else (NaN, Infinity, wrong type,
  * missing, unknown enum value) is INVALID_PARAMETER.
  */
-function issueToError(call: CallName, schema: z.ZodType, args: unknown, issue: z.core.$ZodIssue): HalError {
+function issueToError(
+  call: CallName,
+  schema: z.ZodType,
+  args: unknown,
+  issue: z.core.$ZodIssue,
+): HalError {
   const name = issue.path.map(String).join('.') || 'arguments';
   const received = valueAt(args, issue.path);
   const shape = (schema as unknown as { shape?: Record<string, z.ZodType> }).shape;
@@ -110,7 +116,8 @@ export class HalBoundary {
     const parsed = schema.safeParse(args);
     if (!parsed.success) {
       const issue = parsed.error.issues[0];
-      if (issue === undefined) throw new HalError('INVALID_PARAMETER', `${call}: invalid arguments`);
+      if (issue === undefined)
+        throw new HalError('INVALID_PARAMETER', `${call}: invalid arguments`);
       throw issueToError(call, schema, args, issue);
     }
     return parsed.data as CallParams<N>;
@@ -119,7 +126,10 @@ export class HalBoundary {
   /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
   checkAllowed(call: CallName): void {
     if (!this.#options.isReady()) {
-      throw new HalError('NOT_READY', `${call}: the HAL is not initialised; call initialize() first`);
+      throw new HalError(
+        'NOT_READY',
+        `${call}: the HAL is not initialised; call initialize() first`,
+      );
     }
     if (MOTION_CALLS.includes(call) && this.#options.isEmergencyStopped()) {
       throw new HalError(

@@ -67,27 +67,36 @@ export function describeHalContract(name: string, options: HalContractOptions): 
     const pose = async (): Promise<Pose> => PoseSchema.parse(await hal.locomotion.getPose());
 
     describe('lifecycle', () => {
-      it('is not ready before initialize() and refuses motion with NOT_READY', { timeout }, async () => {
-        expect(hal.isReady()).toBe(false);
-        expectFailure(await hal.locomotion.moveForward(1), 'NOT_READY');
-      });
+      it(
+        'is not ready before initialize() and refuses motion with NOT_READY',
+        { timeout },
+        async () => {
+          expect(hal.isReady()).toBe(false);
+          expectFailure(await hal.locomotion.moveForward(1), 'NOT_READY');
+        },
+      );
 
       it('is ready after initialize() and describes itself', { timeout }, async () => {
         await ready();
         expect(hal.isReady()).toBe(true);
         const info = DeviceInfoSchema.parse(hal.getDeviceInfo());
         expect(info.mode).toBe(hal.mode);
-        for (const capability of info.capabilities) expect(() => parseCapability(capability)).not.toThrow();
+        for (const capability of info.capabilities)
+          expect(() => parseCapability(capability)).not.toThrow();
         expect(hasCapability(info.capabilities, CAPABILITIES.differentialDrive)).toBe(true);
       });
 
-      it('is not ready after cleanup(), and cleanup() may be called twice', { timeout }, async () => {
-        await ready();
-        await hal.cleanup();
-        expect(hal.isReady()).toBe(false);
-        await hal.cleanup();
-        expectFailure(await hal.locomotion.moveForward(1), 'NOT_READY');
-      });
+      it(
+        'is not ready after cleanup(), and cleanup() may be called twice',
+        { timeout },
+        async () => {
+          await ready();
+          await hal.cleanup();
+          expect(hal.isReady()).toBe(false);
+          await hal.cleanup();
+          expectFailure(await hal.locomotion.moveForward(1), 'NOT_READY');
+        },
+      );
     });
 
     describe('results', () => {
@@ -110,54 +119,111 @@ export function describeHalContract(name: string, options: HalContractOptions): 
     });
 
     describe('validation', () => {
-      const bad: Array<[string, (h: HardwareAbstractionLayer) => Promise<HALToolResult>, HalErrorCode, string]> = [
-        ['drive with NaN power', (h) => h.locomotion.drive(Number.NaN, 0), 'INVALID_PARAMETER', 'left'],
+      const bad: Array<
+        [string, (h: HardwareAbstractionLayer) => Promise<HALToolResult>, HalErrorCode, string]
+      > = [
+        [
+          'drive with NaN power',
+          (h) => h.locomotion.drive(Number.NaN, 0),
+          'INVALID_PARAMETER',
+          'left',
+        ],
         ['drive beyond full power', (h) => h.locomotion.drive(0, 300), 'RANGE_EXCEEDED', 'right'],
-        ['drive with a negative duration', (h) => h.locomotion.drive(100, 100, -5), 'RANGE_EXCEEDED', 'durationMs'],
-        ['moveForward an infinite distance', (h) => h.locomotion.moveForward(Number.POSITIVE_INFINITY), 'INVALID_PARAMETER', 'distanceCm'],
-        ['moveForward a negative distance', (h) => h.locomotion.moveForward(-5), 'RANGE_EXCEEDED', 'distanceCm'],
-        ['moveForward further than one command allows', (h) => h.locomotion.moveForward(1e6), 'RANGE_EXCEEDED', 'distanceCm'],
-        ['moveBackward a string', (h) => h.locomotion.moveBackward('10' as unknown as number), 'INVALID_PARAMETER', 'distanceCm'],
-        ['rotate an unknown way', (h) => h.locomotion.rotate('up' as unknown as 'left', 90), 'INVALID_PARAMETER', 'direction'],
-        ['rotate NaN degrees', (h) => h.locomotion.rotate('left', Number.NaN), 'INVALID_PARAMETER', 'degrees'],
-        ['moveTo a NaN point', (h) => h.locomotion.moveTo(Number.NaN, 0, 0), 'INVALID_PARAMETER', 'x'],
+        [
+          'drive with a negative duration',
+          (h) => h.locomotion.drive(100, 100, -5),
+          'RANGE_EXCEEDED',
+          'durationMs',
+        ],
+        [
+          'moveForward an infinite distance',
+          (h) => h.locomotion.moveForward(Number.POSITIVE_INFINITY),
+          'INVALID_PARAMETER',
+          'distanceCm',
+        ],
+        [
+          'moveForward a negative distance',
+          (h) => h.locomotion.moveForward(-5),
+          'RANGE_EXCEEDED',
+          'distanceCm',
+        ],
+        [
+          'moveForward further than one command allows',
+          (h) => h.locomotion.moveForward(1e6),
+          'RANGE_EXCEEDED',
+          'distanceCm',
+        ],
+        [
+          'moveBackward a string',
+          (h) => h.locomotion.moveBackward('10' as unknown as number),
+          'INVALID_PARAMETER',
+          'distanceCm',
+        ],
+        [
+          'rotate an unknown way',
+          (h) => h.locomotion.rotate('up' as unknown as 'left', 90),
+          'INVALID_PARAMETER',
+          'direction',
+        ],
+        [
+          'rotate NaN degrees',
+          (h) => h.locomotion.rotate('left', Number.NaN),
+          'INVALID_PARAMETER',
+          'degrees',
+        ],
+        [
+          'moveTo a NaN point',
+          (h) => h.locomotion.moveTo(Number.NaN, 0, 0),
+          'INVALID_PARAMETER',
+          'x',
+        ],
         ['moveTo too fast', (h) => h.locomotion.moveTo(0.1, 0, 0, 100), 'RANGE_EXCEEDED', 'speed'],
         ['setLED beyond 255', (h) => h.communication.setLED(300, 0, 0), 'RANGE_EXCEEDED', 'r'],
       ];
       for (const [title, call, code, parameter] of bad) {
-        it(`refuses to ${title} with ${code}, naming "${parameter}", and nothing moves`, { timeout }, async () => {
-          await ready();
-          const before = await pose();
-          const result = await call(hal);
-          expectFailure(result, code);
-          expect(result.error).toContain(`"${parameter}"`);
-          const after = await pose();
-          expect(after.position).toEqual(before.position);
-          expect(after.rotation.yaw).toBe(before.rotation.yaw);
-        });
+        it(
+          `refuses to ${title} with ${code}, naming "${parameter}", and nothing moves`,
+          { timeout },
+          async () => {
+            await ready();
+            const before = await pose();
+            const result = await call(hal);
+            expectFailure(result, code);
+            expect(result.error).toContain(`"${parameter}"`);
+            const after = await pose();
+            expect(after.position).toEqual(before.position);
+            expect(after.rotation.yaw).toBe(before.rotation.yaw);
+          },
+        );
       }
     });
 
     describe('emergency stop', () => {
-      it('latches, refuses every motion at once with EMERGENCY_STOPPED, and clears only on reset', { timeout }, async () => {
-        await ready();
-        expect(hal.safety.isEmergencyStopped()).toBe(false);
-        expectSuccess(await hal.safety.emergencyStop('contract test'));
-        expect(hal.safety.isEmergencyStopped()).toBe(true);
-        expect(SafetyStatusSchema.parse(hal.safety.getSafetyStatus()).emergencyStopped).toBe(true);
-        expectFailure(await hal.locomotion.moveForward(5), 'EMERGENCY_STOPPED');
-        expectFailure(await hal.locomotion.drive(100, 100, 500), 'EMERGENCY_STOPPED');
-        expectFailure(await hal.locomotion.rotate('left', 10), 'EMERGENCY_STOPPED');
-        expectFailure(await hal.locomotion.moveTo(0.1, 0, 0), 'EMERGENCY_STOPPED');
-        expectSuccess(await hal.locomotion.stop());
-        expect(hal.safety.isEmergencyStopped()).toBe(true);
-        expect((await pose()).position.x).toBe(0);
+      it(
+        'latches, refuses every motion at once with EMERGENCY_STOPPED, and clears only on reset',
+        { timeout },
+        async () => {
+          await ready();
+          expect(hal.safety.isEmergencyStopped()).toBe(false);
+          expectSuccess(await hal.safety.emergencyStop('contract test'));
+          expect(hal.safety.isEmergencyStopped()).toBe(true);
+          expect(SafetyStatusSchema.parse(hal.safety.getSafetyStatus()).emergencyStopped).toBe(
+            true,
+          );
+          expectFailure(await hal.locomotion.moveForward(5), 'EMERGENCY_STOPPED');
+          expectFailure(await hal.locomotion.drive(100, 100, 500), 'EMERGENCY_STOPPED');
+          expectFailure(await hal.locomotion.rotate('left', 10), 'EMERGENCY_STOPPED');
+          expectFailure(await hal.locomotion.moveTo(0.1, 0, 0), 'EMERGENCY_STOPPED');
+          expectSuccess(await hal.locomotion.stop());
+          expect(hal.safety.isEmergencyStopped()).toBe(true);
+          expect((await pose()).position.x).toBe(0);
 
-        expectSuccess(await hal.safety.resetEmergencyStop());
-        expect(hal.safety.isEmergencyStopped()).toBe(false);
-        expectSuccess(await hal.locomotion.moveForward(1));
-        expect((await pose()).position.x).toBeCloseTo(0.01, 3);
-      });
+          expectSuccess(await hal.safety.resetEmergencyStop());
+          expect(hal.safety.isEmergencyStopped()).toBe(false);
+          expectSuccess(await hal.locomotion.moveForward(1));
+          expect((await pose()).position.x).toBeCloseTo(0.01, 3);
+        },
+      );
     });
 
     describe('motion (REP-103: x forward, y left, yaw counter-clockwise)', () => {
@@ -175,17 +241,21 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         expect(Math.abs(now.position.x)).toBeLessThan(posTol);
       });
 
-      it('rotate("left", 90) turns counter-clockwise to +pi/2, then forward goes +y', { timeout }, async () => {
-        await ready();
-        expectSuccess(await hal.locomotion.rotate('left', 90));
-        let now = await pose();
-        expect(Math.abs(angleDiff(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
-        expect(Math.hypot(now.position.x, now.position.y)).toBeLessThan(posTol);
-        expectSuccess(await hal.locomotion.moveForward(5));
-        now = await pose();
-        expect(Math.abs(now.position.y - 0.05)).toBeLessThan(posTol);
-        expect(Math.abs(now.position.x)).toBeLessThan(posTol);
-      });
+      it(
+        'rotate("left", 90) turns counter-clockwise to +pi/2, then forward goes +y',
+        { timeout },
+        async () => {
+          await ready();
+          expectSuccess(await hal.locomotion.rotate('left', 90));
+          let now = await pose();
+          expect(Math.abs(angleDiff(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
+          expect(Math.hypot(now.position.x, now.position.y)).toBeLessThan(posTol);
+          expectSuccess(await hal.locomotion.moveForward(5));
+          now = await pose();
+          expect(Math.abs(now.position.y - 0.05)).toBeLessThan(posTol);
+          expect(Math.abs(now.position.x)).toBeLessThan(posTol);
+        },
+      );
 
       it('rotate("right", 90) turns clockwise to -pi/2', { timeout }, async () => {
         await ready();
@@ -203,13 +273,17 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         expect(Math.abs(now.position.y - 0.05)).toBeLessThan(posTol);
       });
 
-      it('drive(-255, 255, ms) turns counter-clockwise and stops by itself', { timeout }, async () => {
-        await ready();
-        expectSuccess(await hal.locomotion.drive(-255, 255, 400));
-        const now = await pose();
-        expect(now.rotation.yaw).toBeGreaterThan(0);
-        expect(now.velocity.angular).toBe(0);
-      });
+      it(
+        'drive(-255, 255, ms) turns counter-clockwise and stops by itself',
+        { timeout },
+        async () => {
+          await ready();
+          expectSuccess(await hal.locomotion.drive(-255, 255, 400));
+          const now = await pose();
+          expect(now.rotation.yaw).toBeGreaterThan(0);
+          expect(now.velocity.angular).toBe(0);
+        },
+      );
     });
 
     describe('capabilities are honest', () => {

@@ -67,8 +67,10 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
           const sign = p.direction === 'left' ? 1 : -1;
           this.#yaw = wrap(this.#yaw + (sign * p.degrees * Math.PI) / 180);
         }),
-      moveForward: (distanceCm) => b.call('moveForward', { distanceCm }, async (p) => forward(p.distanceCm)),
-      moveBackward: (distanceCm) => b.call('moveBackward', { distanceCm }, async (p) => forward(-p.distanceCm)),
+      moveForward: (distanceCm) =>
+        b.call('moveForward', { distanceCm }, async (p) => forward(p.distanceCm)),
+      moveBackward: (distanceCm) =>
+        b.call('moveBackward', { distanceCm }, async (p) => forward(-p.distanceCm)),
       stop: () => b.call('stop', {}, async () => undefined),
       getPose: async (): Promise<Pose> => ({
         position: { x: this.#x, y: this.#y, z: 0 },
@@ -97,7 +99,8 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
     this.communication = {
       speak: () => notImplemented('speaker'),
       playSound: () => notImplemented('speaker'),
-      setLED: (r, g, bl, pattern) => b.call('setLED', { r, g, b: bl, pattern }, async () => undefined),
+      setLED: (r, g, bl, pattern) =>
+        b.call('setLED', { r, g, b: bl, pattern }, async () => undefined),
       log: (message) => {
         this.logged.push(message);
       },
@@ -113,7 +116,11 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
         b.call('stop', {}, async () => {
           this.#estop = false;
         }),
-      getSafetyStatus: (): SafetyStatus => ({ emergencyStopped: this.#estop, batteryLevel: 100, errors: [] }),
+      getSafetyStatus: (): SafetyStatus => ({
+        emergencyStopped: this.#estop,
+        batteryLevel: 100,
+        errors: [],
+      }),
     };
   }
 
