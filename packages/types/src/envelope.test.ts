@@ -1,0 +1,87 @@
+import { describe, expect, it } from 'vitest';
+import { z } from 'zod';
+import {
+  buildSubject,
+  EnvelopeSchema,
+  HalErrorPayloadSchema,
+  makeEnvelope,
+  parseEnvelope,
+  parseSubject,
+} from './envelope.js';
+import { HalError } from './errors.js';
+
+const PoseMessage = z.looseObject({ x_m: z.number(), y_m: z.number(), yaw_rad: z.number() });
+
+describe('envelope', () => {
+  it('wraps and parses a payload, ignoring unknown fields at both levels', () => {
+    const envelope = makeEnvelope(
+      { schema: 'hal.locomotion.pose', device_id: 'cube-01', caps: ['safety.estop:v1.0'], ts: 42 },
+      { x_m: 1, y_m: 2, yaw_rad: 0 },
+    );
+    expect(EnvelopeSchema.parse(envelope)).toMatchObject({ hal_major: 1, hal_minor: 0, ts: 42 });
+    const wire = JSON.parse(
+      JSON.stringify({ ...envelope, extra: true, payload: { ...envelope.payload, note: 'x' } }),
+    );
+    const parsed = parseEnvelope(wire, PoseMessage);
+    expect(parsed.payload.x_m).toBe(1);
+    expect(parsed.device_id).toBe('cube-01');
+  });
+
+  it('refuses a newer major version, a bad payload and a non-envelope with MALFORMED', () => {
+    const envelope = makeEnvelope({ schema: 's', device_id: 'd' }, { x_m: 1, y_m: 2, yaw_rad: 0 });
+    expect(() => parseEnvelope({ ...envelope, hal_major: 2 }, PoseMessage)).toThrow(/hal_major 2/);
+    expect(() => parseEnvelope({ ...envelope, payload: { x_m: 'a' } }, PoseMessage)).toThrow(
+      HalError,
+    );
+    expect(() => parseEnvelope('hello', PoseMessage)).toThrow(/not a HAL envelope/);
+  });
+
+  it('refuses a device id that cannot be a subject token', () => {
+    expect(() => makeEnvelope({ schema: 's', device_id: 'cube 01' }, {})).toThrow(/device_id/);
+  });
+
+  it('has the standard error shape, tolerant of unknown fields', () => {
+    expect(
+      HalErrorPayloadSchema.parse({ code: 'TIMEOUT', message: 'late', retry_ms: 10 }),
+    ).toMatchObject({
+      code: 'TIMEOUT',
+      retry_ms: 10,
+    });
+    expect(HalErrorPayloadSchema.safeParse({ message: 'no code' }).success).toBe(false);
+  });
+});
+
+describe('subjects', () => {
+  it('addresses a device right after the version', () => {
+    expect(
+      buildSubject({ device: 'cube-01', domain: 'locomotion', type: 'pose', action: 'update' }),
+    ).toBe('hal.v1.cube-01.locomotion.pose.update');
+    expect(parseSubject('hal.v1.cube-01.safety.estop.set')).toEqual({
+      device: 'cube-01',
+      domain: 'safety',
+      type: 'estop',
+      action: 'set',
+      major: 1,
+    });
+  });
+
+  it('builds wildcard subscriptions only when asked', () => {
+    expect(
+      buildSubject(
+        { device: '*', domain: 'safety', type: 'estop', action: '>' },
+        { wildcards: true },
+      ),
+    ).toBe('hal.v1.*.safety.estop.>');
+    expect(() =>
+      buildSubject({ device: '*', domain: 'safety', type: 'estop', action: 'set' }),
+    ).toThrow(HalError);
+    expect(() =>
+      buildSubject({ device: 'a', domain: '>', type: 'estop', action: 'set' }, { wildcards: true }),
+    ).toThrow(/may only be last/);
+  });
+
+  it('refuses subjects that are not ours', () => {
+    expect(() => parseSubject('hal.cube.locomotion.pose.update')).toThrow(HalError);
+    expect(() => parseSubject('hal.v1.cube 01.locomotion.pose.update')).toThrow(HalError);
+  });
+});

@@ -1,0 +1,16 @@
+import { expect, it } from 'vitest';
+import { HalBoundary, V1_ROBOT } from './index.js';
+
+it('README: the boundary refuses a move longer than one command allows, naming the limit', async () => {
+  const boundary = new HalBoundary({
+    mode: 'simulation',
+    config: () => V1_ROBOT,
+    isEmergencyStopped: () => false,
+    isReady: () => true,
+  });
+  const result = await boundary.call('moveForward', { distanceCm: 500 }, async () => undefined);
+  expect(result).toMatchObject({ success: false, code: 'RANGE_EXCEEDED' });
+  expect(result.error).toMatch(
+    /^moveForward: "distanceCm" must be at most 188\.4, got 500 \(Distance, cm/,
+  );
+});
