@@ -390,7 +390,7 @@ bool JsonReader::SkipNested(int depth) {
       ++pos_;
     }
     JsonField scratch;
-    if (!ParseValue(&scratch, depth + 1)) return false;
+    if (!ParseValue(&scratch, depth)) return false;
     SkipSpace();
     if (pos_ >= len_) {
       error_ = JsonError::kTruncated;

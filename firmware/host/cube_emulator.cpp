@@ -1,0 +1,253 @@
+// cube-emulator: the stepper cube's firmware core on this computer. It
+// listens on UDP and on a pseudo-terminal (serial framing), moves virtual
+// steppers on a real (or scaled) clock and prints JSON lines about what the
+// robot does. See docs/firmware.md.
+#include <poll.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "cube.h"
+#include "emulator_io.h"
+#include "frame.h"
+#include "host_hal.h"
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+
+void OnSignal(int) { g_stop = 1; }
+
+struct Options {
+  std::string bind = "127.0.0.1";
+  long udp_port = 4210;
+  double time_scale = 1.0;
+  std::string key_hex;
+  long host_timeout_ms = 2000;
+  std::string device_id = "cube-emulator";
+  bool exit_on_stdin_eof = false;
+  bool pty = true;
+};
+
+void Usage(FILE* f) {
+  std::fprintf(
+      f,
+      "usage: cube-emulator [options]\n"
+      "  --udp-port N          UDP port on the bind address (default 4210, "
+      "0 = a free port)\n"
+      "  --bind ADDR           IPv4 address to listen on (default "
+      "127.0.0.1)\n"
+      "  --time-scale X        run the robot's clock X times faster (default "
+      "1)\n"
+      "  --key HEX             pre-shared key: requests must carry a MAC\n"
+      "  --host-timeout-ms N   host timeout, 500..10000 (default 2000)\n"
+      "  --device-id ID        device_id reported by hello (default "
+      "cube-emulator)\n"
+      "  --no-pty              do not open a pseudo-terminal\n"
+      "  --exit-on-stdin-eof   exit when standard input closes\n");
+}
+
+bool ParseArgs(int argc, char** argv, Options* o) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const char* name) -> const char* {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "cube-emulator: %s needs a value\n", name);
+        return nullptr;
+      }
+      return argv[++i];
+    };
+    if (a == "--help" || a == "-h") {
+      Usage(stdout);
+      std::exit(0);
+    } else if (a == "--udp-port") {
+      const char* v = value("--udp-port");
+      if (v == nullptr) return false;
+      char* end = nullptr;
+      o->udp_port = std::strtol(v, &end, 10);
+      if (*end != '\0' || o->udp_port < 0 || o->udp_port > 65535) {
+        std::fprintf(stderr, "cube-emulator: --udp-port must be 0..65535\n");
+        return false;
+      }
+    } else if (a == "--bind") {
+      const char* v = value("--bind");
+      if (v == nullptr) return false;
+      o->bind = v;
+    } else if (a == "--time-scale") {
+      const char* v = value("--time-scale");
+      if (v == nullptr) return false;
+      char* end = nullptr;
+      o->time_scale = std::strtod(v, &end);
+      if (*end != '\0' || !(o->time_scale > 0 && o->time_scale <= 1000)) {
+        std::fprintf(stderr,
+                     "cube-emulator: --time-scale must be a number in "
+                     "(0, 1000]\n");
+        return false;
+      }
+    } else if (a == "--key") {
+      const char* v = value("--key");
+      if (v == nullptr) return false;
+      o->key_hex = v;
+    } else if (a == "--host-timeout-ms") {
+      const char* v = value("--host-timeout-ms");
+      if (v == nullptr) return false;
+      char* end = nullptr;
+      o->host_timeout_ms = std::strtol(v, &end, 10);
+      if (*end != '\0' || o->host_timeout_ms < 500 ||
+          o->host_timeout_ms > 10000) {
+        std::fprintf(stderr,
+                     "cube-emulator: --host-timeout-ms must be 500..10000\n");
+        return false;
+      }
+    } else if (a == "--device-id") {
+      const char* v = value("--device-id");
+      if (v == nullptr) return false;
+      o->device_id = v;
+    } else if (a == "--no-pty") {
+      o->pty = false;
+    } else if (a == "--exit-on-stdin-eof") {
+      o->exit_on_stdin_eof = true;
+    } else {
+      std::fprintf(stderr, "cube-emulator: unknown option %s\n", a.c_str());
+      Usage(stderr);
+      return false;
+    }
+  }
+  return true;
+}
+
+// Motors with no hardware: the core counts the steps itself.
+class VirtualMotors : public cube::MotorDriver {
+ public:
+  void WriteCoils(cube::Wheel, uint8_t) override {}
+};
+
+// Serial messages go to the cube; its replies go back over the link.
+class SerialBridge : public cube::LinkHandler {
+ public:
+  SerialBridge(cube::Cube& c, cube::ScaledClock& real) : cube_(c), real_(real) {}
+  void set_link(cube::SerialLink* l) { link_ = l; }
+  void OnMessage(const uint8_t* data, size_t len) override {
+    const size_t n = cube_.Handle(data, len, out_, sizeof(out_));
+    link_->Send(out_, n, real_.NowUs() / 1000);
+  }
+  void OnOversize(size_t announced) override {
+    const size_t n = cube_.HandleOversize(announced, out_, sizeof(out_));
+    link_->Send(out_, n, real_.NowUs() / 1000);
+  }
+
+ private:
+  cube::Cube& cube_;
+  cube::ScaledClock& real_;
+  cube::SerialLink* link_ = nullptr;
+  uint8_t out_[cube::kMaxMessage];
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  if (!ParseArgs(argc, argv, &opt)) return 2;
+
+  std::vector<uint8_t> key;
+  if (!opt.key_hex.empty() &&
+      (!cube::ParseHex(opt.key_hex, &key) || key.empty() ||
+       key.size() > cube::kMaxKeyLen)) {
+    std::fprintf(stderr,
+                 "cube-emulator: --key must be 1..64 bytes written as hex\n");
+    return 2;
+  }
+
+  std::signal(SIGTERM, OnSignal);
+  std::signal(SIGINT, OnSignal);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  cube::ScaledClock robot_clock(opt.time_scale);
+  cube::ScaledClock real_clock(1.0);
+  VirtualMotors motors;
+  cube::SystemRandom random;
+  cube::MbedtlsMac mac;
+  cube::CubeDeps deps;
+  deps.clock = &robot_clock;
+  deps.motors = &motors;
+  deps.random = &random;
+  deps.mac = &mac;
+  static cube::Cube robot(deps, opt.device_id.c_str());
+  cube::CubeConfig config;
+  config.host_timeout_ms = opt.host_timeout_ms;
+  robot.Configure(config);
+  if (!key.empty()) robot.SetKey(key.data(), key.size());
+
+  cube::EventLog log(robot, robot_clock);
+  robot.set_observer(&log);
+
+  cube::UdpEndpoint udp;
+  std::string error;
+  if (!udp.Open(opt.bind, static_cast<uint16_t>(opt.udp_port), &error)) {
+    std::fprintf(stderr, "cube-emulator: %s\n", error.c_str());
+    return 1;
+  }
+  cube::Pty pty;
+  if (opt.pty && !pty.Open(&error)) {
+    std::fprintf(stderr, "cube-emulator: %s\n", error.c_str());
+    return 1;
+  }
+  SerialBridge bridge(robot, real_clock);
+  uint16_t first_seq = static_cast<uint16_t>(random.NextU32());
+  static cube::SerialLink link(pty, bridge, first_seq);
+  bridge.set_link(&link);
+
+  log.Ready(udp.port(), opt.pty ? pty.path() : "", opt.device_id,
+            opt.time_scale, !key.empty());
+
+  static uint8_t buf[4096];
+  static uint8_t reply[cube::kMaxMessage];
+  const char* why = "signal";
+  while (g_stop == 0) {
+    pollfd fds[3];
+    nfds_t n = 0;
+    fds[n++] = {udp.fd(), POLLIN, 0};
+    const int pty_index = opt.pty ? static_cast<int>(n) : -1;
+    if (opt.pty) fds[n++] = {pty.fd(), POLLIN, 0};
+    const int stdin_index = opt.exit_on_stdin_eof ? static_cast<int>(n) : -1;
+    if (opt.exit_on_stdin_eof) fds[n++] = {STDIN_FILENO, POLLIN, 0};
+    poll(fds, n, 1);
+
+    if ((fds[0].revents & POLLIN) != 0) {
+      for (int i = 0; i < 64; ++i) {
+        sockaddr_in from{};
+        const long got = udp.Receive(buf, sizeof(buf), &from);
+        if (got < 0) break;
+        const size_t len = static_cast<size_t>(got);
+        const size_t r = len > cube::kMaxMessage
+                             ? robot.HandleOversize(len, reply, sizeof(reply))
+                             : robot.Handle(buf, len, reply, sizeof(reply));
+        udp.SendTo(reply, r, from);
+      }
+    }
+    if (pty_index >= 0 && (fds[pty_index].revents & POLLIN) != 0) {
+      const ssize_t got = read(pty.fd(), buf, sizeof(buf));
+      if (got > 0) {
+        link.Receive(buf, static_cast<size_t>(got), real_clock.NowUs() / 1000);
+      }
+    }
+    if (stdin_index >= 0 &&
+        (fds[stdin_index].revents & (POLLIN | POLLHUP)) != 0) {
+      const ssize_t got = read(STDIN_FILENO, buf, sizeof(buf));
+      if (got <= 0) {
+        why = "stdin closed";
+        break;
+      }
+    }
+    robot.Tick();
+    robot.Poll();
+    link.Poll(real_clock.NowUs() / 1000);
+  }
+  log.Stopping(g_stop != 0 ? "signal" : why);
+  return 0;
+}

@@ -1,0 +1,231 @@
+#include "emulator_io.h"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace cube {
+
+UdpEndpoint::~UdpEndpoint() {
+  if (fd_ >= 0) close(fd_);
+}
+
+bool UdpEndpoint::Open(const std::string& address, uint16_t port,
+                       std::string* error) {
+  fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+  if (fd_ < 0) {
+    *error = std::string("socket: ") + std::strerror(errno);
+    return false;
+  }
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(port);
+  if (inet_pton(AF_INET, address.c_str(), &addr.sin_addr) != 1) {
+    *error = "bad --bind address: " + address;
+    return false;
+  }
+  if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) != 0) {
+    *error = "bind " + address + ":" + std::to_string(port) + ": " +
+             std::strerror(errno);
+    return false;
+  }
+  socklen_t len = sizeof(addr);
+  getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
+  port_ = ntohs(addr.sin_port);
+  return true;
+}
+
+long UdpEndpoint::Receive(uint8_t* buf, size_t cap, sockaddr_in* from) {
+  socklen_t len = sizeof(*from);
+  return static_cast<long>(recvfrom(fd_, buf, cap, MSG_TRUNC,
+                                    reinterpret_cast<sockaddr*>(from), &len));
+}
+
+void UdpEndpoint::SendTo(const uint8_t* data, size_t len,
+                         const sockaddr_in& to) {
+  sendto(fd_, data, len, 0, reinterpret_cast<const sockaddr*>(&to),
+         sizeof(to));
+}
+
+Pty::~Pty() {
+  if (slave_ >= 0) close(slave_);
+  if (master_ >= 0) close(master_);
+}
+
+bool Pty::Open(std::string* error) {
+  master_ = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (master_ < 0 || grantpt(master_) != 0 || unlockpt(master_) != 0) {
+    *error = std::string("posix_openpt: ") + std::strerror(errno);
+    return false;
+  }
+  const char* name = ptsname(master_);
+  if (name == nullptr) {
+    *error = "ptsname failed";
+    return false;
+  }
+  path_ = name;
+  slave_ = open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (slave_ < 0) {
+    *error = "open " + path_ + ": " + std::strerror(errno);
+    return false;
+  }
+  termios t{};
+  tcgetattr(slave_, &t);
+  cfmakeraw(&t);
+  cfsetispeed(&t, B115200);
+  cfsetospeed(&t, B115200);
+  tcsetattr(slave_, TCSANOW, &t);
+  const int flags = fcntl(master_, F_GETFL);
+  fcntl(master_, F_SETFL, flags | O_NONBLOCK);
+  return true;
+}
+
+void Pty::Write(const uint8_t* data, size_t len) {
+  size_t done = 0;
+  int spins = 0;
+  while (done < len && spins < 1000) {
+    const ssize_t n = write(master_, data + done, len - done);
+    if (n > 0) {
+      done += static_cast<size_t>(n);
+    } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
+      ++spins;
+      usleep(1000);  // the client is not reading; give it a moment
+    } else {
+      return;
+    }
+  }
+}
+
+void EventLog::Emit(JsonWriter& w, char* buf) {
+  w.EndObject();
+  if (!w.ok()) return;
+  buf[w.size()] = '\n';
+  fwrite(buf, 1, w.size() + 1, stdout);
+  fflush(stdout);
+}
+
+void EventLog::Ready(uint16_t udp_port, const std::string& pty,
+                     const std::string& device_id, double time_scale,
+                     bool auth) {
+  char buf[512];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("ready");
+  w.Key("udp_port");
+  w.Uint(udp_port);
+  w.Key("pty");
+  w.String(pty.c_str());
+  w.Key("device_id");
+  w.String(device_id.c_str());
+  w.Key("time_scale");
+  w.Double(time_scale);
+  w.Key("auth");
+  w.Bool(auth);
+  w.Key("protocol_version");
+  w.String(kProtocolVersion);
+  Emit(w, buf);
+}
+
+void EventLog::OnMotionStarted(const MotionReport& r) {
+  char buf[512];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("move_started");
+  w.Key("move_id");
+  w.Uint(r.move_id);
+  w.Key("kind");
+  w.String(r.velocity ? "drive" : "move");
+  if (r.velocity) {
+    w.Key("left_sps");
+    w.Int(r.left_sps);
+    w.Key("right_sps");
+    w.Int(r.right_sps);
+  } else {
+    w.Key("left_steps");
+    w.Int(r.planned_left);
+    w.Key("right_steps");
+    w.Int(r.planned_right);
+    w.Key("speed");
+    w.Double(r.speed);
+  }
+  w.Key("duration_us");
+  w.Int(r.duration_us);
+  w.Key("left_position");
+  w.Int(r.left_position);
+  w.Key("right_position");
+  w.Int(r.right_position);
+  w.Key("t_ms");
+  w.Uint(cube_.uptime_ms());
+  Emit(w, buf);
+}
+
+void EventLog::OnMotionFinished(const MotionReport& r) {
+  char buf[512];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("move_finished");
+  w.Key("move_id");
+  w.Uint(r.move_id);
+  w.Key("kind");
+  w.String(r.velocity ? "drive" : "move");
+  w.Key("outcome");
+  w.String(MoveOutcomeName(r.outcome));
+  w.Key("left_steps");
+  w.Int(r.done_left);
+  w.Key("right_steps");
+  w.Int(r.done_right);
+  w.Key("left_position");
+  w.Int(r.left_position);
+  w.Key("right_position");
+  w.Int(r.right_position);
+  const Pose& p = cube_.pose();
+  w.Key("x_cm");
+  w.Double(p.x_cm);
+  w.Key("y_cm");
+  w.Double(p.y_cm);
+  w.Key("heading_rad");
+  w.Double(p.heading_rad);
+  w.Key("t_ms");
+  w.Uint(cube_.uptime_ms());
+  Emit(w, buf);
+}
+
+void EventLog::OnTrip(const SafetyTrip& trip) {
+  char buf[512];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("trip");
+  w.Key("reason");
+  w.String(trip.reason);
+  w.Key("detail");
+  w.String(trip.detail);
+  w.Key("estop");
+  w.Bool(cube_.estopped());
+  w.Key("t_ms");
+  w.Uint(trip.uptime_ms);
+  Emit(w, buf);
+}
+
+void EventLog::Stopping(const char* why) {
+  char buf[256];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("exit");
+  w.Key("reason");
+  w.String(why);
+  Emit(w, buf);
+}
+
+}  // namespace cube

@@ -1,0 +1,68 @@
+// Sockets, pseudo-terminal and event output of cube-emulator.
+#ifndef CUBE_HOST_EMULATOR_IO_H_
+#define CUBE_HOST_EMULATOR_IO_H_
+
+#include <netinet/in.h>
+
+#include <cstdint>
+#include <string>
+
+#include "cube.h"
+#include "frame.h"
+
+namespace cube {
+
+// A UDP socket bound to 127.0.0.1 (or the given address).
+class UdpEndpoint {
+ public:
+  ~UdpEndpoint();
+  // Binds; port 0 picks a free one. Returns false and sets `error`.
+  bool Open(const std::string& address, uint16_t port, std::string* error);
+  int fd() const { return fd_; }
+  uint16_t port() const { return port_; }
+  // Reads one datagram: its full length (may exceed cap: then truncated).
+  long Receive(uint8_t* buf, size_t cap, sockaddr_in* from);
+  void SendTo(const uint8_t* data, size_t len, const sockaddr_in& to);
+
+ private:
+  int fd_ = -1;
+  uint16_t port_ = 0;
+};
+
+// A pseudo-terminal in raw mode; the emulator keeps the master side and
+// holds the slave open so that clients may come and go.
+class Pty : public ByteSink {
+ public:
+  ~Pty() override;
+  bool Open(std::string* error);
+  int fd() const { return master_; }
+  const std::string& path() const { return path_; }
+  void Write(const uint8_t* data, size_t len) override;
+
+ private:
+  int master_ = -1;
+  int slave_ = -1;
+  std::string path_;
+};
+
+// Prints one JSON object per line on stdout and flushes it.
+class EventLog : public CubeObserver {
+ public:
+  EventLog(Cube& cube, Clock& clock) : cube_(cube), clock_(clock) {}
+  void Ready(uint16_t udp_port, const std::string& pty,
+             const std::string& device_id, double time_scale, bool auth);
+  void OnMotionStarted(const MotionReport& r) override;
+  void OnMotionFinished(const MotionReport& r) override;
+  void OnTrip(const SafetyTrip& trip) override;
+  void Stopping(const char* why);
+
+ private:
+  void Emit(JsonWriter& w, char* buf);
+
+  Cube& cube_;
+  Clock& clock_;
+};
+
+}  // namespace cube
+
+#endif  // CUBE_HOST_EMULATOR_IO_H_
