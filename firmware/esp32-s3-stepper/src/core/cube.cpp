@@ -1120,7 +1120,7 @@ void Cube::CmdGetStatus(Reply& r) {
   w.Key("ms_since_host");
   w.Uint((now - last_host_us_) / 1000);
   w.Key("coils_on");
-  w.Bool(executor_.coils_on() || motion_.running());
+  w.Bool(executor_.coils_wanted());
   w.EndObject();
   w.Key("led");
   w.BeginObject();

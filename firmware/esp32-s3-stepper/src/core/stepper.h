@@ -56,7 +56,10 @@ class StepExecutor {
   // Invalidates every queued event (an immediate stop).
   void Cancel() { generation_.fetch_add(1); }
   void SetCoilsEnabled(bool on) { coils_wanted_.store(on); }
+  // Whether the coils are energised, as applied by the last Tick().
   bool coils_on() const { return coils_applied_.load(); }
+  // Whether the task side wants them energised (applied at the next Tick).
+  bool coils_wanted() const { return coils_wanted_.load(); }
   // Signed positions in steps, wrapping at 2^32.
   int32_t left_position() const { return left_pos_.load(); }
   int32_t right_position() const { return right_pos_.load(); }
