@@ -1,0 +1,88 @@
+import jpeg from 'jpeg-js';
+import { describe, expect, it } from 'vitest';
+import { renderRobotView } from './camera.js';
+import { encodeJpeg, jpegDataUrl } from './jpeg.js';
+import { World } from './world.js';
+
+async function frameOf(world: World, robotId: string) {
+  const url = jpegDataUrl(await encodeJpeg(renderRobotView(world, world.robot(robotId))));
+  expect(url.startsWith('data:image/jpeg;base64,')).toBe(true);
+  const bytes = Buffer.from(url.slice('data:image/jpeg;base64,'.length), 'base64');
+  return jpeg.decode(bytes, { useTArray: true });
+}
+
+function pixel(image: { width: number; data: Uint8Array }, x: number, y: number) {
+  const i = (y * image.width + x) * 4;
+  return { r: image.data[i] ?? 0, g: image.data[i + 1] ?? 0, b: image.data[i + 2] ?? 0 };
+}
+
+describe('renderRobotView', () => {
+  it('renders a 320x240 JPEG with sky above the horizon and floor below', async () => {
+    const world = new World();
+    world.addRobot({ id: 'r' });
+    const image = await frameOf(world, 'r');
+    expect([image.width, image.height]).toEqual([320, 240]);
+    const sky = pixel(image, 160, 10);
+    expect(sky.b).toBeGreaterThan(sky.r + 40);
+  });
+
+  it('shows an obstacle in front in its colour, and not when the robot looks away', async () => {
+    // A red box 0.5 m ahead, nothing behind.
+    const world = new World({
+      map: {
+        name: 'red box',
+        obstacles: [
+          { kind: 'box', x: 0.6, y: 0, width: 0.2, depth: 0.4, height: 0.3, color: '#ff0000' },
+        ],
+      },
+    });
+    const robot = world.addRobot({ id: 'r' });
+    const ahead = await frameOf(world, 'r');
+    const centre = pixel(ahead, 160, 130);
+    expect(centre.r).toBeGreaterThan(150);
+    expect(centre.g).toBeLessThan(80);
+    expect(centre.b).toBeLessThan(80);
+
+    robot.rotateDeg(180);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    const away = await frameOf(world, 'r');
+    let red = 0;
+    for (let y = 0; y < 240; y += 4) {
+      for (let x = 0; x < 320; x += 4) {
+        const p = pixel(away, x, y);
+        if (p.r > 150 && p.g < 80 && p.b < 80) red += 1;
+      }
+    }
+    expect(red).toBe(0);
+  });
+
+  it('draws a nearer obstacle larger than a farther one', () => {
+    const world = new World({
+      map: {
+        name: 'post',
+        obstacles: [{ kind: 'cylinder', x: 1, y: 0, radius: 0.1, color: '#00ff00' }],
+      },
+    });
+    world.addRobot({ id: 'near', start: { x: 0.5, y: 0.8, yaw: 0 } });
+    world.addRobot({ id: 'far', start: { x: -1.5, y: -0.8, yaw: 0 } });
+    const greenColumns = (id: string) => {
+      const robot = world.robot(id);
+      const image = renderRobotView(world, robot, {});
+      let count = 0;
+      for (let x = 0; x < image.width; x += 1) {
+        const i = (121 * image.width + x) * 4;
+        if ((image.data[i + 1] ?? 0) > 150 && (image.data[i] ?? 0) < 100) count += 1;
+      }
+      return count;
+    };
+    // Point both robots at the post.
+    for (const id of ['near', 'far']) {
+      const robot = world.robot(id);
+      const turn = (Math.atan2(0 - robot.y, 1 - robot.x) * 180) / Math.PI;
+      robot.rotateDeg(turn);
+      world.advanceUntil(() => !robot.running, 10_000_000);
+    }
+    expect(greenColumns('near')).toBeGreaterThan(greenColumns('far'));
+    expect(greenColumns('far')).toBeGreaterThan(0);
+  });
+});

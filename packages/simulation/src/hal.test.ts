@@ -1,0 +1,190 @@
+import { isHalError } from '@hal/types';
+import { afterEach, describe, expect, it } from 'vitest';
+import { SimulationHAL } from './hal.js';
+import type { CommunicationEvent } from './hal.js';
+import { World } from './world.js';
+
+const hals: SimulationHAL[] = [];
+async function ready(hal: SimulationHAL): Promise<SimulationHAL> {
+  hals.push(hal);
+  await hal.initialize();
+  return hal;
+}
+
+afterEach(async () => {
+  for (const hal of hals.splice(0)) await hal.cleanup();
+});
+
+describe('SimulationHAL', () => {
+  describe('#moveForward', () => {
+    it('fails with COLLISION and the contact point when the robot drives into an obstacle', async () => {
+      const world = new World({
+        map: {
+          name: 'wall ahead',
+          obstacles: [{ kind: 'box', x: 0.3, y: 0, width: 0.1, depth: 1 }],
+        },
+      });
+      const hal = await ready(new SimulationHAL({ world }));
+      const result = await hal.locomotion.moveForward(50);
+      expect(result.success).toBe(false);
+      expect(result.code).toBe('COLLISION');
+      const contact = result.details?.['contact'] as { point: { x: number }; role: string };
+      expect(contact.role).toBe('obstacle');
+      expect(contact.point.x).toBeCloseTo(0.25, 6);
+      const pose = await hal.locomotion.getPose();
+      expect(pose.position.x).toBeCloseTo(0.25 - 0.07, 3);
+      expect(pose.velocity.linear).toBe(0);
+    });
+
+    it('stamps results with the simulated clock: a 10 cm move takes its planned 4121 ms', async () => {
+      const hal = await ready(new SimulationHAL());
+      const result = await hal.locomotion.moveForward(10);
+      expect(result.data?.['leftSteps']).toBe(2172);
+      expect(result.executionTime).toBeGreaterThanOrEqual(4120);
+      expect(result.executionTime).toBeLessThanOrEqual(4122);
+    });
+  });
+
+  describe('#moveTo', () => {
+    it('goes further than one command allows in equal straight parts and arrives', async () => {
+      const hal = await ready(new SimulationHAL());
+      const result = await hal.locomotion.moveTo(-2.2, 0.1, 0);
+      expect(result.success, JSON.stringify(result)).toBe(true);
+      const pose = await hal.locomotion.getPose();
+      expect(pose.position.x).toBeCloseTo(-2.2, 2);
+      expect(pose.position.y).toBeCloseTo(0.1, 2);
+    });
+
+    it('refuses a target outside the workspace with RANGE_EXCEEDED and does not move', async () => {
+      const hal = await ready(new SimulationHAL());
+      const result = await hal.locomotion.moveTo(80, 0, 0);
+      expect(result.code).toBe('RANGE_EXCEEDED');
+      expect(hal.robot.leftSteps).toBe(0);
+    });
+  });
+
+  describe('#drive', () => {
+    it('without a duration returns at once and keeps driving until stop()', async () => {
+      const hal = await ready(new SimulationHAL());
+      const started = await hal.locomotion.drive(255, 255);
+      expect(started.data?.['running']).toBe(true);
+      hal.world.advance(2_000_000);
+      expect(hal.robot.running).toBe(true);
+      const stopped = await hal.locomotion.stop();
+      expect(stopped.data?.['stopped']).toBe(true);
+      expect((await hal.locomotion.getPose()).position.x).toBeGreaterThan(0.02);
+    });
+
+    it('maps power to steps/s as trunc(power / 255 * maxSpeed)', async () => {
+      const hal = await ready(new SimulationHAL());
+      const result = await hal.locomotion.drive(100, -37);
+      expect(result.data).toMatchObject({ leftSps: 401, rightSps: -148 });
+    });
+
+    it('stops by itself when the host goes silent for the host timeout', async () => {
+      const hal = await ready(new SimulationHAL({ robot: { hostTimeoutMs: 1000 } }));
+      await hal.locomotion.drive(200, 200);
+      hal.simulateHostSilence(true);
+      hal.world.advance(1_500_000);
+      expect(hal.robot.running).toBe(false);
+      expect(hal.robot.motion?.outcome).toBe('host_timeout');
+      expect(hal.safety.getSafetyStatus().errors[0]).toContain('host_timeout');
+      expect(hal.safety.isEmergencyStopped()).toBe(false);
+    });
+  });
+
+  describe('interruptions (manual clock)', () => {
+    it('fails a running motion with INTERRUPTED when a new motion replaces it', async () => {
+      const hal = await ready(new SimulationHAL({ clock: 'manual' }));
+      const first = hal.locomotion.moveForward(10);
+      await Promise.resolve();
+      hal.world.advance(1_000_000);
+      const second = hal.locomotion.rotate('left', 10);
+      const result = await first;
+      expect(result.code).toBe('INTERRUPTED');
+      expect(result.details?.['outcome']).toBe('replaced');
+      hal.world.advance(5_000_000);
+      expect((await second).success).toBe(true);
+    });
+
+    it('fails a running motion with INTERRUPTED on stop() and on an e-stop', async () => {
+      const hal = await ready(new SimulationHAL({ clock: 'manual' }));
+      const move = hal.locomotion.moveForward(10);
+      hal.world.advance(500_000);
+      await hal.locomotion.stop();
+      expect((await move).details?.['outcome']).toBe('stopped');
+      const again = hal.locomotion.moveForward(10);
+      hal.world.advance(500_000);
+      expect((await hal.safety.emergencyStop('test')).success).toBe(true);
+      expect((await again).details?.['outcome']).toBe('estop');
+      expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe('test');
+    });
+
+    it('fails with TIMEOUT, and stops the robot, when nobody advances the clock', async () => {
+      const hal = await ready(new SimulationHAL({ clock: 'manual', manualTimeoutMs: 20 }));
+      const result = await hal.locomotion.moveForward(10);
+      expect(result.code).toBe('TIMEOUT');
+      expect(hal.robot.running).toBe(false);
+    });
+  });
+
+  describe('realtime clock', () => {
+    it('finishes motions driven by the real-time ticker it started', async () => {
+      const hal = await ready(new SimulationHAL({ clock: 'realtime', realtimeSpeed: 40 }));
+      expect(hal.world.realtimeSpeed).toBe(40);
+      const result = await hal.locomotion.moveForward(2);
+      expect(result.success).toBe(true);
+      await hal.cleanup();
+      expect(hal.world.realtimeSpeed).toBe(0);
+    });
+  });
+
+  describe('vision', () => {
+    it('captures a JPEG data URL and reads range sensors marked as simulated', async () => {
+      const hal = await ready(new SimulationHAL({ world: new World({ map: 'obstacles' }) }));
+      const frame = await hal.vision.captureFrame();
+      expect(frame.startsWith('data:image/jpeg;base64,/9j/')).toBe(true);
+      const ranges = await hal.vision.getDistanceSensors();
+      expect(ranges.source).toBe('simulation');
+      expect(ranges.front).toBeCloseTo(1.8 - 0.9 - 0.2 - 0.07, 6);
+      await expect(hal.vision.getLineSensors()).rejects.toSatisfy(
+        (e: unknown) => isHalError(e) && e.code === 'NOT_IMPLEMENTED',
+      );
+    });
+
+    it('reports what it lacks honestly when a feature is switched off', async () => {
+      const hal = await ready(new SimulationHAL({ features: { camera: false, imu: false } }));
+      expect(hal.getDeviceInfo().capabilities).not.toContain('vision.camera:v1.0');
+      await expect(hal.vision.captureFrame()).rejects.toSatisfy(
+        (e: unknown) => isHalError(e) && e.code === 'NOT_IMPLEMENTED',
+      );
+      expect((await hal.vision.getIMU()).source).toBe('odometry');
+    });
+  });
+
+  describe('communication', () => {
+    it('emits LED, log and (with a speaker) speech events for a UI', async () => {
+      const hal = await ready(new SimulationHAL({ features: { speaker: true } }));
+      const seen: CommunicationEvent[] = [];
+      hal.events.on('communication', (e) => seen.push(e));
+      expect((await hal.communication.setLED(0, 255, 0, 'blink')).success).toBe(true);
+      hal.communication.log('hello', 'warn');
+      expect((await hal.communication.speak('hi there')).success).toBe(true);
+      expect(seen.map((e) => e.type)).toEqual(['led', 'log', 'speak']);
+      expect(hal.robot.led).toEqual({ r: 0, g: 255, b: 0, pattern: 'blink' });
+      expect(hal.logs).toEqual(['hello']);
+    });
+  });
+
+  describe('many robots', () => {
+    it('drives two HALs in one world without them passing through each other', async () => {
+      const world = new World();
+      const a = await ready(new SimulationHAL({ world, start: { x: -0.2, y: 0, yaw: 0 } }));
+      const b = await ready(new SimulationHAL({ world, start: { x: 0.2, y: 0, yaw: Math.PI } }));
+      await b.locomotion.drive(0, 0);
+      const result = await a.locomotion.moveForward(40);
+      expect(result.code).toBe('COLLISION');
+      expect(result.details?.['contact']).toMatchObject({ role: 'robot', robotId: b.robot.id });
+    });
+  });
+});

@@ -1,0 +1,122 @@
+import { isHalError } from '@hal/types';
+import { afterEach, describe, expect, it, vi } from 'vitest';
+import { parseMap } from './map.js';
+import { BUILTIN_MAPS } from './maps/index.js';
+import { World } from './world.js';
+
+describe('parseMap', () => {
+  it('fills defaults: a 5 m x 5 m arena and a start at the origin', () => {
+    const map = parseMap({ name: 'bare' });
+    expect(map.arena).toEqual({ width: 5, height: 5, wallHeight: 0.3 });
+    expect(map.starts).toEqual([{ x: 0, y: 0, yaw: 0 }]);
+  });
+
+  it('refuses a diagonal wall with INVALID_PARAMETER naming it', () => {
+    let error: unknown;
+    try {
+      parseMap({ name: 'bad', walls: [{ from: [0, 0], to: [1, 1] }] });
+    } catch (e) {
+      error = e;
+    }
+    expect(isHalError(error) && error.code).toBe('INVALID_PARAMETER');
+    expect(String(error)).toContain('walls.0');
+  });
+
+  it('ships empty, obstacles, maze and room, each a valid map that survives a JSON round trip', () => {
+    expect(Object.keys(BUILTIN_MAPS).sort()).toEqual(['empty', 'maze', 'obstacles', 'room']);
+    for (const map of Object.values(BUILTIN_MAPS)) {
+      expect(parseMap(JSON.parse(JSON.stringify(map)))).toEqual(map);
+    }
+  });
+
+  it('starts every robot of every built-in map clear of walls and obstacles', () => {
+    for (const name of Object.keys(BUILTIN_MAPS) as Array<keyof typeof BUILTIN_MAPS>) {
+      const world = new World({ map: name });
+      for (const start of world.map.starts) {
+        expect(world.contactAt(start.x, start.y, 0.07), `${name} ${JSON.stringify(start)}`).toBe(
+          undefined,
+        );
+      }
+    }
+  });
+});
+
+describe('World', () => {
+  afterEach(() => {
+    vi.useRealTimers();
+  });
+
+  it('stops a robot at the arena wall and reports the contact point', () => {
+    const world = new World();
+    const robot = world.addRobot();
+    const contacts: unknown[] = [];
+    world.events.on('collision', (c) => contacts.push(c));
+    robot.drive(1024, 1024);
+    world.advanceUntil(() => !robot.running, 120_000_000);
+    expect(robot.motion?.outcome).toBe('collision');
+    expect(robot.motion?.contact?.role).toBe('arena');
+    expect(robot.motion?.contact?.point.x).toBeCloseTo(2.5, 6);
+    expect(robot.x + robot.radius).toBeLessThanOrEqual(2.5);
+    expect(robot.x + robot.radius).toBeGreaterThan(2.499);
+    expect(contacts).toHaveLength(1);
+  });
+
+  it('lets a robot touching a wall turn in place and drive away from it', () => {
+    const world = new World();
+    const robot = world.addRobot({ start: { x: 2.5 - 0.07, y: 0, yaw: 0 } });
+    robot.rotateDeg(180);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    expect(robot.motion?.outcome).toBe('done');
+    robot.moveCm(10, 10);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    expect(robot.motion?.outcome).toBe('done');
+    expect(robot.x).toBeCloseTo(2.33, 2);
+  });
+
+  it('stops robots that drive into each other', () => {
+    const world = new World();
+    const a = world.addRobot({ start: { x: -0.3, y: 0, yaw: 0 } });
+    const b = world.addRobot({ start: { x: 0.3, y: 0, yaw: Math.PI } });
+    a.drive(1024, 1024);
+    b.drive(1024, 1024);
+    world.advanceUntil(() => !a.running && !b.running, 30_000_000);
+    expect(a.motion?.outcome).toBe('collision');
+    expect(b.motion?.outcome).toBe('collision');
+    expect(b.x - a.x).toBeGreaterThanOrEqual(0.14 - 1e-9);
+  });
+
+  it('is deterministic: the same seed and commands give the same state', () => {
+    const run = () => {
+      const world = new World({ map: 'obstacles', seed: 7 });
+      const robot = world.addRobot();
+      robot.drive(900, 1024);
+      world.advance(20_000_000);
+      return [robot.x, robot.y, robot.yaw, robot.leftSteps, world.random.next()];
+    };
+    expect(run()).toEqual(run());
+  });
+
+  it('puts robots back at their starts when the map changes', () => {
+    const world = new World();
+    world.addRobot({ id: 'a' });
+    world.robot('a').moveCm(10, 10);
+    world.advance(5_000_000);
+    world.setMap('maze');
+    const start = BUILTIN_MAPS.maze.starts[0];
+    expect([world.robot('a').x, world.robot('a').y]).toEqual([start?.x, start?.y]);
+  });
+
+  it('runs against the wall clock at the requested speed with startRealtime', () => {
+    vi.useFakeTimers();
+    let wall = 0;
+    const world = new World();
+    world.startRealtime({ speed: 4, intervalMs: 10, now: () => wall });
+    for (let i = 0; i < 10; i += 1) {
+      wall += 10;
+      vi.advanceTimersByTime(10);
+    }
+    world.stopRealtime();
+    expect(world.nowUs).toBe(400_000);
+    expect(world.realtimeSpeed).toBe(0);
+  });
+});
