@@ -10,6 +10,11 @@ import type { Contact } from './robot.js';
 import { discContact, solidsOf } from './shapes.js';
 import type { Solid } from './shapes.js';
 
+/** Side of a cell of the robot grid, metres. */
+const GRID_CELL_M = 0.5;
+/** Below this many robots, contact tests check every robot (cheaper than a grid). */
+const GRID_MIN_ROBOTS = 12;
+
 /** Listener bookkeeping for a few named events (no Node dependency, works in the browser). */
 export class Emitter<Events extends Record<string, unknown>> {
   readonly #listeners = new Map<keyof Events, Set<(payload: never) => void>>();
@@ -104,6 +109,7 @@ export class World {
   #ticks = 0;
   #timer: ReturnType<typeof setInterval> | undefined;
   #speed = 0;
+  #grid: Map<number, number[]> | undefined;
 
   constructor(options: WorldOptions = {}) {
     this.random = new SeededRandom(options.seed ?? 1);
@@ -200,30 +206,79 @@ export class World {
       const point = discContact(x, y, r, solid);
       if (point !== undefined) return { point, role: solid.role, index: solid.index };
     }
-    for (let i = 0; i < this.#robots.length; i += 1) {
-      const other = this.#robots[i] as SimRobot;
-      if (other === self) continue;
-      const dx = x - other.x;
-      const dy = y - other.y;
-      const reach = r + other.radius;
-      const d2 = dx * dx + dy * dy;
-      if (d2 < reach * reach) {
-        const d = Math.sqrt(d2) || 1;
-        return {
-          point: { x: other.x + (dx / d) * other.radius, y: other.y + (dy / d) * other.radius },
-          role: 'robot',
-          index: i,
-          robotId: other.id,
-        };
+    const grid = this.#grid;
+    if (grid === undefined) {
+      for (let i = 0; i < this.#robots.length; i += 1) {
+        const hit = this.#robotContact(x, y, r, i, self);
+        if (hit !== undefined) return hit;
+      }
+      return undefined;
+    }
+    const cx = Math.floor(x / GRID_CELL_M);
+    const cy = Math.floor(y / GRID_CELL_M);
+    for (let gx = cx - 1; gx <= cx + 1; gx += 1) {
+      for (let gy = cy - 1; gy <= cy + 1; gy += 1) {
+        const cell = grid.get(gx * 65_536 + gy);
+        if (cell === undefined) continue;
+        for (const i of cell) {
+          const hit = this.#robotContact(x, y, r, i, self);
+          if (hit !== undefined) return hit;
+        }
       }
     }
     return undefined;
+  }
+
+  #robotContact(
+    x: number,
+    y: number,
+    r: number,
+    i: number,
+    self: SimRobot | undefined,
+  ): Contact | undefined {
+    const other = this.#robots[i] as SimRobot;
+    if (other === self) return undefined;
+    const dx = x - other.x;
+    const dy = y - other.y;
+    const reach = r + other.radius;
+    const d2 = dx * dx + dy * dy;
+    if (d2 >= reach * reach) return undefined;
+    const d = Math.sqrt(d2) || 1;
+    return {
+      point: { x: other.x + (dx / d) * other.radius, y: other.y + (dy / d) * other.radius },
+      role: 'robot',
+      index: i,
+      robotId: other.id,
+    };
+  }
+
+  /**
+   * With many robots, a grid of robot indices by cell, rebuilt every tick, so a contact test
+   * looks only at the robots in the nine cells around it. A robot moves far less than a cell per
+   * tick, and no robot is wider than a cell, so nothing in reach is missed.
+   */
+  #buildGrid(): void {
+    const robots = this.#robots;
+    if (robots.length < GRID_MIN_ROBOTS || robots.some((r) => r.radius * 2 > GRID_CELL_M / 2)) {
+      this.#grid = undefined;
+      return;
+    }
+    const grid = new Map<number, number[]>();
+    for (let i = 0; i < robots.length; i += 1) {
+      const robot = robots[i] as SimRobot;
+      const key = Math.floor(robot.x / GRID_CELL_M) * 65_536 + Math.floor(robot.y / GRID_CELL_M);
+      const cell = grid.get(key);
+      if (cell === undefined) grid.set(key, [i]);
+      else cell.push(i);
+    }
+    this.#grid = grid;
   }
 
   /** Advances the clock by one tick and moves every robot. */
   step(): void {
     const next = this.#nowUs + this.tickUs;
     const robots = this.#robots;
+    this.#buildGrid();
     for (let i = 0; i < robots.length; i += 1) {
       const robot = robots[i] as SimRobot;
       const wasRunning = robot.running;
@@ -235,6 +290,7 @@ export class World {
         }
       }
     }
+    this.#grid = undefined;
     this.#nowUs = next;
     this.#ticks += 1;
     this.events.emit('tick', next);

@@ -1,0 +1,65 @@
+// How fast the simulated world runs headless, with full stepper fidelity: every tick asks the
+// firmware's step planner how many whole steps each wheel has made, integrates odometry and checks
+// contacts. A "step" here is one world tick (1 ms of simulated time) for every robot in it.
+import { World } from '@hal/simulation';
+
+interface Figures {
+  ticksPerS: number;
+  robotTicksPerS: number;
+  motorStepsPerS: number;
+  realTimeFactor: number;
+}
+
+function run(robots: number, ticks: number): Figures {
+  const side = Math.ceil(Math.sqrt(robots));
+  const spacing = 1.5;
+  const size = side * spacing + 2;
+  const world = new World({
+    map: { name: 'bench', arena: { width: size, height: size } },
+    seed: 1,
+  });
+  for (let i = 0; i < robots; i += 1) {
+    const x = (i % side) * spacing - ((side - 1) * spacing) / 2;
+    const y = Math.floor(i / side) * spacing - ((side - 1) * spacing) / 2;
+    // Circles of about 0.4 m radius: every robot moves on every tick and never touches another.
+    world.addRobot({ start: { x, y, yaw: 0 } }).drive(1024, 905);
+  }
+  // Warm up past the acceleration ramp so the figures are for cruising robots.
+  world.advance(3_000_000);
+  const stepsBefore = world.robots.reduce(
+    (sum, r) => sum + Math.abs(r.leftSteps) + Math.abs(r.rightSteps),
+    0,
+  );
+  const start = process.hrtime.bigint();
+  for (let i = 0; i < ticks; i += 1) world.step();
+  const seconds = Number(process.hrtime.bigint() - start) / 1e9;
+  const stepsAfter = world.robots.reduce(
+    (sum, r) => sum + Math.abs(r.leftSteps) + Math.abs(r.rightSteps),
+    0,
+  );
+  if (world.robots.some((r) => !r.running)) throw new Error('a robot stopped during the benchmark');
+  return {
+    ticksPerS: ticks / seconds,
+    robotTicksPerS: (ticks * robots) / seconds,
+    motorStepsPerS: (stepsAfter - stepsBefore) / seconds,
+    realTimeFactor: (ticks * world.tickUs) / 1e6 / seconds,
+  };
+}
+
+const fmt = (n: number) =>
+  n >= 1e6 ? `${(n / 1e6).toFixed(2)} M` : n >= 1e3 ? `${(n / 1e3).toFixed(1)} k` : n.toFixed(1);
+
+for (const [robots, ticks] of [
+  [1, 2_000_000],
+  [100, 20_000],
+] as const) {
+  const f = run(robots, ticks);
+  console.log(
+    `${String(robots).padStart(3)} robot${robots === 1 ? ' ' : 's'}: ` +
+      `${fmt(f.robotTicksPerS)} robot-steps/s (${fmt(f.ticksPerS)} world steps/s of 1 ms), ` +
+      `${fmt(f.motorStepsPerS)} motor steps/s, real-time factor ${fmt(f.realTimeFactor)}x`,
+  );
+}
+console.log(
+  'anchor: a TypeScript robot simulator without a stepper model, 1 robot: ~384 k steps/s',
+);
