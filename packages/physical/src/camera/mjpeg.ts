@@ -1,0 +1,155 @@
+import { HalError } from '@hal/types';
+import { scoped } from '../logger.js';
+import type { Logger, ScopedLogger } from '../logger.js';
+import { boundaryOf, MultipartParser } from './multipart.js';
+
+/** Options of {@link MjpegCamera}. */
+export interface MjpegCameraOptions {
+  /** The camera's base URL, e.g. `http://192.168.4.2`; the stream is `GET {url}/stream`. */
+  url: string;
+  /** Wait this long after the stream ends or fails before reconnecting, ms. Default 1000. */
+  reconnectDelayMs?: number;
+  /** `captureFrame` waits this long for a first frame, ms. Default 5000. */
+  frameTimeoutMs?: number;
+  /** A frame older than this is stale: `captureFrame` waits for a newer one, ms. Default 2000. */
+  maxFrameAgeMs?: number;
+  /** The fetch implementation (a test seam). Default the global `fetch`. */
+  fetch?: typeof fetch;
+  logger?: Logger;
+}
+
+/** Counters of the camera reader. */
+export interface MjpegStats {
+  frames: number;
+  connects: number;
+  errors: number;
+}
+
+function isJpeg(bytes: Uint8Array): boolean {
+  return bytes.length >= 4 && bytes[0] === 0xff && bytes[1] === 0xd8;
+}
+
+function toBase64(bytes: Uint8Array): string {
+  const B = (globalThis as { Buffer?: { from(b: Uint8Array): { toString(e: string): string } } })
+    .Buffer;
+  if (B !== undefined) return B.from(bytes).toString('base64');
+  let binary = '';
+  for (const b of bytes) binary += String.fromCharCode(b);
+  return btoa(binary);
+}
+
+/**
+ * Reads the ESP32-CAM's MJPEG stream (`GET /stream`, `multipart/x-mixed-replace`) in the
+ * background, keeps the latest JPEG, and reconnects whenever the stream ends or fails.
+ */
+export class MjpegCamera {
+  readonly #options: MjpegCameraOptions;
+  readonly #log: ScopedLogger;
+  readonly #fetch: typeof fetch;
+  #latest: { jpeg: Uint8Array; at: number } | undefined;
+  #waiters = new Set<() => void>();
+  #abort: AbortController | undefined;
+  #running = false;
+  #loop: Promise<void> | undefined;
+  readonly stats: MjpegStats = { frames: 0, connects: 0, errors: 0 };
+
+  constructor(options: MjpegCameraOptions) {
+    this.#options = options;
+    this.#log = scoped(options.logger ?? { log: () => undefined }, 'hal:physical:camera');
+    this.#fetch = options.fetch ?? ((...args) => globalThis.fetch(...args));
+  }
+
+  /** Starts reading the stream in the background. */
+  start(): void {
+    if (this.#running) return;
+    this.#running = true;
+    this.#loop = this.#run();
+  }
+
+  /** Stops reading and closes the connection. */
+  async stop(): Promise<void> {
+    this.#running = false;
+    this.#abort?.abort();
+    for (const wake of this.#waiters) wake();
+    await this.#loop;
+  }
+
+  /** The latest JPEG and when it arrived (ms, `performance.now()`), if any. */
+  latest(): { jpeg: Uint8Array; at: number } | undefined {
+    return this.#latest;
+  }
+
+  /**
+   * The latest frame as a `data:image/jpeg;base64,...` URL, waiting for one if there is none yet
+   * (or the last is stale). Rejects with TIMEOUT when none comes in time.
+   */
+  async captureFrame(): Promise<string> {
+    this.start();
+    const maxAge = this.#options.maxFrameAgeMs ?? 2000;
+    const fresh = () => this.#latest !== undefined && performance.now() - this.#latest.at <= maxAge;
+    if (!fresh()) {
+      const timeoutMs = this.#options.frameTimeoutMs ?? 5000;
+      await new Promise<void>((resolve, reject) => {
+        const timer = setTimeout(() => {
+          this.#waiters.delete(wake);
+          reject(
+            new HalError(
+              'TIMEOUT',
+              `no camera frame from ${this.#options.url} within ${timeoutMs} ms`,
+              {
+                details: { url: this.#options.url, timeoutMs },
+              },
+            ),
+          );
+        }, timeoutMs);
+        const wake = () => {
+          clearTimeout(timer);
+          this.#waiters.delete(wake);
+          if (this.#running) resolve();
+          else reject(new HalError('NOT_CONNECTED', 'the camera reader was stopped'));
+        };
+        this.#waiters.add(wake);
+      });
+    }
+    const latest = this.#latest;
+    if (latest === undefined) throw new HalError('TIMEOUT', 'no camera frame');
+    return `data:image/jpeg;base64,${toBase64(latest.jpeg)}`;
+  }
+
+  async #run(): Promise<void> {
+    const url = `${this.#options.url.replace(/\/+$/, '')}/stream`;
+    while (this.#running) {
+      this.#abort = new AbortController();
+      try {
+        const response = await this.#fetch(url, { signal: this.#abort.signal });
+        const boundary = boundaryOf(response.headers.get('content-type'));
+        if (!response.ok || response.body === null || boundary === undefined) {
+          throw new Error(
+            `GET ${url}: ${response.status} ${response.headers.get('content-type') ?? 'no content type'}`,
+          );
+        }
+        this.stats.connects += 1;
+        this.#log.debug('stream connected', { url });
+        const parser = new MultipartParser(boundary);
+        const reader = response.body.getReader();
+        for (;;) {
+          const { done, value } = await reader.read();
+          if (done) break;
+          for (const part of parser.push(value)) {
+            if (!isJpeg(part)) continue;
+            this.#latest = { jpeg: part, at: performance.now() };
+            this.stats.frames += 1;
+            for (const wake of this.#waiters) wake();
+          }
+        }
+        this.#log.debug('stream ended', { url });
+      } catch (error) {
+        if (!this.#running) break;
+        this.stats.errors += 1;
+        this.#log.debug('stream failed', { url, error: String(error) });
+      }
+      if (!this.#running) break;
+      await new Promise((resolve) => setTimeout(resolve, this.#options.reconnectDelayMs ?? 1000));
+    }
+  }
+}

@@ -1,0 +1,91 @@
+export { PhysicalHAL } from './physical-hal.js';
+export type { PhysicalHALOptions, RobotIdentity } from './physical-hal.js';
+
+export { Session, robotError } from './session.js';
+export type { SessionOptions, SessionState } from './session.js';
+
+export { PoseTracker } from './pose-tracker.js';
+
+export { MockRobot } from './mock/mock-robot.js';
+export type { MockRobotOptions, MockTransportOptions } from './mock/mock-robot.js';
+
+export type { Logger, LogLevel, ScopedLogger } from './logger.js';
+export { scoped, silentLogger } from './logger.js';
+
+export {
+  DEFAULT_ATTEMPTS,
+  DEFAULT_REPLY_TIMEOUT_MS,
+  ReplyMatcher,
+  RttWindow,
+} from './transport/transport.js';
+export type {
+  RequestOptions,
+  SerialLinkStats,
+  Transport,
+  TransportContext,
+  TransportFactory,
+  TransportStats,
+} from './transport/transport.js';
+export { DEFAULT_UDP_PORT, udpTransport } from './transport/udp.js';
+export type { UdpTransport, UdpTransportOptions } from './transport/udp.js';
+export { PARTIAL_FRAME_TIMEOUT_MS, serialTransport } from './transport/serial.js';
+export type {
+  SerialPortLike,
+  SerialPortOpener,
+  SerialTransport,
+  SerialTransportOptions,
+} from './transport/serial.js';
+
+export { MAX_MESSAGE_BYTES, MessageCodec } from './protocol/codec.js';
+export type { DecodeResult, WireReply } from './protocol/codec.js';
+export { createAuthenticator, MAC_SUFFIX_LENGTH } from './protocol/auth.js';
+export type { MessageAuthenticator } from './protocol/auth.js';
+export {
+  DeviceConfigSchema,
+  EstopReplySchema,
+  HeartbeatReplySchema,
+  HelloReplySchema,
+  LedStateSchema,
+  MOVE_OUTCOMES,
+  MotionReplySchema,
+  REPLY_SCHEMAS,
+  ReplyEnvelopeSchema,
+  ResetEstopReplySchema,
+  SafetyStateSchema,
+  SetConfigReplySchema,
+  SetLedReplySchema,
+  StatusReplySchema,
+  StopReplySchema,
+} from './protocol/schemas.js';
+export type {
+  Command,
+  DeviceConfig,
+  EstopReply,
+  HeartbeatReply,
+  HelloReply,
+  LedState,
+  MotionReply,
+  MoveOutcome,
+  ReplyEnvelope,
+  ReplyOf,
+  RequestParams,
+  ResetEstopReply,
+  SafetyState,
+  SetConfigReply,
+  SetLedReply,
+  StatusReply,
+  StopReply,
+} from './protocol/schemas.js';
+
+export {
+  crc16,
+  decodeFrame,
+  encodeFrame,
+  FrameDecoder,
+  MAX_PAYLOAD_BYTES,
+} from './serial/frame.js';
+export type { Frame, FrameError, FrameEvent, FrameType } from './serial/frame.js';
+
+export { MjpegCamera } from './camera/mjpeg.js';
+export type { MjpegCameraOptions, MjpegStats } from './camera/mjpeg.js';
+export { boundaryOf, MultipartParser } from './camera/multipart.js';

@@ -1,0 +1,134 @@
+import { describeHalContract } from '@hal/types/testing';
+import { describe, expect, it } from 'vitest';
+import { MockRobot } from './mock/mock-robot.js';
+import { PhysicalHAL } from './physical-hal.js';
+import type { PhysicalHALOptions } from './physical-hal.js';
+
+const TIME_SCALE = 50;
+
+function halOn(robot: MockRobot, options: PhysicalHALOptions = {}): PhysicalHAL {
+  return new PhysicalHAL(
+    { mode: 'physical', deviceId: 'cube-1' },
+    { transport: robot.transport(), timeScale: TIME_SCALE, ...options },
+  );
+}
+
+describeHalContract('PhysicalHAL over the mock robot', {
+  create: () => halOn(new MockRobot({ timeScale: TIME_SCALE })),
+  timeoutMs: 20_000,
+});
+
+describe('PhysicalHAL', () => {
+  describe('#moveForward', () => {
+    it('sends one move_cm and resolves once the robot reports the move done', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = halOn(robot);
+      await hal.initialize();
+      const result = await hal.locomotion.moveForward(10);
+      expect(result.success, JSON.stringify(result)).toBe(true);
+      expect(robot.position).toEqual({ left: 2172, right: 2172 });
+      expect(robot.requests.filter((r) => r['cmd'] === 'move_cm')).toHaveLength(1);
+      expect(result.data).toMatchObject({ leftSteps: 2172, rightSteps: 2172 });
+      await hal.cleanup();
+    });
+
+    it('executes a move once when its reply is lost and the request is retried', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = new PhysicalHAL(
+        { mode: 'physical', deviceId: 'cube-1' },
+        { transport: robot.transport(), timeScale: TIME_SCALE },
+      );
+      await hal.initialize();
+      robot.dropReplies(2);
+      const result = await hal.locomotion.moveForward(10);
+      expect(result.success, JSON.stringify(result)).toBe(true);
+      expect(robot.motionsStarted).toBe(1);
+      expect(robot.position).toEqual({ left: 2172, right: 2172 });
+      expect(hal.transportStats()?.retries).toBe(2);
+      await hal.cleanup();
+    });
+
+    it('fails with NOT_CONNECTED when the robot stops answering, and recovers when it is back', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = new PhysicalHAL(
+        { mode: 'physical', deviceId: 'cube-1' },
+        {
+          transport: robot.transport(),
+          timeScale: TIME_SCALE,
+          requestTimeoutMs: 20,
+          attempts: 2,
+          reconnectIntervalMs: 20,
+        },
+      );
+      await hal.initialize();
+      robot.unresponsive = true;
+      const lost = await hal.locomotion.moveForward(1);
+      expect(lost.code).toBe('NOT_CONNECTED');
+      expect(hal.isReady()).toBe(false);
+      expect((await hal.locomotion.moveForward(1)).code).toBe('NOT_CONNECTED');
+      robot.unresponsive = false;
+      await expect.poll(() => hal.isReady(), { timeout: 5000 }).toBe(true);
+      expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+      await hal.cleanup();
+    });
+  });
+
+  describe('#rotate', () => {
+    it('turns 90 degrees with 1706 steps per wheel, left wheel backwards', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = halOn(robot);
+      await hal.initialize();
+      expect((await hal.locomotion.rotate('left', 90)).success).toBe(true);
+      expect(robot.position).toEqual({ left: -1706, right: 1706 });
+      await hal.cleanup();
+    });
+  });
+
+  describe('#stop', () => {
+    it('interrupts a running move, which resolves with INTERRUPTED', async () => {
+      const robot = new MockRobot({ timeScale: 5 });
+      const hal = halOn(robot, { timeScale: 5 });
+      await hal.initialize();
+      const move = hal.locomotion.moveForward(20);
+      await expect.poll(() => robot.position.left, { timeout: 5000 }).toBeGreaterThan(100);
+      expect((await hal.locomotion.stop()).success).toBe(true);
+      const result = await move;
+      expect(result.code).toBe('INTERRUPTED');
+      const stoppedAt = robot.position.left;
+      expect(stoppedAt).toBeLessThan(4345);
+      const pose = await hal.locomotion.getPose();
+      expect(pose.position.x).toBeCloseTo(stoppedAt / (4096 / (Math.PI * 6)) / 100, 6);
+      await hal.cleanup();
+    });
+  });
+
+  describe('session', () => {
+    it('says hello again after the robot restarts and keeps the pose', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = new PhysicalHAL(
+        { mode: 'physical', deviceId: 'cube-1' },
+        { transport: robot.transport(), timeScale: TIME_SCALE, reconnectIntervalMs: 10 },
+      );
+      await hal.initialize();
+      expect((await hal.locomotion.moveForward(5)).success).toBe(true);
+      robot.restart();
+      const refused = await hal.locomotion.moveForward(5);
+      expect(refused.code).toBe('NOT_CONNECTED');
+      await expect.poll(() => hal.isReady(), { timeout: 5000 }).toBe(true);
+      expect((await hal.locomotion.moveForward(5)).success).toBe(true);
+      await hal.refreshStatus();
+      const pose = await hal.locomotion.getPose();
+      expect(pose.position.x).toBeCloseTo(0.1, 3);
+      await hal.cleanup();
+    });
+  });
+
+  describe('#getDistanceSensors', () => {
+    it('rejects with NOT_IMPLEMENTED: the V1 robot has no range sensors', async () => {
+      const hal = halOn(new MockRobot());
+      await expect(hal.vision.getDistanceSensors()).rejects.toMatchObject({
+        code: 'NOT_IMPLEMENTED',
+      });
+    });
+  });
+});

@@ -1,0 +1,163 @@
+import { MovePlan, normalizeAngle, OdometryIntegrator, VelocityPlan } from '@hal/kinematics';
+import type { StepPlan } from '@hal/kinematics';
+import type { Pose, RobotConfig } from '@hal/types';
+import type { MotionReply, StatusReply } from './protocol/schemas.js';
+
+interface Prediction {
+  plan: StepPlan;
+  /** Host time the motion started, ms. */
+  startedAt: number;
+  /** Absolute counters when it started (as far as the host knows). */
+  left: number;
+  right: number;
+  moveId: number;
+  /** Robot-time duration cap (drive with a duration), µs. */
+  capUs: number;
+}
+
+const zero = (value: number): number => (value === 0 ? 0 : value);
+
+/**
+ * Host-side dead reckoning: integrates the step counters of each status reply with the firmware's
+ * odometry (@hal/kinematics), in a frame anchored where the robot was when the HAL connected
+ * (origin, facing +x). Between status replies it predicts the counters from the running motion's
+ * step plan, the firmware's own planner, so `getPose()` is right while a motion runs.
+ */
+export class PoseTracker {
+  #config: RobotConfig;
+  #odometry: OdometryIntegrator;
+  #left = 0;
+  #right = 0;
+  #leftSps = 0;
+  #rightSps = 0;
+  #uptimeMs = -1;
+  #prediction: Prediction | undefined;
+  readonly #now: () => number;
+  readonly #timeScale: number;
+
+  constructor(config: RobotConfig, now: () => number, timeScale: number) {
+    this.#config = config;
+    this.#odometry = new OdometryIntegrator(config);
+    this.#now = now;
+    this.#timeScale = timeScale;
+  }
+
+  /** Uses a new geometry from now on (the pose so far is kept). */
+  setConfig(config: RobotConfig): void {
+    const pose = this.#odometry.pose;
+    this.#config = config;
+    this.#odometry = new OdometryIntegrator(config, pose, this.#left, this.#right);
+  }
+
+  /** Makes the robot's present position the origin, facing +x. */
+  anchor(status: StatusReply): void {
+    this.#odometry.reset(undefined, status.left_steps, status.right_steps);
+    this.#absorb(status);
+  }
+
+  /**
+   * Integrates a status reply. If the robot restarted (its uptime went back), its counters began
+   * again from zero: the pose is kept and integration resumes from the new counters.
+   */
+  update(status: StatusReply): void {
+    if (status.uptime_ms < this.#uptimeMs) {
+      this.#odometry.reset(this.#odometry.pose, status.left_steps, status.right_steps);
+      this.#prediction = undefined;
+    } else {
+      this.#odometry.update(status.left_steps, status.right_steps);
+    }
+    this.#absorb(status);
+  }
+
+  /** Counters reported by a `stop` reply. */
+  updateCounters(left: number, right: number): void {
+    this.#odometry.update(left, right);
+    this.#left = left;
+    this.#right = right;
+    this.#leftSps = 0;
+    this.#rightSps = 0;
+    this.#prediction = undefined;
+  }
+
+  /** A motion command was accepted: predict its steps until a status says otherwise. */
+  motionStarted(reply: MotionReply): void {
+    const accel = this.#config.accelerationStepsPerS2;
+    let plan: StepPlan | undefined;
+    let capUs = Number.POSITIVE_INFINITY;
+    if (reply.left_steps !== undefined && reply.right_steps !== undefined && reply.speed) {
+      plan = new MovePlan(reply.left_steps, reply.right_steps, reply.speed, accel);
+    } else if (reply.left_sps !== undefined && reply.right_sps !== undefined && reply.running) {
+      plan = new VelocityPlan(Math.trunc(reply.left_sps), Math.trunc(reply.right_sps), accel);
+      if (reply.duration_ms !== undefined) capUs = reply.duration_ms * 1000;
+    }
+    this.#prediction =
+      plan === undefined
+        ? undefined
+        : {
+            plan,
+            startedAt: this.#now(),
+            left: this.#left,
+            right: this.#right,
+            moveId: reply.move_id,
+            capUs,
+          };
+  }
+
+  /** Forgets the prediction (the motion was stopped). */
+  motionStopped(): void {
+    this.#prediction = undefined;
+    this.#leftSps = 0;
+    this.#rightSps = 0;
+  }
+
+  /** The pose now, REP-103, metres and radians. */
+  pose(): Pose {
+    let pose = this.#odometry.pose;
+    let leftSps = this.#leftSps;
+    let rightSps = this.#rightSps;
+    const p = this.#prediction;
+    if (p !== undefined) {
+      const elapsedUs = Math.min(
+        p.capUs,
+        Math.min(p.plan.durationUs, (this.#now() - p.startedAt) * 1000 * this.#timeScale),
+      );
+      const steps = p.plan.stepsAt(elapsedUs);
+      const left = p.left + steps.left;
+      const right = p.right + steps.right;
+      // never predict behind what a status already reported
+      const ahead =
+        Math.abs(left - p.left) >= Math.abs(this.#left - p.left) &&
+        Math.abs(right - p.right) >= Math.abs(this.#right - p.right);
+      if (ahead) {
+        const predicted = new OdometryIntegrator(this.#config, pose, this.#left, this.#right);
+        pose = predicted.update(left, right);
+        const v =
+          elapsedUs >= p.plan.durationUs ? { left: 0, right: 0 } : p.plan.velocityAt(elapsedUs);
+        leftSps = v.left;
+        rightSps = v.right;
+      }
+    }
+    const perCm = this.#config.stepsPerRevolution / (Math.PI * this.#config.wheelDiameterCm);
+    const vl = leftSps / perCm / 100;
+    const vr = rightSps / perCm / 100;
+    return {
+      position: { x: zero(pose.xCm / 100), y: zero(pose.yCm / 100), z: 0 },
+      rotation: { yaw: zero(normalizeAngle(pose.headingRad)), pitch: 0, roll: 0 },
+      velocity: {
+        linear: zero((vl + vr) / 2),
+        angular: zero((vr - vl) / (this.#config.wheelBaseCm / 100)),
+      },
+    };
+  }
+
+  #absorb(status: StatusReply): void {
+    this.#left = status.left_steps;
+    this.#right = status.right_steps;
+    this.#leftSps = status.running ? status.left_sps : 0;
+    this.#rightSps = status.running ? status.right_sps : 0;
+    this.#uptimeMs = status.uptime_ms;
+    if (!status.running || (this.#prediction && status.move_id !== this.#prediction.moveId)) {
+      this.#prediction = undefined;
+    }
+  }
+}

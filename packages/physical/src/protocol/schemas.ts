@@ -1,0 +1,192 @@
+import { z } from 'zod';
+
+/*
+ * Zod schemas for every reply of protocol 1.0 (docs/protocol.md). Unknown fields are ignored
+ * (stripped), `null` is treated as absent, and anything else that does not match is MALFORMED.
+ */
+
+const uint32 = z.number().int().min(0).max(4_294_967_295);
+const int = z.number().int();
+const finite = z.number();
+/** An optional field: absent or `null` (both mean absent). */
+const opt = <T extends z.ZodType>(schema: T) =>
+  schema
+    .nullish()
+    .transform((value) => value ?? undefined)
+    .optional();
+
+/** The fields every reply carries. */
+export const ReplyEnvelopeSchema = z.looseObject({
+  seq: opt(uint32).describe('Echo of the request sequence number'),
+  sid: opt(uint32).describe('Echo of the session id (hello: the new session id)'),
+  ok: z.boolean().describe('Whether the command was executed'),
+  cmd: opt(z.string()).describe('Echo of the command name'),
+  error: opt(
+    z.object({
+      code: z.string().describe('Protocol error code'),
+      message: z.string().describe('Names the field and the limit'),
+      details: opt(z.record(z.string(), z.unknown())),
+    }),
+  ).describe('Present when ok is false'),
+});
+export type ReplyEnvelope = z.infer<typeof ReplyEnvelopeSchema>;
+
+/** The device configuration (`hello`, `set_config`). */
+export const DeviceConfigSchema = z.object({
+  wheel_diameter_cm: finite,
+  wheel_base_cm: finite,
+  steps_per_revolution: int,
+  max_speed_steps_per_s: int,
+  acceleration_steps_per_s2: int,
+  host_timeout_ms: int,
+  max_steps_per_command: opt(int),
+});
+export type DeviceConfig = z.infer<typeof DeviceConfigSchema>;
+
+export const HelloReplySchema = z.object({
+  sid: uint32.refine((v) => v !== 0, 'sid must be non-zero'),
+  nonce: opt(z.string()),
+  device_id: z.string(),
+  firmware_version: z.string(),
+  protocol_version: z.string(),
+  auth: z.boolean(),
+  capabilities: z.array(z.string()),
+  config: DeviceConfigSchema,
+});
+export type HelloReply = z.infer<typeof HelloReplySchema>;
+
+export const HeartbeatReplySchema = z.object({
+  uptime_ms: int,
+  running: z.boolean(),
+  estop: z.boolean(),
+});
+export type HeartbeatReply = z.infer<typeof HeartbeatReplySchema>;
+
+/** Reply to `move_steps`, `move_cm`, `rotate_deg` and `drive`. */
+export const MotionReplySchema = z.object({
+  move_id: uint32,
+  left_steps: opt(int),
+  right_steps: opt(int),
+  speed: opt(finite),
+  speed_clamped: opt(z.boolean()),
+  duration_ms: opt(int),
+  duration_us: opt(int),
+  left_sps: opt(finite),
+  right_sps: opt(finite),
+  running: opt(z.boolean()),
+});
+export type MotionReply = z.infer<typeof MotionReplySchema>;
+
+export const StopReplySchema = z.object({
+  stopped: z.boolean(),
+  left_steps: int,
+  right_steps: int,
+});
+export type StopReply = z.infer<typeof StopReplySchema>;
+
+export const LedStateSchema = z.object({
+  r: int.min(0).max(255),
+  g: int.min(0).max(255),
+  b: int.min(0).max(255),
+  pattern: z.string(),
+});
+export type LedState = z.infer<typeof LedStateSchema>;
+
+export const MOVE_OUTCOMES = [
+  'none',
+  'running',
+  'done',
+  'stopped',
+  'estop',
+  'host_timeout',
+  'replaced',
+] as const;
+export type MoveOutcome = (typeof MOVE_OUTCOMES)[number];
+
+export const SafetyStateSchema = z.object({
+  estop: z.boolean(),
+  estop_reason: z.string(),
+  trips: int,
+  last_trip: opt(
+    z.object({
+      reason: z.string(),
+      detail: z.string(),
+      uptime_ms: int,
+    }),
+  ),
+  host_timeout_ms: int,
+  ms_since_host: int,
+  coils_on: z.boolean(),
+});
+export type SafetyState = z.infer<typeof SafetyStateSchema>;
+
+export const StatusReplySchema = z.object({
+  x_cm: finite,
+  y_cm: finite,
+  heading_rad: finite,
+  left_steps: int,
+  right_steps: int,
+  running: z.boolean(),
+  move_id: uint32,
+  move_outcome: z.enum(MOVE_OUTCOMES),
+  move_left_steps: int,
+  move_right_steps: int,
+  left_sps: finite,
+  right_sps: finite,
+  uptime_ms: int,
+  safety: SafetyStateSchema,
+  led: LedStateSchema,
+});
+export type StatusReply = z.infer<typeof StatusReplySchema>;
+
+export const SetConfigReplySchema = z.object({ config: DeviceConfigSchema });
+export type SetConfigReply = z.infer<typeof SetConfigReplySchema>;
+
+export const SetLedReplySchema = z.object({ led: LedStateSchema });
+export type SetLedReply = z.infer<typeof SetLedReplySchema>;
+
+export const EstopReplySchema = z.object({ estop: z.literal(true), estop_reason: z.string() });
+export type EstopReply = z.infer<typeof EstopReplySchema>;
+
+export const ResetEstopReplySchema = z.object({
+  estop: z.literal(false),
+  was_estopped: z.boolean(),
+});
+export type ResetEstopReply = z.infer<typeof ResetEstopReplySchema>;
+
+/** The schema of each command's successful reply data. */
+export const REPLY_SCHEMAS = {
+  hello: HelloReplySchema,
+  heartbeat: HeartbeatReplySchema,
+  move_steps: MotionReplySchema,
+  move_cm: MotionReplySchema,
+  rotate_deg: MotionReplySchema,
+  drive: MotionReplySchema,
+  stop: StopReplySchema,
+  get_status: StatusReplySchema,
+  set_config: SetConfigReplySchema,
+  set_led: SetLedReplySchema,
+  estop: EstopReplySchema,
+  reset_estop: ResetEstopReplySchema,
+} as const;
+
+/** A command name of protocol 1.0. */
+export type Command = keyof typeof REPLY_SCHEMAS;
+/** The reply data of a command. */
+export type ReplyOf<C extends Command> = z.output<(typeof REPLY_SCHEMAS)[C]>;
+
+/** Request parameters per command (H->D), beside `cmd`, `seq` and `sid`. */
+export interface RequestParams {
+  hello: { client?: string; nonce?: string };
+  heartbeat: Record<string, never>;
+  move_steps: { left: number; right: number; speed?: number };
+  move_cm: { left_cm: number; right_cm: number; speed?: number };
+  rotate_deg: { degrees: number; speed?: number };
+  drive: { left_sps: number; right_sps: number; duration_ms?: number };
+  stop: Record<string, never>;
+  get_status: Record<string, never>;
+  set_config: Partial<Omit<DeviceConfig, 'max_steps_per_command'>>;
+  set_led: { r?: number; g?: number; b?: number; pattern?: 'solid' | 'blink' | 'pulse' | 'off' };
+  estop: { reason?: string };
+  reset_estop: Record<string, never>;
+}

@@ -1,0 +1,305 @@
+import { HAL_ERROR_CODES, HalError, isHalError } from '@hal/types';
+import type { HalErrorCode } from '@hal/types';
+import { scoped } from './logger.js';
+import type { Logger, ScopedLogger } from './logger.js';
+import type { MessageCodec, WireReply } from './protocol/codec.js';
+import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
+import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
+import type { RequestOptions, Transport } from './transport/transport.js';
+
+/** Where a session is. */
+export type SessionState = 'idle' | 'connected' | 'lost' | 'closed';
+
+/** Options of a {@link Session}. */
+export interface SessionOptions {
+  transport: Transport;
+  codec: MessageCodec;
+  logger: Logger;
+  /** Names the host software in `hello`. */
+  client?: string;
+  /** Send a heartbeat when no request has gone out for this long, ms. */
+  heartbeatIntervalMs: number;
+  /** While the link is lost, try `hello` again this often, ms. */
+  reconnectIntervalMs: number;
+  /** Per-request timeout and attempts (asked before every request). */
+  request?: () => RequestOptions;
+  /** Called after every successful (re)connection, outside the request queue. */
+  onConnected?: (hello: HelloReply, reconnect: boolean) => void | Promise<void>;
+  /** Called with every successful reply's data. */
+  onReply?: (cmd: Command, data: Record<string, unknown>) => void;
+  /** Called when the state changes. */
+  onStateChange?: (state: SessionState, reason: string) => void;
+}
+
+/** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
+const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
+
+function randomNonce(): string {
+  const bytes = new Uint8Array(8);
+  globalThis.crypto.getRandomValues(bytes);
+  return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+}
+
+/** The HalError for a refused request, carrying the robot's own code. */
+export function robotError(cmd: string, reply: WireReply): HalError {
+  const error = reply.error;
+  const robotCode = error?.code ?? 'UNKNOWN';
+  const code: HalErrorCode = (HAL_ERROR_CODES as readonly string[]).includes(robotCode)
+    ? (robotCode as HalErrorCode)
+    : 'HARDWARE_ERROR';
+  return new HalError(code, `the robot refused "${cmd}": ${error?.message ?? 'no reason given'}`, {
+    details: { command: cmd, robotCode, robotDetails: error?.details ?? {} },
+  });
+}
+
+/**
+ * One host session with the robot over a transport: `hello`, then requests numbered by a
+ * strictly increasing `seq`, one at a time (so a retry can never arrive after a newer request and
+ * be refused as stale). It sends heartbeats while idle, turns a dead link or a replaced session
+ * into NOT_CONNECTED, and keeps saying `hello` until the robot answers again.
+ */
+export class Session {
+  readonly #options: SessionOptions;
+  readonly #log: ScopedLogger;
+  #state: SessionState = 'idle';
+  #seq = 0;
+  #sid: number | undefined;
+  #queue: Promise<unknown> = Promise.resolve();
+  #busy = 0;
+  #lastRequestAt = 0;
+  #heartbeat: ReturnType<typeof setInterval> | undefined;
+  #heartbeatPaused = false;
+  #reconnectTimer: ReturnType<typeof setTimeout> | undefined;
+  #hello: HelloReply | undefined;
+  /** Replies whose data did not match the command's schema. */
+  malformedReplies = 0;
+
+  constructor(options: SessionOptions) {
+    this.#options = options;
+    this.#log = scoped(options.logger, 'hal:physical:session');
+  }
+
+  get state(): SessionState {
+    return this.#state;
+  }
+
+  /** The current session id. */
+  get sid(): number | undefined {
+    return this.#sid;
+  }
+
+  /** The last `hello` reply. */
+  get hello(): HelloReply | undefined {
+    return this.#hello;
+  }
+
+  /** Opens the session (`hello`) and starts the heartbeat. Throws NOT_CONNECTED on failure. */
+  async open(): Promise<HelloReply> {
+    const hello = await this.#exclusive(() => this.#sayHello(this.#options.request?.()));
+    this.#setState('connected', 'hello answered');
+    this.#heartbeat = setInterval(() => this.#beat(), this.#options.heartbeatIntervalMs);
+    await this.#options.onConnected?.(hello, false);
+    return hello;
+  }
+
+  /** Stops sending heartbeats (to test the robot's host timeout); requests still go out. */
+  pauseHeartbeat(): void {
+    this.#heartbeatPaused = true;
+  }
+
+  resumeHeartbeat(): void {
+    this.#heartbeatPaused = false;
+  }
+
+  /**
+   * Sends one command and returns its reply data, checked against the command's schema. Throws a
+   * HalError: the robot's own code when it refuses, NOT_CONNECTED when the link or the session
+   * is lost, MALFORMED when the reply does not match the protocol.
+   */
+  async command<C extends Command>(
+    cmd: C,
+    params: RequestParams[C],
+    options: RequestOptions = {},
+  ): Promise<ReplyOf<C>> {
+    const safety = SAFETY_COMMANDS.has(cmd);
+    this.#checkUsable(cmd, safety);
+    return this.#exclusive(async () => {
+      this.#checkUsable(cmd, safety);
+      const seq = this.#nextSeq();
+      const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
+      const reply = await this.#send(cmd, seq, bytes, { ...this.#options.request?.(), ...options });
+      if (!reply.ok) {
+        if (reply.error?.code === 'SESSION_MISMATCH') {
+          this.#lose('the robot no longer knows this session');
+          throw new HalError(
+            'NOT_CONNECTED',
+            `the robot's session changed (it restarted or another host connected); reconnecting`,
+            {
+              cause: robotError(cmd, reply),
+              details: { command: cmd, robotCode: 'SESSION_MISMATCH' },
+            },
+          );
+        }
+        throw robotError(cmd, reply);
+      }
+      const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
+      if (!parsed.success) {
+        this.malformedReplies += 1;
+        const issue = parsed.error.issues[0];
+        throw new HalError(
+          'MALFORMED',
+          `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
+          { details: { command: cmd } },
+        );
+      }
+      const data = parsed.data as ReplyOf<C>;
+      this.#options.onReply?.(cmd, data as Record<string, unknown>);
+      return data;
+    });
+  }
+
+  /** Stops the heartbeat and reconnection; later commands fail with NOT_CONNECTED. */
+  close(): void {
+    clearInterval(this.#heartbeat);
+    clearTimeout(this.#reconnectTimer);
+    this.#setState('closed', 'closed by the host');
+  }
+
+  #checkUsable(cmd: Command, safety: boolean): void {
+    if (this.#state === 'closed') {
+      throw new HalError('NOT_CONNECTED', `cannot send "${cmd}": the link is closed`);
+    }
+    if (this.#sid === undefined || (this.#state !== 'connected' && !safety)) {
+      throw new HalError(
+        'NOT_CONNECTED',
+        `cannot send "${cmd}": the robot is not connected (reconnecting)`,
+        { details: { command: cmd, state: this.#state } },
+      );
+    }
+  }
+
+  #nextSeq(): number {
+    this.#seq += 1;
+    return this.#seq;
+  }
+
+  async #send(
+    cmd: string,
+    seq: number,
+    bytes: Uint8Array,
+    options: RequestOptions,
+  ): Promise<WireReply> {
+    this.#lastRequestAt = performance.now();
+    try {
+      return await this.#options.transport.request(seq, bytes, options);
+    } catch (thrown) {
+      if (isHalError(thrown) && thrown.code === 'TIMEOUT') {
+        this.#lose(`no reply to "${cmd}"`);
+        throw new HalError(
+          'NOT_CONNECTED',
+          `the robot did not answer "${cmd}": ${thrown.message}`,
+          {
+            cause: thrown,
+            details: { command: cmd, ...thrown.details },
+          },
+        );
+      }
+      throw thrown;
+    } finally {
+      this.#lastRequestAt = performance.now();
+    }
+  }
+
+  async #sayHello(options: RequestOptions | undefined): Promise<HelloReply> {
+    const seq = this.#nextSeq();
+    const nonce = this.#options.codec.authenticated ? randomNonce() : undefined;
+    const params: RequestParams['hello'] = { client: this.#options.client ?? '@hal/physical' };
+    if (nonce !== undefined) params.nonce = nonce;
+    const bytes = this.#options.codec.encode({ cmd: 'hello', seq, ...params });
+    let reply: WireReply;
+    try {
+      reply = await this.#options.transport.request(seq, bytes, options);
+    } catch (cause) {
+      throw new HalError('NOT_CONNECTED', 'the robot did not answer "hello"', { cause });
+    }
+    if (!reply.ok) throw robotError('hello', reply);
+    const parsed = HelloReplySchema.safeParse(reply);
+    if (!parsed.success) {
+      this.malformedReplies += 1;
+      throw new HalError('MALFORMED', "the robot's hello reply does not match protocol 1.0");
+    }
+    if (nonce !== undefined && parsed.data.nonce !== nonce) {
+      throw new HalError('AUTH_FAILED', "the robot's hello reply does not echo our nonce");
+    }
+    if (!parsed.data.protocol_version.startsWith('1.')) {
+      throw new HalError(
+        'NOT_IMPLEMENTED',
+        `the robot speaks protocol ${parsed.data.protocol_version}; this host speaks 1.x`,
+      );
+    }
+    this.#sid = parsed.data.sid;
+    this.#hello = parsed.data;
+    this.#log.info('session open', {
+      sid: parsed.data.sid,
+      deviceId: parsed.data.device_id,
+      firmware: parsed.data.firmware_version,
+    });
+    return parsed.data;
+  }
+
+  #beat(): void {
+    if (this.#state !== 'connected' || this.#heartbeatPaused || this.#busy > 0) return;
+    if (performance.now() - this.#lastRequestAt < this.#options.heartbeatIntervalMs * 0.8) return;
+    this.command('heartbeat', {}).catch((error: unknown) =>
+      this.#log.debug('heartbeat failed', { error: String(error) }),
+    );
+  }
+
+  #lose(reason: string): void {
+    if (this.#state !== 'connected') return;
+    this.#setState('lost', reason);
+    this.#scheduleReconnect();
+  }
+
+  #scheduleReconnect(): void {
+    clearTimeout(this.#reconnectTimer);
+    this.#reconnectTimer = setTimeout(
+      () => void this.#reconnect(),
+      this.#options.reconnectIntervalMs,
+    );
+  }
+
+  async #reconnect(): Promise<void> {
+    if (this.#state !== 'lost') return;
+    try {
+      const hello = await this.#exclusive(() =>
+        this.#sayHello({ ...this.#options.request?.(), attempts: 1 }),
+      );
+      if (this.#state !== 'lost') return;
+      this.#setState('connected', 'hello answered again');
+      await this.#options.onConnected?.(hello, true);
+    } catch (error) {
+      this.#log.debug('reconnect failed', { error: String(error) });
+      if (this.#state === 'lost') this.#scheduleReconnect();
+    }
+  }
+
+  #setState(state: SessionState, reason: string): void {
+    if (this.#state === state || this.#state === 'closed') return;
+    this.#state = state;
+    this.#log.info(`link ${state}`, { reason });
+    this.#options.onStateChange?.(state, reason);
+  }
+
+  #exclusive<T>(task: () => Promise<T>): Promise<T> {
+    this.#busy += 1;
+    const run = this.#queue.then(task);
+    this.#queue = run.then(
+      () => undefined,
+      () => undefined,
+    );
+    return run.finally(() => {
+      this.#busy -= 1;
+    });
+  }
+}

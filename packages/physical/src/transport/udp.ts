@@ -1,0 +1,115 @@
+import { HalError } from '@hal/types';
+import { scoped } from '../logger.js';
+import type {
+  RequestOptions,
+  Transport,
+  TransportContext,
+  TransportFactory,
+  TransportStats,
+} from './transport.js';
+import { ReplyMatcher } from './transport.js';
+
+/** The robot's UDP port. */
+export const DEFAULT_UDP_PORT = 4210;
+
+/** Options of {@link udpTransport}. */
+export interface UdpTransportOptions {
+  /** The robot's IP address or host name. */
+  host: string;
+  /** The robot's UDP port. Default 4210. */
+  port?: number;
+  /** Wait for a reply this long before resending, ms. Default 2000. */
+  timeoutMs?: number;
+  /** Send each request at most this many times. Default 3. */
+  attempts?: number;
+}
+
+/** A connected UDP transport. */
+export interface UdpTransport extends Transport {
+  readonly type: 'udp';
+  /** The local port the socket is bound to. */
+  readonly localPort: number;
+}
+
+/**
+ * WiFi link: one JSON message per datagram to the robot's port 4210, replies matched to requests
+ * by their echoed `seq`. `node:dgram` is loaded on connect, so importing the package is safe in a
+ * browser bundle.
+ */
+export function udpTransport(options: UdpTransportOptions): TransportFactory<'udp'> {
+  if (typeof options.host !== 'string' || options.host.length === 0) {
+    throw new HalError('INVALID_PARAMETER', '"host" must be a non-empty string');
+  }
+  const port = options.port ?? DEFAULT_UDP_PORT;
+  if (!Number.isInteger(port) || port < 1 || port > 65535) {
+    throw new HalError('INVALID_PARAMETER', `"port" must be an integer 1..65535, got ${port}`);
+  }
+  return {
+    type: 'udp',
+    connect: async (context: TransportContext): Promise<UdpTransport> => {
+      const dgram = await import('node:dgram');
+      const { isIPv6 } = await import('node:net');
+      const log = scoped(context.logger, 'hal:physical:udp');
+      const socket = dgram.createSocket(isIPv6(options.host) ? 'udp6' : 'udp4');
+      const matcher = new ReplyMatcher();
+      const defaults: RequestOptions = {};
+      if (options.timeoutMs !== undefined) defaults.timeoutMs = options.timeoutMs;
+      if (options.attempts !== undefined) defaults.attempts = options.attempts;
+      let closed = false;
+
+      socket.on('message', (message, remote) => {
+        if (remote.port !== port) {
+          matcher.counts.dropped += 1;
+          log.debug('datagram from an unexpected port dropped', { port: remote.port });
+          return;
+        }
+        const result = context.decode(
+          new Uint8Array(message.buffer, message.byteOffset, message.length),
+        );
+        if (!matcher.deliver(result)) {
+          log.debug(
+            'datagram dropped',
+            result.ok ? { seq: result.reply.seq } : { error: result.error.message },
+          );
+        }
+      });
+      socket.on('error', (error) => log.warn('socket error', { error: error.message }));
+      await new Promise<void>((resolve, reject) => {
+        socket.once('error', reject);
+        socket.bind(0, () => {
+          socket.off('error', reject);
+          resolve();
+        });
+      });
+      const localPort = socket.address().port;
+      log.debug('bound', { localPort, host: options.host, port });
+
+      return {
+        type: 'udp',
+        localPort,
+        request: (seq, bytes, requestOptions) =>
+          matcher.request(
+            seq,
+            () =>
+              new Promise<void>((resolve, reject) => {
+                if (closed) {
+                  reject(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
+                  return;
+                }
+                socket.send(bytes, port, options.host, (error) =>
+                  error ? reject(error) : resolve(),
+                );
+              }),
+            { ...defaults, ...requestOptions },
+          ),
+        stats: (): TransportStats => matcher.stats(),
+        close: async () => {
+          if (closed) return;
+          closed = true;
+          matcher.close();
+          await new Promise<void>((resolve) => socket.close(() => resolve()));
+        },
+      };
+    },
+  };
+}
