@@ -51,7 +51,7 @@ json Device::Send(const json& request) {
 json Device::Hello() {
   seq = 1;
   json req = {{"cmd", "hello"}, {"seq", seq}, {"client", "gtest"}};
-  if (!key.empty()) req["nonce"] = "n" + std::to_string(clock.now_us);
+  if (!key.empty()) req["nonce"] = "n" + std::to_string(++hellos_);
   json r = Send(req);
   if (r.value("ok", false)) sid = r["sid"].get<uint32_t>();
   return r;

@@ -116,6 +116,7 @@ class Device {
  private:
   void Init();
   uint64_t since_heartbeat_ms_ = 0;
+  int hellos_ = 0;
 };
 
 // Reads a file under tests/vectors; empty if missing.
