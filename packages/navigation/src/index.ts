@@ -1,0 +1,27 @@
+export { cellCentre, checkGridSpec, worldToCell } from './grid/geometry.js';
+export type { Cell, GridSpec, Point } from './grid/geometry.js';
+export { gridImageDataUrl, renderGridImage } from './grid/image.js';
+export type { GridImageOptions, RgbaImage } from './grid/image.js';
+export { mapSolids } from './grid/known-map.js';
+export type { KnownMap, MapSolid } from './grid/known-map.js';
+export { DEFAULT_LOG_ODDS, DEFAULT_RANGE_SENSORS, OccupancyGrid } from './grid/occupancy-grid.js';
+export type {
+  CellCounts,
+  CellState,
+  LogOddsModel,
+  OccupancyGridOptions,
+  Pose2D,
+  RangeReadings,
+  RangeSensorModel,
+} from './grid/occupancy-grid.js';
+export { traverseCells } from './grid/raycast.js';
+export { describeWorld } from './grid/summary.js';
+export type { WorldSummaryOptions } from './grid/summary.js';
+
+export { AStarSearch } from './planner/astar.js';
+export type { GridSearchResult, GridSearchStatus } from './planner/astar.js';
+export { NodeHeap } from './planner/binary-heap.js';
+export { GridPlanner } from './planner/grid-planner.js';
+export type { PathPlan, PlanOptions } from './planner/grid-planner.js';
+export { lineOfSight, simplifyPath } from './planner/line-of-sight.js';
+export { ObstacleMap } from './planner/obstacle-map.js';
