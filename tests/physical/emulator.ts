@@ -1,0 +1,141 @@
+// Starts the firmware's cube-emulator (built by `bash firmware/scripts/test.sh`) for a test, and
+// makes sure it dies with the test: killed on stop(), on afterAll, and when this process exits
+// (it also exits by itself when its standard input closes).
+import { spawn } from 'node:child_process';
+import type { ChildProcess } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { createInterface } from 'node:readline';
+import { fileURLToPath } from 'node:url';
+
+export const EMULATOR_PATH = fileURLToPath(
+  new URL('../../firmware/build/cube-emulator', import.meta.url),
+);
+
+/** One line the emulator printed. */
+export type EmulatorEvent = Record<string, unknown> & { event: string };
+
+export interface EmulatorOptions {
+  timeScale?: number;
+  /** Pre-shared key, hex. */
+  key?: string;
+  hostTimeoutMs?: number;
+  deviceId?: string;
+  pty?: boolean;
+  /** UDP port; default a free one. */
+  udpPort?: number;
+}
+
+export interface Emulator {
+  udpPort: number;
+  /** The pseudo-terminal the serial link listens on ('' with pty: false). */
+  pty: string;
+  /** Every event printed so far. */
+  events: EmulatorEvent[];
+  /** Waits for an event that matches, up to `timeoutMs`. */
+  waitFor(match: (e: EmulatorEvent) => boolean, timeoutMs?: number): Promise<EmulatorEvent>;
+  stop(): Promise<void>;
+}
+
+const running = new Set<ChildProcess>();
+process.on('exit', () => {
+  for (const child of running) child.kill('SIGKILL');
+});
+
+/** Kills every emulator still running (for afterAll). */
+export async function stopAllEmulators(): Promise<void> {
+  await Promise.all(
+    [...running].map(
+      (child) =>
+        new Promise<void>((resolve) => {
+          if (child.exitCode !== null || child.signalCode !== null) {
+            resolve();
+            return;
+          }
+          child.once('exit', () => resolve());
+          child.kill('SIGKILL');
+        }),
+    ),
+  );
+}
+
+export function requireEmulator(): void {
+  if (!existsSync(EMULATOR_PATH)) {
+    throw new Error(
+      `cube-emulator not found at ${EMULATOR_PATH}: build it with "bash firmware/scripts/test.sh" (the root "pnpm test" does)`,
+    );
+  }
+}
+
+export async function startEmulator(options: EmulatorOptions = {}): Promise<Emulator> {
+  requireEmulator();
+  const args = ['--udp-port', String(options.udpPort ?? 0), '--exit-on-stdin-eof'];
+  if (options.timeScale !== undefined) args.push('--time-scale', String(options.timeScale));
+  if (options.key !== undefined) args.push('--key', options.key);
+  if (options.hostTimeoutMs !== undefined)
+    args.push('--host-timeout-ms', String(options.hostTimeoutMs));
+  if (options.deviceId !== undefined) args.push('--device-id', options.deviceId);
+  if (options.pty === false) args.push('--no-pty');
+  const child = spawn(EMULATOR_PATH, args, { stdio: ['pipe', 'pipe', 'pipe'] });
+  running.add(child);
+  const events: EmulatorEvent[] = [];
+  const waiters = new Set<() => void>();
+  let stderr = '';
+  child.stderr.on('data', (chunk: Buffer) => {
+    stderr += chunk.toString();
+  });
+  createInterface({ input: child.stdout }).on('line', (line) => {
+    try {
+      events.push(JSON.parse(line) as EmulatorEvent);
+    } catch {
+      events.push({ event: 'unparsed', line });
+    }
+    for (const wake of waiters) wake();
+  });
+  const exited = new Promise<void>((resolve) => child.once('exit', () => resolve()));
+  child.once('exit', () => {
+    running.delete(child);
+    for (const wake of waiters) wake();
+  });
+
+  const waitFor = (match: (e: EmulatorEvent) => boolean, timeoutMs = 10_000) =>
+    new Promise<EmulatorEvent>((resolve, reject) => {
+      const check = () => {
+        const found = events.find(match);
+        if (found !== undefined) {
+          done();
+          resolve(found);
+        } else if (child.exitCode !== null || child.signalCode !== null) {
+          done();
+          reject(
+            new Error(`cube-emulator exited (${child.exitCode ?? child.signalCode}): ${stderr}`),
+          );
+        }
+      };
+      const timer = setTimeout(() => {
+        done();
+        reject(new Error(`cube-emulator: no matching event within ${timeoutMs} ms: ${stderr}`));
+      }, timeoutMs);
+      const done = () => {
+        clearTimeout(timer);
+        waiters.delete(check);
+      };
+      waiters.add(check);
+      check();
+    });
+
+  const ready = await waitFor((e) => e.event === 'ready');
+  return {
+    udpPort: Number(ready['udp_port']),
+    pty: String(ready['pty']),
+    events,
+    waitFor,
+    stop: async () => {
+      if (child.exitCode === null && child.signalCode === null) {
+        child.kill('SIGTERM');
+        const timer = setTimeout(() => child.kill('SIGKILL'), 2000);
+        await exited;
+        clearTimeout(timer);
+      }
+    },
+  };
+}
