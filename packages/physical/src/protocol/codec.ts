@@ -69,7 +69,11 @@ export class MessageCodec {
    */
   decode(bytes: Uint8Array): DecodeResult {
     let json = bytes;
-    if (this.#auth !== undefined) {
+    if (this.#auth === undefined) {
+      // a device with a key MACs even its AUTH_FAILED reply: read it, to say why
+      const at = bytes.length - MAC_SUFFIX_LENGTH;
+      if (at > 0 && bytes[at] === HASH && hex(bytes.subarray(at + 1))) json = bytes.subarray(0, at);
+    } else {
       const at = bytes.length - MAC_SUFFIX_LENGTH;
       const mac = bytes.subarray(at + 1);
       if (at < 0 || bytes[at] !== HASH || !hex(mac)) {

@@ -1,0 +1,92 @@
+import { createSocket } from 'node:dgram';
+import type { Socket } from 'node:dgram';
+import { afterEach, describe, expect, it } from 'vitest';
+import { silentLogger } from '../logger.js';
+import { MessageCodec } from '../protocol/codec.js';
+import type { Transport } from './transport.js';
+import { udpTransport } from './udp.js';
+
+const codec = new MessageCodec();
+const context = { decode: (b: Uint8Array) => codec.decode(b), logger: silentLogger };
+const encode = (value: unknown) => Buffer.from(JSON.stringify(value));
+
+/** A UDP peer on 127.0.0.1 whose answer to each request the test decides. */
+async function peer(
+  answer: (request: Record<string, unknown>, reply: (bytes: Buffer) => void, count: number) => void,
+): Promise<{ socket: Socket; port: number; received: Record<string, unknown>[] }> {
+  const socket = createSocket('udp4');
+  const received: Record<string, unknown>[] = [];
+  socket.on('message', (message, remote) => {
+    const request = JSON.parse(message.toString()) as Record<string, unknown>;
+    received.push(request);
+    answer(request, (bytes) => socket.send(bytes, remote.port, remote.address), received.length);
+  });
+  await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
+  return { socket, port: socket.address().port, received };
+}
+
+describe('udpTransport', () => {
+  const cleanups: Array<() => Promise<void> | void> = [];
+  afterEach(async () => {
+    for (const cleanup of cleanups.splice(0)) await cleanup();
+  });
+
+  async function connect(port: number, timeoutMs = 100): Promise<Transport> {
+    const transport = await udpTransport({ host: '127.0.0.1', port, timeoutMs }).connect(context);
+    cleanups.push(() => transport.close());
+    return transport;
+  }
+
+  it('matches the reply by its echoed seq, dropping garbage, stray and stale datagrams', async () => {
+    const p = await peer((request, reply) => {
+      reply(Buffer.from('not json'));
+      reply(encode({ seq: 999, ok: true }));
+      reply(encode({ ok: true }));
+      reply(encode({ seq: request['seq'], ok: true, cmd: 'heartbeat', uptime_ms: 1 }));
+    });
+    cleanups.push(() => void p.socket.close());
+    const transport = await connect(p.port);
+    const reply = await transport.request(7, encode({ cmd: 'heartbeat', seq: 7, sid: 1 }));
+    expect(reply.seq).toBe(7);
+    await expect.poll(() => transport.stats().dropped, { timeout: 2000 }).toBe(3);
+    expect(transport.stats()).toMatchObject({ sent: 1, received: 1, retries: 0, timeouts: 0 });
+  });
+
+  it('resends the same bytes after a timeout and counts the retries', async () => {
+    const p = await peer((request, reply, count) => {
+      if (count >= 3) reply(encode({ seq: request['seq'], ok: true }));
+    });
+    cleanups.push(() => void p.socket.close());
+    const transport = await connect(p.port, 50);
+    const bytes = encode({ cmd: 'move_cm', seq: 4, sid: 1, left_cm: 1, right_cm: 1 });
+    await transport.request(4, bytes);
+    expect(p.received).toHaveLength(3);
+    expect(new Set(p.received.map((r) => JSON.stringify(r))).size).toBe(1);
+    expect(transport.stats()).toMatchObject({ sent: 3, received: 1, retries: 2, timeouts: 0 });
+    expect(transport.stats().rttP50Ms).toBeGreaterThanOrEqual(0);
+  });
+
+  it('rejects with TIMEOUT after three unanswered attempts', async () => {
+    const p = await peer(() => undefined);
+    cleanups.push(() => void p.socket.close());
+    const transport = await connect(p.port, 30);
+    await expect(transport.request(1, encode({ seq: 1 }))).rejects.toMatchObject({
+      code: 'TIMEOUT',
+    });
+    expect(p.received).toHaveLength(3);
+    expect(transport.stats().timeouts).toBe(1);
+  });
+
+  it('rejects pending requests with NOT_CONNECTED when closed', async () => {
+    const p = await peer(() => undefined);
+    cleanups.push(() => void p.socket.close());
+    const transport = await connect(p.port, 5000);
+    const pending = transport.request(1, encode({ seq: 1 }));
+    await transport.close();
+    await expect(pending).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
+  });
+
+  it('refuses a bad port with a message that quotes the argument', () => {
+    expect(() => udpTransport({ host: '127.0.0.1', port: 70000 })).toThrow('"port"');
+  });
+});
