@@ -1,0 +1,189 @@
+// Board glue of the stepper cube: connects the portable core (src/core) to
+// the ESP32-S3's timer, GPIOs, WiFi, serial port, LED and watchdog.
+//   - a 20 kHz hardware timer interrupt executes the planned steps
+//     (Cube::Tick), so WiFi traffic cannot stall the motors;
+//   - a task pinned to the application core (core 1) reads UDP and serial,
+//     answers requests and keeps the step queue filled (Cube::Poll), and is
+//     watched by the task watchdog;
+//   - WiFi runs on core 0 as usual; loop() only watches the connection.
+// The serial port carries protocol frames only: nothing else may print to it.
+
+#if defined(ARDUINO_ARCH_ESP32)
+
+#include "app.h"
+
+#include <Arduino.h>
+#include <WiFi.h>
+#include <WiFiUdp.h>
+#include <esp_random.h>
+
+#include "../../core/cube.h"
+#include "../../core/frame.h"
+#include "board.h"
+#include "esp32_hal.h"
+
+#if __has_include("../../secrets.h")
+#include "../../secrets.h"
+#else
+#error "Copy src/secrets.example.h to src/secrets.h and set your WiFi network (docs/flashing.md)"
+#endif
+
+namespace {
+
+cube::Esp32Clock clock_source;
+cube::Esp32Motors motors;
+cube::Esp32Led led;
+cube::Esp32Watchdog watchdog;
+cube::Esp32Random random_source;
+cube::Esp32Mac mac;
+cube::SerialSink serial_sink;
+
+cube::Cube* robot = nullptr;
+cube::SerialLink* serial_link = nullptr;
+WiFiUDP udp;
+hw_timer_t* step_timer = nullptr;
+
+uint8_t rx_buf[cube::kMaxMessage + 64];
+uint8_t reply_buf[cube::kMaxMessage];
+
+class SerialBridge : public cube::LinkHandler {
+ public:
+  void OnMessage(const uint8_t* data, size_t len) override {
+    const size_t n = robot->Handle(data, len, out_, sizeof(out_));
+    serial_link->Send(out_, n, millis());
+  }
+  void OnOversize(size_t announced) override {
+    const size_t n = robot->HandleOversize(announced, out_, sizeof(out_));
+    serial_link->Send(out_, n, millis());
+  }
+
+ private:
+  uint8_t out_[cube::kMaxMessage];
+};
+SerialBridge bridge;
+
+void ARDUINO_ISR_ATTR OnStepTimer() { robot->Tick(); }
+
+int HexNibble(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+void ConfigureKey() {
+  static const char kHex[] = CUBE_KEY_HEX;
+  const size_t n = sizeof(kHex) - 1;
+  if (n == 0 || n % 2 != 0 || n / 2 > cube::kMaxKeyLen) return;
+  uint8_t key[cube::kMaxKeyLen];
+  for (size_t i = 0; i < n / 2; ++i) {
+    const int hi = HexNibble(kHex[2 * i]);
+    const int lo = HexNibble(kHex[2 * i + 1]);
+    if (hi < 0 || lo < 0) return;
+    key[i] = static_cast<uint8_t>((hi << 4) | lo);
+  }
+  robot->SetKey(key, n / 2);
+}
+
+void PollUdp() {
+  for (int i = 0; i < 8; ++i) {
+    const int size = udp.parsePacket();
+    if (size <= 0) return;
+    size_t reply_len;
+    if (static_cast<size_t>(size) > cube::kMaxMessage) {
+      udp.flush();  // drop the rest of the datagram
+      reply_len = robot->HandleOversize(static_cast<size_t>(size), reply_buf,
+                                        sizeof(reply_buf));
+    } else {
+      const int got = udp.read(rx_buf, sizeof(rx_buf));
+      reply_len = robot->Handle(rx_buf, got > 0 ? static_cast<size_t>(got) : 0,
+                                reply_buf, sizeof(reply_buf));
+    }
+    udp.beginPacket(udp.remoteIP(), udp.remotePort());
+    udp.write(reply_buf, reply_len);
+    udp.endPacket();
+  }
+}
+
+void PollSerial() {
+  int avail = Serial.available();
+  while (avail > 0) {
+    const size_t want =
+        avail > static_cast<int>(sizeof(rx_buf)) ? sizeof(rx_buf) : static_cast<size_t>(avail);
+    const size_t got = Serial.readBytes(rx_buf, want);
+    if (got == 0) break;
+    serial_link->Receive(rx_buf, got, millis());
+    avail = Serial.available();
+  }
+}
+
+// The cube task: everything but the step interrupt. Runs every millisecond
+// on core 1 at a priority above loop().
+void CubeTask(void*) {
+  watchdog.Begin(cube::board::kWatchdogMs);
+  bool udp_open = false;
+  for (;;) {
+    if (WiFi.status() == WL_CONNECTED) {
+      if (!udp_open) udp_open = udp.begin(cube::board::kUdpPort) == 1;
+      if (udp_open) PollUdp();
+    } else if (udp_open) {
+      udp.stop();
+      udp_open = false;
+    }
+    PollSerial();
+    robot->Poll();  // also feeds the watchdog
+    serial_link->Poll(millis());
+    vTaskDelay(1);
+  }
+}
+
+}  // namespace
+
+void CubeAppSetup() {
+  Serial.setDebugOutput(false);
+  Serial.begin(cube::board::kSerialBaud);
+  motors.Begin();
+
+  static char device_id[16];
+  uint8_t mac_addr[6];
+  WiFi.macAddress(mac_addr);
+  snprintf(device_id, sizeof(device_id), "cube-%02x%02x%02x", mac_addr[3],
+           mac_addr[4], mac_addr[5]);
+
+  cube::CubeDeps deps;
+  deps.clock = &clock_source;
+  deps.motors = &motors;
+  deps.random = &random_source;
+  deps.led = &led;
+  deps.watchdog = &watchdog;
+  deps.mac = &mac;
+  static cube::Cube cube_instance(deps, device_id);
+  robot = &cube_instance;
+  ConfigureKey();
+  static cube::SerialLink link_instance(serial_sink, bridge,
+                                        static_cast<uint16_t>(esp_random()));
+  serial_link = &link_instance;
+
+  WiFi.persistent(false);  // no flash writes while the step timer runs
+  WiFi.mode(WIFI_STA);
+  WiFi.setSleep(false);  // lower, steadier UDP latency
+  WiFi.begin(CUBE_WIFI_SSID, CUBE_WIFI_PASSWORD);
+
+  step_timer = timerBegin(cube::board::kStepTimerHz);
+  timerAttachInterrupt(step_timer, &OnStepTimer);
+  timerAlarm(step_timer, cube::board::kStepTickUs, true, 0);
+
+  xTaskCreatePinnedToCore(CubeTask, "cube", 8192, nullptr, 5, nullptr, 1);
+}
+
+void CubeAppLoop() {
+  // WiFi reconnects by itself; nothing else to do here.
+  static uint32_t last_try = 0;
+  if (WiFi.status() != WL_CONNECTED && millis() - last_try > 10000) {
+    last_try = millis();
+    WiFi.reconnect();
+  }
+  delay(100);
+}
+
+#endif  // ARDUINO_ARCH_ESP32
