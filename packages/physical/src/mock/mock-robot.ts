@@ -228,7 +228,9 @@ export class MockRobot {
     }
     let request: Json;
     try {
-      const value: unknown = JSON.parse(decoder.decode(json));
+      const text = decoder.decode(json);
+      if (hasDuplicateKey(text)) throw new Error('duplicated key');
+      const value: unknown = JSON.parse(text);
       if (value === null || typeof value !== 'object' || Array.isArray(value))
         throw new Error('not an object');
       request = value as Json;
@@ -247,7 +249,13 @@ export class MockRobot {
     this.#lastHostUs = this.#robotUs();
     if (cmd === 'hello') return this.#hello(request, seq);
     const safety = cmd === 'stop' || cmd === 'estop' || cmd === 'reset_estop';
-    if (seq === undefined || sid === undefined) {
+    const seedStyle = seq === undefined && sid === undefined;
+    if (seedStyle && this.#auth !== undefined) {
+      return this.#error(seq, sid, cmd, new Refusal('AUTH_FAILED', 'requests must carry "seq"'));
+    }
+    // safety commands, and seed-style requests, skip the session rules and are not remembered
+    const session = !safety && !seedStyle;
+    if (!seedStyle && (seq === undefined || sid === undefined)) {
       return this.#error(
         seq,
         sid,
@@ -258,7 +266,7 @@ export class MockRobot {
         ),
       );
     }
-    if (!safety) {
+    if (session) {
       if (sid !== this.#sid || this.#sid === 0) {
         return this.#error(
           seq,
@@ -267,9 +275,9 @@ export class MockRobot {
           new Refusal('SESSION_MISMATCH', 'unknown session; send hello'),
         );
       }
-      const remembered = this.#memory.get(seq);
+      const remembered = this.#memory.get(seq!);
       if (remembered !== undefined) return remembered;
-      if (seq <= this.#lastSeq) {
+      if (seq! <= this.#lastSeq) {
         return this.#error(
           seq,
           sid,
@@ -285,9 +293,9 @@ export class MockRobot {
       if (!(thrown instanceof Refusal)) throw thrown;
       reply = this.#error(seq, sid, cmd, thrown);
     }
-    if (!safety) {
-      this.#lastSeq = seq;
-      this.#memory.set(seq, reply);
+    if (session) {
+      this.#lastSeq = seq!;
+      this.#memory.set(seq!, reply);
       if (this.#memory.size > MEMORY)
         this.#memory.delete(this.#memory.keys().next().value as number);
     }
@@ -370,6 +378,15 @@ export class MockRobot {
         return this.#setConfig(r);
       case 'set_led': {
         const pattern = typeof r['pattern'] === 'string' ? r['pattern'] : 'solid';
+        if (!['solid', 'blink', 'pulse', 'off'].includes(pattern)) {
+          throw new Refusal(
+            'INVALID_PARAMETER',
+            '"pattern" must be one of solid, blink, pulse, off',
+            {
+              field: 'pattern',
+            },
+          );
+        }
         this.#led =
           pattern === 'off'
             ? { r: 0, g: 0, b: 0, pattern }
@@ -404,14 +421,13 @@ export class MockRobot {
       if (Math.abs(steps) > MAX_STEPS) {
         this.#stopMotion('estop');
         this.#estop = true;
-        this.#estopReason = 'step_limit';
+        this.#estopReason = `step limit: "${field}" ${steps} steps`;
         this.#trip('step_limit', `${field} ${steps}`);
-        throw new Refusal('RANGE_EXCEEDED', `"${field}" must be -40960..40960 steps`, {
-          field,
-          min: -MAX_STEPS,
-          max: MAX_STEPS,
-          value: steps,
-        });
+        throw new Refusal(
+          'RANGE_EXCEEDED',
+          `"${field}" gives ${steps} steps; the limit is ${MAX_STEPS} steps per command (emergency stop latched)`,
+          { field, min: -MAX_STEPS, max: MAX_STEPS, value: steps, estop: true },
+        );
       }
     }
     const { speed, clamped } = this.#speed(r);
@@ -667,4 +683,35 @@ export class MockRobot {
     };
     return this.#reply(reply);
   }
+}
+
+/** Whether a JSON text repeats a key within one object (the protocol calls that MALFORMED). */
+function hasDuplicateKey(text: string): boolean {
+  const stack: Array<Set<string> | undefined> = [];
+  let expectKey = false;
+  for (let i = 0; i < text.length; i++) {
+    const c = text[i];
+    if (c === '"') {
+      let end = i + 1;
+      while (end < text.length && text[end] !== '"') end += text[end] === '\\' ? 2 : 1;
+      const keys = stack[stack.length - 1];
+      if (expectKey && keys !== undefined) {
+        const key = text.slice(i + 1, end);
+        if (keys.has(key)) return true;
+        keys.add(key);
+      }
+      expectKey = false;
+      i = end;
+    } else if (c === '{') {
+      stack.push(new Set());
+      expectKey = true;
+    } else if (c === '[') {
+      stack.push(undefined);
+    } else if (c === '}' || c === ']') {
+      stack.pop();
+    } else if (c === ',') {
+      expectKey = stack[stack.length - 1] !== undefined;
+    }
+  }
+  return false;
 }
