@@ -1,0 +1,137 @@
+// The browser demo in a real browser: Debian's Chromium driven by playwright-core. Builds the
+// demo, serves it on a free port, and checks that the page loads without console errors, that
+// keyboard teleop moves the robot and that a clicked goal is reached. Saves a screenshot to
+// artifacts/sim-demo.png.
+import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import type { BrowserContext, Page } from 'playwright-core';
+import { build, preview } from 'vite';
+import type { PreviewServer } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+const CHROMIUM = process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium';
+const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
+const demoRoot = join(repoRoot, 'apps/sim-demo');
+const artifacts = join(repoRoot, 'artifacts');
+
+interface DemoHooks {
+  robotId: string;
+  goalState(): string;
+  pose(): { x: number; y: number; yaw: number };
+  worldToClient(x: number, y: number): { x: number; y: number };
+}
+
+declare global {
+  interface Window {
+    simDemo?: DemoHooks;
+  }
+}
+
+describe('apps/sim-demo in Chromium', () => {
+  let server: PreviewServer;
+  let context: BrowserContext;
+  let page: Page;
+  let outDir: string;
+  let profile: string;
+  const problems: string[] = [];
+
+  beforeAll(async () => {
+    if (!existsSync(CHROMIUM)) {
+      throw new Error(`no Chromium at ${CHROMIUM}: install it with "apt-get install -y chromium"`);
+    }
+    outDir = mkdtempSync(join(tmpdir(), 'sim-demo-build-'));
+    profile = mkdtempSync(join(tmpdir(), 'sim-demo-profile-'));
+    await build({
+      root: demoRoot,
+      configFile: join(demoRoot, 'vite.config.ts'),
+      logLevel: 'silent',
+      build: { outDir, emptyOutDir: true },
+    });
+    server = await preview({
+      root: demoRoot,
+      configFile: join(demoRoot, 'vite.config.ts'),
+      logLevel: 'silent',
+      build: { outDir },
+      preview: { host: '127.0.0.1', port: 0, strictPort: false },
+    });
+    context = await chromium.launchPersistentContext(profile, {
+      executablePath: CHROMIUM,
+      headless: true,
+      viewport: { width: 1400, height: 900 },
+      args: [
+        '--headless',
+        '--no-sandbox',
+        '--disable-gpu',
+        '--disable-background-networking',
+        '--disable-component-update',
+        '--disable-sync',
+        '--no-first-run',
+      ],
+    });
+    page = context.pages()[0] ?? (await context.newPage());
+    page.on('console', (message) => {
+      if (message.type() === 'error') problems.push(`console.error: ${message.text()}`);
+    });
+    page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  }, 60_000);
+
+  afterAll(async () => {
+    await context?.close();
+    await server?.close();
+    if (outDir !== undefined) rmSync(outDir, { recursive: true, force: true });
+    if (profile !== undefined) rmSync(profile, { recursive: true, force: true });
+  }, 30_000);
+
+  it('loads without console errors, moves by keyboard and reaches a clicked goal', async () => {
+    const url = server.resolvedUrls?.local[0];
+    expect(url, 'the preview server has a URL').toBeDefined();
+    await page.goto(`${url}?map=empty&speed=20`, { waitUntil: 'load', timeout: 20_000 });
+    await page.waitForFunction(() => window.simDemo !== undefined, undefined, { timeout: 15_000 });
+
+    // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
+    const start = await page.evaluate(() => window.simDemo?.pose());
+    await page.locator('#viewport canvas').focus();
+    await page.keyboard.down('ArrowUp');
+    await page.waitForFunction((x0) => (window.simDemo?.pose().x ?? 0) > x0 + 0.15, start?.x ?? 0, {
+      timeout: 20_000,
+    });
+    await page.keyboard.up('ArrowUp');
+    await page.waitForFunction(
+      () => document.getElementById('status')?.textContent === 'Stopped',
+      undefined,
+      {
+        timeout: 10_000,
+      },
+    );
+    const afterTeleop = await page.evaluate(() => window.simDemo?.pose());
+    expect(afterTeleop?.x ?? 0).toBeGreaterThan((start?.x ?? 0) + 0.15);
+    expect(Math.abs(afterTeleop?.y ?? 1)).toBeLessThan(0.01);
+
+    // Click the floor at a point left of the robot; the robot turns and drives there.
+    const target = { x: (afterTeleop?.x ?? 0) - 0.2, y: 0.6 };
+    const at = await page.evaluate(([x, y]) => window.simDemo?.worldToClient(x, y), [
+      target.x,
+      target.y,
+    ] as const);
+    expect(at).toBeDefined();
+    await page.mouse.click(at?.x ?? 0, at?.y ?? 0);
+    await page.waitForFunction(() => window.simDemo?.goalState() === 'driving', undefined, {
+      timeout: 5_000,
+    });
+    await page.waitForFunction(() => window.simDemo?.goalState() !== 'driving', undefined, {
+      timeout: 40_000,
+    });
+    expect(await page.evaluate(() => window.simDemo?.goalState())).toBe('reached');
+    const end = await page.evaluate(() => window.simDemo?.pose());
+    // The click lands within a few millimetres of the intended point on the floor.
+    expect(Math.hypot((end?.x ?? 0) - target.x, (end?.y ?? 0) - target.y)).toBeLessThan(0.02);
+    await expect(page.locator('#status').textContent()).resolves.toContain('Goal reached');
+
+    mkdirSync(artifacts, { recursive: true });
+    await page.screenshot({ path: join(artifacts, 'sim-demo.png') });
+    expect(problems).toEqual([]);
+  }, 60_000);
+});
