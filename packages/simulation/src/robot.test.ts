@@ -94,11 +94,11 @@ describe('SimRobot', () => {
   });
 
   describe('#drive', () => {
-    it('runs the velocity plan until its duration, then stops at once', () => {
+    it('runs the velocity plan until its duration, making only the steps due before it', () => {
       const robot = new SimRobot({ id: 'r' });
       robot.drive(1024, 1024, 3000);
       runToEnd(robot, 700);
-      const expected = new VelocityPlan(1024, 1024, 512).stepsAt(3_000_000);
+      const expected = new VelocityPlan(1024, 1024, 512).stepsAt(3_000_000 - 1);
       expect(robot.leftSteps).toBe(expected.left);
       expect(robot.motion?.endedUs).toBe(3_000_000);
       expect(robot.velocity()).toEqual({ linear: 0, angular: 0 });

@@ -422,7 +422,11 @@ export class SimRobot {
     }
     const started = m.report.startedUs;
     const elapsed = Math.min(until - started, m.limitUs);
-    const steps = m.plan.stepsAt(elapsed);
+    // A drive makes only the steps due strictly before its duration (the firmware queues no step
+    // at or after the limit); a move's limit is the time of its last step, which it makes.
+    const steps = m.plan.stepsAt(
+      m.report.kind === 'drive' && elapsed >= m.limitUs ? m.limitUs - 1 : elapsed,
+    );
     const dl = steps.left - m.report.doneLeft;
     const dr = steps.right - m.report.doneRight;
     if (dl !== 0 || dr !== 0) {
