@@ -618,8 +618,6 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
     t.S("unknown command \"").S(cmd).S("\"");
     reply.Fail(kUnknownCommand, t.c_str());
     reply.DetailStr("cmd", cmd);
-    // Not remembered, but it does count as contact from the host.
-    last_host_us_ = now;
     return Finish(reply, out, cap);
   }
 
