@@ -227,15 +227,18 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     const key = this.#config.connection?.key;
     const codec = new MessageCodec(key === undefined ? undefined : await createAuthenticator(key));
     const transport = await factory.connect({ decode: (bytes) => codec.decode(bytes), logger });
-    const scale = this.#timeScale;
-    const heartbeatRobotMs =
-      this.#options.heartbeatIntervalMs ?? Math.min(500, this.#robot.hostTimeoutMs / 4);
     const session = new Session({
       transport,
       codec,
       logger,
       client: this.#options.client ?? '@hal/physical',
-      heartbeatIntervalMs: Math.max(5, heartbeatRobotMs / scale),
+      heartbeatIntervalMs: () =>
+        Math.max(
+          5,
+          this.#real(
+            this.#options.heartbeatIntervalMs ?? Math.min(500, this.#robot.hostTimeoutMs / 4),
+          ),
+        ),
       reconnectIntervalMs: this.#options.reconnectIntervalMs ?? 1000,
       request: () => this.#requestOptions(),
       onReply: (cmd, data) => this.#observe(cmd, data),

@@ -17,8 +17,8 @@ export interface SessionOptions {
   logger: Logger;
   /** Names the host software in `hello`. */
   client?: string;
-  /** Send a heartbeat when no request has gone out for this long, ms. */
-  heartbeatIntervalMs: number;
+  /** Heartbeat period, real ms (asked each time, as the robot's host timeout may change). */
+  heartbeatIntervalMs: () => number;
   /** While the link is lost, try `hello` again this often, ms. */
   reconnectIntervalMs: number;
   /** Per-request timeout and attempts (asked before every request). */
@@ -67,7 +67,7 @@ export class Session {
   #queue: Promise<unknown> = Promise.resolve();
   #busy = 0;
   #lastRequestAt = 0;
-  #heartbeat: ReturnType<typeof setInterval> | undefined;
+  #heartbeat: ReturnType<typeof setTimeout> | undefined;
   #heartbeatPaused = false;
   #reconnectTimer: ReturnType<typeof setTimeout> | undefined;
   #hello: HelloReply | undefined;
@@ -97,7 +97,7 @@ export class Session {
   async open(): Promise<HelloReply> {
     const hello = await this.#exclusive(() => this.#sayHello(this.#options.request?.()));
     this.#setState('connected', 'hello answered');
-    this.#heartbeat = setInterval(() => this.#beat(), this.#options.heartbeatIntervalMs);
+    this.#scheduleBeat();
     await this.#options.onConnected?.(hello, false);
     return hello;
   }
@@ -160,7 +160,7 @@ export class Session {
 
   /** Stops the heartbeat and reconnection; later commands fail with NOT_CONNECTED. */
   close(): void {
-    clearInterval(this.#heartbeat);
+    clearTimeout(this.#heartbeat);
     clearTimeout(this.#reconnectTimer);
     this.#setState('closed', 'closed by the host');
   }
@@ -247,9 +247,19 @@ export class Session {
     return parsed.data;
   }
 
+  #scheduleBeat(): void {
+    if (this.#state === 'closed') return;
+    this.#heartbeat = setTimeout(() => {
+      this.#beat();
+      this.#scheduleBeat();
+    }, this.#options.heartbeatIntervalMs());
+  }
+
+  /** Sends a heartbeat unless a request went out within the last half period. */
   #beat(): void {
     if (this.#state !== 'connected' || this.#heartbeatPaused || this.#busy > 0) return;
-    if (performance.now() - this.#lastRequestAt < this.#options.heartbeatIntervalMs * 0.8) return;
+    const since = performance.now() - this.#lastRequestAt;
+    if (since < this.#options.heartbeatIntervalMs() / 2) return;
     this.command('heartbeat', {}).catch((error: unknown) =>
       this.#log.debug('heartbeat failed', { error: String(error) }),
     );
