@@ -244,7 +244,8 @@ function resetWorld(name: BuiltinMapName): void {
   mapName = name;
   world.setMap(name);
   plot.clear();
-  frameArena();
+  if (followToggle.checked) startFollowing();
+  else frameArena();
   setStatus(`Map "${name}": ${BUILTIN_MAPS[name].description}`);
 }
 
@@ -268,6 +269,39 @@ speedSelect.addEventListener('change', () => {
   world.startRealtime({ speed: Number(speedSelect.value) });
   speedSelect.blur();
 });
+
+const followToggle = element<HTMLInputElement>('follow-toggle');
+let followed: THREE.Vector3 | undefined;
+followToggle.addEventListener('change', () => {
+  followToggle.blur();
+  if (followToggle.checked) {
+    startFollowing();
+  } else {
+    followed = undefined;
+    frameArena();
+  }
+});
+
+function startFollowing(): void {
+  // Close behind the robot, looking where it goes; then keep that offset as it moves.
+  const robot = hal.robot;
+  followed = toThree(robot.x, robot.y);
+  controls.target.copy(followed);
+  camera.position.copy(
+    toThree(robot.x - 0.9 * Math.cos(robot.yaw), robot.y - 0.9 * Math.sin(robot.yaw), 0.6),
+  );
+  controls.update();
+}
+
+function follow(): void {
+  if (followed === undefined) return;
+  const robot = hal.robot;
+  const now = toThree(robot.x, robot.y);
+  const delta = now.clone().sub(followed);
+  camera.position.add(delta);
+  controls.target.add(delta);
+  followed = now;
+}
 
 // ---- telemetry -----------------------------------------------------------------------------------
 
@@ -328,6 +362,7 @@ function showTelemetry(): void {
 
 let lastTelemetry = 0;
 function frame(now: number): void {
+  follow();
   controls.update();
   view.update();
   renderer.render(view.scene, camera);

@@ -1,0 +1,73 @@
+import * as THREE from 'three';
+import { describe, expect, it } from 'vitest';
+import { World } from '../world.js';
+import { fromThree, toThree, WorldScene } from './scene.js';
+
+function meshes(scene: THREE.Object3D): THREE.Mesh[] {
+  const found: THREE.Mesh[] = [];
+  scene.traverse((o) => {
+    if (o instanceof THREE.Mesh) found.push(o);
+  });
+  return found;
+}
+
+describe('WorldScene', () => {
+  it('maps the REP-103 world frame to Three (x, z, -y) and back', () => {
+    expect(toThree(1, 2, 3).toArray()).toEqual([1, 3, -2]);
+    expect(fromThree(new THREE.Vector3(1, 3, -2))).toEqual({ x: 1, y: 2, z: 3 });
+  });
+
+  it('draws every solid of the map and rebuilds when the map changes', () => {
+    const world = new World({ map: 'obstacles' });
+    const view = new WorldScene(world, { shadows: false });
+    const count = () =>
+      meshes(view.scene).filter((m) => m.geometry.type !== 'PlaneGeometry').length;
+    const obstacles = count();
+    world.setMap('empty');
+    expect(count()).toBe(obstacles - 8); // 8 obstacles fewer, the same arena walls
+    view.dispose();
+  });
+
+  it('puts each robot model at its pose, facing its heading, and extends its trail', () => {
+    const world = new World();
+    const robot = world.addRobot();
+    const view = new WorldScene(world, { shadows: false });
+    world.events.on('tick', () => view.update());
+    robot.rotateDeg(90);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    robot.moveCm(20, 20);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    view.update();
+    const camera = view.robotCamera(robot);
+    const ahead = new THREE.Vector3();
+    camera.getWorldDirection(ahead);
+    // Facing +y in the world is facing -z in Three.
+    expect(ahead.z).toBeCloseTo(-1, 3);
+    expect(fromThree(camera.position).y).toBeCloseTo(0.2 + 0.05, 2);
+    const trail = view.scene.getObjectsByProperty('type', 'Line')[0] as THREE.Line;
+    expect(trail.geometry.drawRange.count).toBeGreaterThan(10);
+  });
+
+  it('overlays an occupancy grid, a planned path and a goal, and removes them', () => {
+    const world = new World();
+    const view = new WorldScene(world, { shadows: false });
+    const before = meshes(view.scene).length;
+    view.setOccupancyGrid({
+      width: 2,
+      height: 2,
+      resolution: 0.5,
+      origin: { x: -0.5, y: -0.5 },
+      data: [0, 1, -1, 0.5],
+    });
+    view.setPlannedPath([
+      { x: 0, y: 0 },
+      { x: 1, y: 1 },
+    ]);
+    view.setGoal({ x: 1, y: 1 });
+    expect(meshes(view.scene).length).toBeGreaterThan(before);
+    view.setOccupancyGrid(undefined);
+    view.setGoal(undefined);
+    view.setPlannedPath(undefined);
+    expect(meshes(view.scene).length).toBe(before);
+  });
+});
