@@ -1,6 +1,7 @@
 // Protocol 1.0 (docs/protocol.md): commands, replies, sessions and errors.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 
 #include "harness.h"
@@ -531,6 +532,25 @@ TEST(Errors, ErrorRepliesHaveCodeMessageAndDetails) {
   EXPECT_TRUE(r["error"]["code"].is_string());
   EXPECT_TRUE(r["error"]["message"].is_string());
   EXPECT_TRUE(r["error"]["details"].is_object());
+}
+
+TEST(Errors, RandomBytesAlwaysGetOneValidJsonReply) {
+  Device d;
+  std::mt19937 rng(42);
+  const std::string pieces[] = {"{", "}", "\"cmd\"", ":", ",", "\"move_steps\"", "\"left\"",
+                                "1e999", "-0", "[", "]", "\"seq\"", "4294967296", "null",
+                                "\"\\u0000\"", "true", " ", "\"sid\"", "#", "\xff"};
+  for (int i = 0; i < 5000; ++i) {
+    std::string msg;
+    const int n = static_cast<int>(rng() % 24);
+    for (int k = 0; k < n; ++k) msg += pieces[rng() % (sizeof(pieces) / sizeof(pieces[0]))];
+    const std::string raw = d.Raw(msg);
+    ASSERT_FALSE(raw.empty()) << msg;
+    const json r = json::parse(raw, nullptr, false);
+    ASSERT_FALSE(r.is_discarded()) << msg << " -> " << raw;
+    ASSERT_TRUE(r.contains("ok")) << raw;
+  }
+  EXPECT_FALSE(d.cube->running() && d.cube->estopped());
 }
 
 }  // namespace

@@ -144,6 +144,10 @@ void CubeAppSetup() {
   Serial.begin(cube::board::kSerialBaud);
   motors.Begin();
 
+  WiFi.persistent(false);  // no flash writes while the step timer runs
+  WiFi.mode(WIFI_STA);     // before reading the station MAC
+  WiFi.setSleep(false);    // lower, steadier UDP latency
+
   static char device_id[16];
   uint8_t mac_addr[6];
   WiFi.macAddress(mac_addr);
@@ -164,9 +168,6 @@ void CubeAppSetup() {
                                         static_cast<uint16_t>(esp_random()));
   serial_link = &link_instance;
 
-  WiFi.persistent(false);  // no flash writes while the step timer runs
-  WiFi.mode(WIFI_STA);
-  WiFi.setSleep(false);  // lower, steadier UDP latency
   WiFi.begin(CUBE_WIFI_SSID, CUBE_WIFI_PASSWORD);
 
   step_timer = timerBegin(cube::board::kStepTimerHz);
