@@ -88,15 +88,20 @@ bool Pty::Open(std::string* error) {
 }
 
 void Pty::Write(const uint8_t* data, size_t len) {
+  // Like a UART with no one listening: when the terminal's buffer is full
+  // (no client reads it), stale bytes are discarded rather than stalling the
+  // robot. The link layer's retries recover what a live client missed.
   size_t done = 0;
-  int spins = 0;
-  while (done < len && spins < 1000) {
+  bool flushed = false;
+  while (done < len) {
     const ssize_t n = write(master_, data + done, len - done);
     if (n > 0) {
       done += static_cast<size_t>(n);
-    } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
-      ++spins;
-      usleep(1000);  // the client is not reading; give it a moment
+    } else if (n < 0 && errno == EINTR) {
+      continue;
+    } else if (n < 0 && errno == EAGAIN && !flushed) {
+      tcflush(slave_, TCIFLUSH);
+      flushed = true;
     } else {
       return;
     }

@@ -236,6 +236,64 @@ TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
   EXPECT_EQ(done["right_position"], -300);
 }
 
+TEST(Emulator, RunsTheSeedCommandsOverUdpWithTheirStepCounts) {
+  Emulator e({"--time-scale", "20", "--host-timeout-ms", "10000"});
+  json r = json::parse(e.Udp(R"({"cmd":"move_steps","left":1000,"right":-1000,"speed":800})"));
+  EXPECT_EQ(r["ok"], true);
+  EXPECT_FALSE(r.contains("seq"));
+  json done = e.WaitEvent("move_finished", 3000);
+  EXPECT_EQ(done["left_position"], 1000);
+  EXPECT_EQ(done["right_position"], -1000);
+  r = json::parse(e.Udp(R"({"cmd":"move_cm","left_cm":10,"right_cm":10,"speed":1024})"));
+  EXPECT_EQ(r["left_steps"], 2172);
+  done = e.WaitEvent("move_finished", 3000);
+  EXPECT_EQ(done["left_steps"], 2172);
+  r = json::parse(e.Udp(R"({"cmd":"rotate_deg","degrees":90,"speed":1024})"));
+  EXPECT_EQ(r["left_steps"], -1706);
+  done = e.WaitEvent("move_finished", 3000);
+  EXPECT_EQ(done["right_steps"], 1707) << "the accumulator carries the 10 cm move's fraction";
+  r = json::parse(e.Udp(R"({"cmd":"set_config","wheel_diameter_cm":6.0,"wheel_base_cm":10.0})"));
+  EXPECT_EQ(r["ok"], true);
+  r = json::parse(e.Udp(R"({"cmd":"stop"})"));
+  EXPECT_EQ(r["ok"], true);
+  r = json::parse(e.Udp(R"({"cmd":"get_status"})"));
+  EXPECT_EQ(r["left_steps"], 1000 + 2172 - 1706);
+  EXPECT_EQ(r["right_steps"], -1000 + 2172 + 1707);
+  EXPECT_EQ(r["running"], false);
+}
+
+TEST(Emulator, AnswersAnOversizeFrameOverThePtyWithMalformed) {
+  Emulator e;
+  const int fd = open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(fd, 0);
+  termios t{};
+  tcgetattr(fd, &t);
+  cfmakeraw(&t);
+  tcsetattr(fd, TCSANOW, &t);
+  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x07, 0x00, 0x00, 0x08, 0xFF, 0xF7};
+  ASSERT_EQ(write(fd, hdr.data(), hdr.size()), static_cast<ssize_t>(hdr.size()));
+  std::vector<uint8_t> in;
+  std::string reply;
+  const auto deadline = Clock::now() + std::chrono::seconds(2);
+  while (reply.empty() && Clock::now() < deadline) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 100) <= 0) continue;
+    uint8_t buf[2048];
+    const ssize_t n = read(fd, buf, sizeof(buf));
+    if (n > 0) in.insert(in.end(), buf, buf + n);
+    cube::Frame f;
+    size_t used = 0;
+    if (DecodeFrame(in.data(), in.size(), &f, &used) == FrameError::kOk && f.type == kFrameData) {
+      reply.assign(reinterpret_cast<const char*>(f.payload), f.len);
+    }
+  }
+  close(fd);
+  ASSERT_FALSE(reply.empty());
+  const json r = json::parse(reply);
+  EXPECT_EQ(r["error"]["code"], "MALFORMED");
+  EXPECT_EQ(r["error"]["details"]["length"], 2048);
+}
+
 TEST(Emulator, ExitsCleanlyOnSigtermAndWhenStdinCloses) {
   Emulator a;
   const int status = a.Terminate(SIGTERM);
