@@ -25,3 +25,35 @@ export { GridPlanner } from './planner/grid-planner.js';
 export type { PathPlan, PlanOptions } from './planner/grid-planner.js';
 export { lineOfSight, simplifyPath } from './planner/line-of-sight.js';
 export { ObstacleMap } from './planner/obstacle-map.js';
+
+export { NavigationError, SILENT_LOGGER } from './errors.js';
+export type { NavigationErrorCode, NavigationLogger } from './errors.js';
+
+export {
+  NavigationDecisionSchema,
+  createDecisionSchema,
+  decisionJsonSchema,
+  parseDecision,
+} from './decision/schema.js';
+export type {
+  DecisionBounds,
+  NavigationAction,
+  NavigationActionType,
+  NavigationDecision,
+} from './decision/schema.js';
+export type { ActionReport, DecisionContext, DecisionProvider } from './decision/provider.js';
+export { FrontierExplorationProvider, GoalSeekingProvider } from './decision/deterministic.js';
+export type { FrontierExplorationOptions } from './decision/deterministic.js';
+export { OpenAICompatibleProvider } from './decision/llm-provider.js';
+export type { OpenAICompatibleOptions, ResponseFormatMode } from './decision/llm-provider.js';
+export { findFrontier } from './grid/frontier.js';
+export type { Frontier, FrontierOptions } from './grid/frontier.js';
+
+export { NavigationBridge } from './bridge/navigation-bridge.js';
+export type {
+  NavigationBridgeOptions,
+  NavigationEvents,
+  NavigationOutcome,
+  NavigationOutcomeReason,
+  NavigationStatus,
+} from './bridge/navigation-bridge.js';

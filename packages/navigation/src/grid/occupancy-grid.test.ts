@@ -98,7 +98,10 @@ describe('OccupancyGrid', () => {
       expect(grid.stateAt(0.3, 0.01)).toBe('free');
       expect(grid.stateAt(0.01, 0.88)).toBe('occupied');
       expect(grid.stateAt(0.01, -1.5)).toBe('free'); // right: nothing within range
-      expect(grid.counts().occupied).toBe(2);
+      // The obstacle may be anywhere across the cone: the arc at the reading's distance is marked.
+      expect(grid.stateAt(0.57, 0.09)).toBe('occupied');
+      expect(grid.stateAt(0.57, -0.07)).toBe('occupied');
+      expect(grid.stateAt(0.57, 0.2)).toBe('unknown');
     });
 
     it('turns the beams with the heading: facing +y, the front reading lands on +y', () => {

@@ -38,8 +38,11 @@ export const DEFAULT_LOG_ODDS: Readonly<LogOddsModel> = Object.freeze({
   min: -4,
   max: 4,
   occupiedAt: 0.6,
-  freeAt: -0.3,
+  freeAt: -0.15,
 });
+
+/** Log-odds of a cell a known map shows free: free, but one range hit makes it occupied. */
+const SEEDED_FREE = -0.2;
 
 /** How the robot's range sensors look at the world. */
 export interface RangeSensorModel {
@@ -207,10 +210,16 @@ export class OccupancyGrid {
 
   /**
    * Seeds the grid from a known map: cells touching a wall or obstacle become occupied with full
-   * confidence, cells outside the arena too, and (unless `freeSpace` is false) every other cell
-   * inside the arena free with full confidence. Sensor evidence still updates seeded cells.
+   * confidence (log-odds `occupiedLogOdds`, default the model's max), cells outside the arena
+   * too, and (unless `freeSpace` is false) every other cell inside the arena free with low
+   * confidence (`freeLogOdds`, default -0.2: one range hit marks an obstacle the map did not show).
    */
-  seedFromMap(map: KnownMap, options: { freeSpace?: boolean } = {}): void {
+  seedFromMap(
+    map: KnownMap,
+    options: { freeSpace?: boolean; freeLogOdds?: number; occupiedLogOdds?: number } = {},
+  ): void {
+    const freeValue = options.freeLogOdds ?? SEEDED_FREE;
+    const occupiedValue = options.occupiedLogOdds ?? this.model.max;
     const { width, height, resolutionM: res } = this.spec;
     const solids = mapSolids(map);
     const arena = map.arena;
@@ -237,8 +246,8 @@ export class OccupancyGrid {
             occupied = (nx - s.x) ** 2 + (ny - s.y) ** 2 < s.radius * s.radius;
           }
         }
-        if (occupied) this.setLogOdds(cx, cy, this.model.max);
-        else if (options.freeSpace !== false) this.setLogOdds(cx, cy, this.model.min);
+        if (occupied) this.setLogOdds(cx, cy, occupiedValue);
+        else if (options.freeSpace !== false) this.setLogOdds(cx, cy, freeValue);
       }
     }
   }
@@ -281,8 +290,8 @@ export class OccupancyGrid {
   /**
    * Lays the front, left and right (and, when present, front-left and front-right) readings
    * taken at `pose` into the grid. Each sensor adds free evidence across its field of view up to
-   * its reading, and occupied evidence where its central ray ends when the reading is short of
-   * the maximum range. Non-finite readings are ignored.
+   * its reading and, when the reading is short of the maximum range, occupied evidence on the arc
+   * of its field of view at that distance. Non-finite readings are ignored.
    */
   integrateRangeReadings(
     pose: Pose2D,
@@ -303,15 +312,44 @@ export class OccupancyGrid {
       if (reading === undefined || !Number.isFinite(reading) || reading < 0) continue;
       const hit = reading < model.maxRangeM - 1e-6;
       const range = Math.min(reading, model.maxRangeM) + model.originOffsetM;
-      // Free evidence across the cone: nothing in it is nearer than the reading.
+      // Free evidence across the cone: nothing in it is nearer than the reading. Occupied
+      // evidence on the arc at the reading's distance: a cone's reading does not say where across
+      // the cone the obstacle is, so the whole arc is suspect (free evidence from other views
+      // clears the parts that are not).
+      const arc = new Set<number>();
       for (let i = 0; i < rays; i += 1) {
         const spread = rays === 1 ? 0 : (i / (rays - 1) - 0.5) * fov;
-        if (Math.abs(spread) < 1e-9) continue;
-        this.integrateRay(pose.x, pose.y, pose.yaw + offset + spread, range, false);
+        const angle = pose.yaw + offset + spread;
+        this.integrateRay(pose.x, pose.y, angle, range, false);
+        if (hit) {
+          const end = worldToCell(
+            this.spec,
+            pose.x + range * Math.cos(angle),
+            pose.y + range * Math.sin(angle),
+          );
+          if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
+        }
       }
-      // The obstacle goes on the central ray only: a cone's reading does not say where across
-      // the cone it is.
-      this.integrateRay(pose.x, pose.y, pose.yaw + offset, range, hit);
+      if (hit) {
+        // Fill the arc between the rays' ends, one point per half cell.
+        const steps = Math.ceil((range * fov) / (this.spec.resolutionM / 2));
+        for (let k = 0; k <= steps; k += 1) {
+          const angle = pose.yaw + offset + (steps === 0 ? 0 : (k / steps - 0.5) * fov);
+          const end = worldToCell(
+            this.spec,
+            pose.x + range * Math.cos(angle),
+            pose.y + range * Math.sin(angle),
+          );
+          if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
+        }
+        for (const index of arc) {
+          this.addEvidence(
+            index % this.spec.width,
+            Math.floor(index / this.spec.width),
+            this.model.hit,
+          );
+        }
+      }
     }
   }
 

@@ -1,0 +1,45 @@
+/** Why a navigation operation failed (see {@link NavigationError}). */
+export type NavigationErrorCode =
+  /** Configuration is missing or wrong (no model name, bad URL, bad option). */
+  | 'CONFIG'
+  /** A decision provider could not produce a decision (HTTP error, no valid reply). */
+  | 'PROVIDER_ERROR'
+  /** A decision did not match the decision schema. */
+  | 'INVALID_DECISION'
+  /** A wait ran out. */
+  | 'TIMEOUT'
+  /** The operation was cancelled through its AbortSignal. */
+  | 'ABORTED';
+
+/** The error class of the navigation package: a literal `code`, `details`, and a `cause`. */
+export class NavigationError extends Error {
+  override readonly name = 'NavigationError';
+  readonly code: NavigationErrorCode;
+  readonly details: Record<string, unknown> | undefined;
+
+  constructor(
+    code: NavigationErrorCode,
+    message: string,
+    options: { details?: Record<string, unknown>; cause?: unknown } = {},
+  ) {
+    super(message, options.cause === undefined ? undefined : { cause: options.cause });
+    this.code = code;
+    this.details = options.details;
+  }
+}
+
+/** A logger the package writes through (it never uses the console). */
+export interface NavigationLogger {
+  debug(message: string, fields?: Record<string, unknown>): void;
+  info(message: string, fields?: Record<string, unknown>): void;
+  warn(message: string, fields?: Record<string, unknown>): void;
+  error(message: string, fields?: Record<string, unknown>): void;
+}
+
+/** A logger that drops everything: the default. */
+export const SILENT_LOGGER: NavigationLogger = Object.freeze({
+  debug: () => undefined,
+  info: () => undefined,
+  warn: () => undefined,
+  error: () => undefined,
+});
