@@ -28,7 +28,7 @@ export type {
 } from './transport/transport.js';
 export { DEFAULT_UDP_PORT, udpTransport } from './transport/udp.js';
 export type { UdpTransport, UdpTransportOptions } from './transport/udp.js';
-export { PARTIAL_FRAME_TIMEOUT_MS, serialTransport } from './transport/serial.js';
+export { openSerialPort, PARTIAL_FRAME_TIMEOUT_MS, serialTransport } from './transport/serial.js';
 export type {
   SerialPortLike,
   SerialPortOpener,

@@ -42,6 +42,7 @@ import { serialTransport } from './transport/serial.js';
 import { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS } from './transport/transport.js';
 import type {
   RequestOptions,
+  SerialLinkStats,
   Transport,
   TransportFactory,
   TransportStats,
@@ -303,6 +304,13 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   /** The link's round-trip statistics. */
   transportStats(): TransportStats | undefined {
     return this.#transport?.stats();
+  }
+
+  /** The serial link's frame statistics (undefined on other links). */
+  linkStats(): SerialLinkStats | undefined {
+    const transport = this.#transport as
+      (Transport & { linkStats?: () => SerialLinkStats }) | undefined;
+    return transport?.linkStats?.();
   }
 
   /** The link state: `connected`, `lost` (reconnecting), `closed`, or `idle` before initialize. */

@@ -48,7 +48,8 @@ export interface SerialTransport extends Transport {
   linkStats(): SerialLinkStats;
 }
 
-const defaultOpener: SerialPortOpener = async (path, baudRate) => {
+/** Opens a serial port with `serialport` (loaded on first use; Node only). */
+export const openSerialPort: SerialPortOpener = async (path, baudRate) => {
   // Loaded here, on first use, so that nothing native reaches a browser bundle.
   const { SerialPort } = await import('serialport');
   return await new Promise<SerialPortLike>((resolve, reject) => {
@@ -75,7 +76,7 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
   }
   const timeoutMs = options.timeoutMs ?? DEFAULT_REPLY_TIMEOUT_MS;
   const attempts = options.attempts ?? DEFAULT_ATTEMPTS;
-  const open = options.open ?? defaultOpener;
+  const open = options.open ?? openSerialPort;
 
   return {
     type: 'serial',
