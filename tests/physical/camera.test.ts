@@ -1,0 +1,163 @@
+// captureFrame from an MJPEG stream served by a small local HTTP server, as the ESP32-CAM serves it.
+import { createServer } from 'node:http';
+import type { Server, ServerResponse } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { MjpegCamera, MockRobot, PhysicalHAL } from '@hal/physical';
+import { afterEach, describe, expect, it } from 'vitest';
+
+const BOUNDARY = '123456789000000000000987654321';
+
+/** A fake JPEG: SOI marker, a payload naming the frame, EOI marker. */
+function jpeg(n: number): Buffer {
+  return Buffer.concat([
+    Buffer.from([0xff, 0xd8, 0xff, 0xe0]),
+    Buffer.from(`frame-${n}`),
+    Buffer.from([0xff, 0xd9]),
+  ]);
+}
+
+const decodeDataUrl = (url: string) =>
+  Buffer.from(url.replace(/^data:image\/jpeg;base64,/, ''), 'base64');
+
+interface CameraServer {
+  url: string;
+  connections: number;
+  /** Sends frame n to every open stream, split into two writes. */
+  send(n: number, options?: { withLength?: boolean }): void;
+  /** Ends every open stream (the camera dropping the connection). */
+  dropStreams(): void;
+  close(): Promise<void>;
+}
+
+async function cameraServer(): Promise<CameraServer> {
+  const streams = new Set<ServerResponse>();
+  let connections = 0;
+  const server: Server = createServer((request, response) => {
+    if (request.url !== '/stream') {
+      response.writeHead(404).end();
+      return;
+    }
+    connections += 1;
+    response.writeHead(200, {
+      'Content-Type': `multipart/x-mixed-replace;boundary=${BOUNDARY}`,
+      'Cache-Control': 'no-cache',
+    });
+    streams.add(response);
+    response.on('close', () => streams.delete(response));
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const { port } = server.address() as AddressInfo;
+  return {
+    url: `http://127.0.0.1:${port}`,
+    get connections() {
+      return connections;
+    },
+    send: (n, options = {}) => {
+      const body = jpeg(n);
+      const length = options.withLength === false ? '' : `Content-Length: ${body.length}\r\n`;
+      const part = Buffer.concat([
+        Buffer.from(`\r\n--${BOUNDARY}\r\nContent-Type: image/jpeg\r\n${length}\r\n`),
+        body,
+      ]);
+      for (const stream of streams) {
+        stream.write(part.subarray(0, 20));
+        stream.write(part.subarray(20));
+      }
+    },
+    dropStreams: () => {
+      for (const stream of streams) stream.destroy();
+    },
+    close: () =>
+      new Promise<void>((resolve) => {
+        for (const stream of streams) stream.destroy();
+        server.close(() => resolve());
+      }),
+  };
+}
+
+describe('MjpegCamera', () => {
+  const cleanups: Array<() => Promise<void>> = [];
+  afterEach(async () => {
+    for (const cleanup of cleanups.splice(0).reverse()) await cleanup();
+  });
+
+  it('keeps the latest frame of the stream and returns it as a base64 JPEG data URL', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 20 });
+    cleanups.push(() => camera.stop());
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    server.send(1);
+    server.send(2);
+    server.send(3, { withLength: false });
+    server.send(4);
+    await expect.poll(() => camera.stats.frames, { timeout: 5000 }).toBe(4);
+    const url = await camera.captureFrame();
+    expect(url.startsWith('data:image/jpeg;base64,')).toBe(true);
+    expect(decodeDataUrl(url)).toEqual(jpeg(4));
+    expect(camera.stats.frames).toBe(4);
+  });
+
+  it('reconnects when the stream drops, and serves the frames that follow', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 20 });
+    cleanups.push(() => camera.stop());
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    server.send(1);
+    await expect.poll(() => camera.stats.frames, { timeout: 5000 }).toBe(1);
+    server.dropStreams();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(2);
+    server.send(2);
+    await expect
+      .poll(async () => decodeDataUrl(await camera.captureFrame()), { timeout: 5000 })
+      .toEqual(jpeg(2));
+  });
+
+  it('rejects with TIMEOUT when no frame comes', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({ url: server.url, frameTimeoutMs: 100 });
+    cleanups.push(() => camera.stop());
+    await expect(camera.captureFrame()).rejects.toMatchObject({ code: 'TIMEOUT' });
+  });
+});
+
+describe('PhysicalHAL#captureFrame', () => {
+  it('returns the camera frame when a camera URL is configured, and offers the camera capability', async () => {
+    const server = await cameraServer();
+    const robot = new MockRobot({ timeScale: 20 });
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: 'cube-cam',
+        connection: { type: 'wifi', cameraUrl: server.url },
+      },
+      { transport: robot.transport(), timeScale: 20 },
+    );
+    try {
+      await hal.initialize();
+      expect(hal.getDeviceInfo().capabilities).toContain('vision.camera:v1.0');
+      await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+      const timer = setInterval(() => server.send(7), 20);
+      try {
+        expect(decodeDataUrl(await hal.vision.captureFrame())).toEqual(jpeg(7));
+      } finally {
+        clearInterval(timer);
+      }
+    } finally {
+      await hal.cleanup();
+      await server.close();
+    }
+  });
+
+  it('rejects with NOT_IMPLEMENTED when no camera is configured', async () => {
+    const hal = new PhysicalHAL(
+      { mode: 'physical', deviceId: 'cube-nocam' },
+      { transport: new MockRobot().transport() },
+    );
+    await expect(hal.vision.captureFrame()).rejects.toMatchObject({ code: 'NOT_IMPLEMENTED' });
+  });
+});
