@@ -15,7 +15,8 @@
 #if __has_include("secrets.h")
 #include "secrets.h"
 #else
-#error "Copy secrets.example.h to secrets.h and set your WiFi network (docs/flashing.md)"
+#error \
+    "Copy secrets.example.h to secrets.h and set your WiFi network (docs/flashing.md)"
 #endif
 
 namespace cam {
@@ -130,13 +131,14 @@ void SendStatus(WiFiClient& client) {
   const uint32_t served = frames_served;
   const int clients = stream_clients;
   portEXIT_CRITICAL(&stats_lock);
-  const int n = snprintf(body, sizeof(body),
-                         "{\"fps\":%.1f,\"frames_served\":%lu,\"uptime_ms\":%lu,"
-                         "\"rssi_dbm\":%d,\"stream_clients\":%d,\"width\":320,"
-                         "\"height\":240}",
-                         static_cast<double>(fps), static_cast<unsigned long>(served),
-                         static_cast<unsigned long>(millis()),
-                         static_cast<int>(WiFi.RSSI()), clients);
+  const int n =
+      snprintf(body, sizeof(body),
+               "{\"fps\":%.1f,\"frames_served\":%lu,\"uptime_ms\":%lu,"
+               "\"rssi_dbm\":%d,\"stream_clients\":%d,\"width\":320,"
+               "\"height\":240}",
+               static_cast<double>(fps), static_cast<unsigned long>(served),
+               static_cast<unsigned long>(millis()),
+               static_cast<int>(WiFi.RSSI()), clients);
   client.printf(
       "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\n"
       "Access-Control-Allow-Origin: *\r\nCache-Control: no-cache\r\n"

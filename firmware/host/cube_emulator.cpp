@@ -130,7 +130,8 @@ class VirtualMotors : public cube::MotorDriver {
 // Serial messages go to the cube; its replies go back over the link.
 class SerialBridge : public cube::LinkHandler {
  public:
-  SerialBridge(cube::Cube& c, cube::ScaledClock& real) : cube_(c), real_(real) {}
+  SerialBridge(cube::Cube& c, cube::ScaledClock& real)
+      : cube_(c), real_(real) {}
   void set_link(cube::SerialLink* l) { link_ = l; }
   void OnMessage(const uint8_t* data, size_t len) override {
     const size_t n = cube_.Handle(data, len, out_, sizeof(out_));
@@ -155,9 +156,8 @@ int main(int argc, char** argv) {
   if (!ParseArgs(argc, argv, &opt)) return 2;
 
   std::vector<uint8_t> key;
-  if (!opt.key_hex.empty() &&
-      (!cube::ParseHex(opt.key_hex, &key) || key.empty() ||
-       key.size() > cube::kMaxKeyLen)) {
+  if (!opt.key_hex.empty() && (!cube::ParseHex(opt.key_hex, &key) ||
+                               key.empty() || key.size() > cube::kMaxKeyLen)) {
     std::fprintf(stderr,
                  "cube-emulator: --key must be 1..64 bytes written as hex\n");
     return 2;

@@ -50,8 +50,7 @@ long UdpEndpoint::Receive(uint8_t* buf, size_t cap, sockaddr_in* from) {
 
 void UdpEndpoint::SendTo(const uint8_t* data, size_t len,
                          const sockaddr_in& to) {
-  sendto(fd_, data, len, 0, reinterpret_cast<const sockaddr*>(&to),
-         sizeof(to));
+  sendto(fd_, data, len, 0, reinterpret_cast<const sockaddr*>(&to), sizeof(to));
 }
 
 Pty::~Pty() {

@@ -13,9 +13,7 @@ bool MbedtlsMac::HmacSha256(const uint8_t* key, size_t key_len,
 
 SystemRandom::SystemRandom() : engine_(std::random_device{}()) {}
 
-uint32_t SystemRandom::NextU32() {
-  return static_cast<uint32_t>(engine_());
-}
+uint32_t SystemRandom::NextU32() { return static_cast<uint32_t>(engine_()); }
 
 ScaledClock::ScaledClock(double scale)
     : start_(std::chrono::steady_clock::now()), scale_(scale) {}

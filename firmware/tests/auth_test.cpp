@@ -6,8 +6,9 @@
 namespace cube::testing {
 namespace {
 
-const std::vector<uint8_t> kKey = {0x00, 0x11, 0x22, 0x33, 0x44, 0x55, 0x66, 0x77,
-                                   0x88, 0x99, 0xaa, 0xbb, 0xcc, 0xdd, 0xee, 0xff};
+const std::vector<uint8_t> kKey = {0x00, 0x11, 0x22, 0x33, 0x44, 0x55,
+                                   0x66, 0x77, 0x88, 0x99, 0xaa, 0xbb,
+                                   0xcc, 0xdd, 0xee, 0xff};
 
 std::string Code(const json& r) {
   return r.contains("error") ? r["error"]["code"].get<std::string>() : "";
@@ -22,8 +23,9 @@ TEST(Hmac, MatchesTheRfc4231TestVector) {
   const std::string key = "Jefe";
   const std::string data = "what do ya want for nothing?";
   uint8_t out[32];
-  ASSERT_TRUE(mac.HmacSha256(reinterpret_cast<const uint8_t*>(key.data()), key.size(),
-                             reinterpret_cast<const uint8_t*>(data.data()), data.size(), out));
+  ASSERT_TRUE(mac.HmacSha256(
+      reinterpret_cast<const uint8_t*>(key.data()), key.size(),
+      reinterpret_cast<const uint8_t*>(data.data()), data.size(), out));
   EXPECT_EQ(ToHexString(out, 32),
             "5bdcc146bf60754e6a042426089575c75a003f089d2739839dec58b964ec3843");
 }
@@ -43,8 +45,12 @@ TEST(Auth, ASignedSessionWorksAndEveryReplyIsSigned) {
 TEST(Auth, ARequestWithoutAMacIsRefusedAndNotExecuted) {
   Device d(kKey);
   d.Hello();
-  const std::string raw = d.Raw(json({{"cmd", "move_steps"}, {"seq", 2}, {"sid", d.sid},
-                                      {"left", 100}, {"right", 100}}).dump());
+  const std::string raw = d.Raw(json({{"cmd", "move_steps"},
+                                      {"seq", 2},
+                                      {"sid", d.sid},
+                                      {"left", 100},
+                                      {"right", 100}})
+                                    .dump());
   const json r = Unsigned(raw);
   EXPECT_EQ(Code(r), "AUTH_FAILED");
   EXPECT_EQ(r["seq"], 2);
@@ -54,8 +60,12 @@ TEST(Auth, ARequestWithoutAMacIsRefusedAndNotExecuted) {
 TEST(Auth, AWrongMacIsRefused) {
   Device d(kKey);
   d.Hello();
-  const std::string body = json({{"cmd", "move_steps"}, {"seq", 2}, {"sid", d.sid},
-                                 {"left", 100}, {"right", 100}}).dump();
+  const std::string body = json({{"cmd", "move_steps"},
+                                 {"seq", 2},
+                                 {"sid", d.sid},
+                                 {"left", 100},
+                                 {"right", 100}})
+                               .dump();
   std::vector<uint8_t> other = kKey;
   other[0] ^= 1;
   const json r = Unsigned(d.Raw(body + "#" + MacHex(other, body)));
@@ -73,7 +83,8 @@ TEST(Auth, SeedStyleRequestsAreRefusedWhenAKeyIsSet) {
   const std::string body = R"({"cmd":"move_steps","left":100,"right":100})";
   const json r = Unsigned(d.Raw(body + "#" + MacHex(kKey, body)));
   EXPECT_EQ(Code(r), "AUTH_FAILED");
-  EXPECT_EQ(r["error"]["message"], "\"seq\" is required when a key is configured");
+  EXPECT_EQ(r["error"]["message"],
+            "\"seq\" is required when a key is configured");
 }
 
 TEST(Auth, HelloNeedsANonce) {
@@ -86,8 +97,12 @@ TEST(Auth, HelloNeedsANonce) {
 TEST(Auth, ACapturedRequestReplayedLaterIsNeverExecutedAgain) {
   Device d(kKey);
   d.Hello();
-  const std::string body = json({{"cmd", "move_steps"}, {"seq", 2}, {"sid", d.sid},
-                                 {"left", 100}, {"right", 100}}).dump();
+  const std::string body = json({{"cmd", "move_steps"},
+                                 {"seq", 2},
+                                 {"sid", d.sid},
+                                 {"left", 100},
+                                 {"right", 100}})
+                               .dump();
   const std::string packet = body + "#" + MacHex(kKey, body);
   const std::string first = d.Raw(packet);
   d.RunUntilIdle();
@@ -107,8 +122,10 @@ TEST(Auth, ResetEstopNeedsTheCurrentSessionWhenAKeyIsSet) {
   d.Call("estop");
   const uint32_t old = d.sid;
   d.Hello();
-  const std::string body = json({{"cmd", "reset_estop"}, {"seq", 50}, {"sid", old}}).dump();
-  EXPECT_EQ(Code(Unsigned(d.Raw(body + "#" + MacHex(kKey, body)))), "SESSION_MISMATCH");
+  const std::string body =
+      json({{"cmd", "reset_estop"}, {"seq", 50}, {"sid", old}}).dump();
+  EXPECT_EQ(Code(Unsigned(d.Raw(body + "#" + MacHex(kKey, body)))),
+            "SESSION_MISMATCH");
   EXPECT_TRUE(d.cube->estopped());
   EXPECT_TRUE(d.Call("reset_estop")["ok"]);
   EXPECT_FALSE(d.cube->estopped());

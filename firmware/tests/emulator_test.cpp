@@ -1,14 +1,13 @@
 // cube-emulator as a process: real UDP socket, real pseudo-terminal.
 #include <arpa/inet.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <termios.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <chrono>
 #include <string>
@@ -50,7 +49,8 @@ class Emulator {
     stdin_ = in[1];
     stdout_ = out[0];
     ready = json::parse(ReadLine(2000));
-    startup_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    startup_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     udp_ = socket(AF_INET, SOCK_DGRAM, 0);
     addr_.sin_family = AF_INET;
     addr_.sin_port = htons(ready["udp_port"].get<uint16_t>());
@@ -77,7 +77,9 @@ class Emulator {
         return line;
       }
       const int left = static_cast<int>(
-          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count());
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline -
+                                                                Clock::now())
+              .count());
       if (left <= 0) return "";
       pollfd p{stdout_, POLLIN, 0};
       if (poll(&p, 1, left) <= 0) return "";
@@ -101,7 +103,8 @@ class Emulator {
   }
 
   std::string Udp(const std::string& bytes) {
-    sendto(udp_, bytes.data(), bytes.size(), 0, reinterpret_cast<sockaddr*>(&addr_), sizeof(addr_));
+    sendto(udp_, bytes.data(), bytes.size(), 0,
+           reinterpret_cast<sockaddr*>(&addr_), sizeof(addr_));
     pollfd p{udp_, POLLIN, 0};
     if (poll(&p, 1, 2000) <= 0) return "";
     char buf[2048];
@@ -153,10 +156,15 @@ TEST(Emulator, StartsInWellUnderASecondAndSaysWhereItListens) {
 
 TEST(Emulator, ExecutesARetriedUdpMoveOnceAndReportsItsSteps) {
   Emulator e({"--time-scale", "20", "--host-timeout-ms", "10000"});
-  const json hello = json::parse(e.Udp(R"({"cmd":"hello","seq":1,"nonce":"x"})"));
+  const json hello =
+      json::parse(e.Udp(R"({"cmd":"hello","seq":1,"nonce":"x"})"));
   const uint32_t sid = hello["sid"];
-  const std::string move =
-      json({{"cmd", "move_cm"}, {"seq", 2}, {"sid", sid}, {"left_cm", 10}, {"right_cm", 10}}).dump();
+  const std::string move = json({{"cmd", "move_cm"},
+                                 {"seq", 2},
+                                 {"sid", sid},
+                                 {"left_cm", 10},
+                                 {"right_cm", 10}})
+                               .dump();
   const std::string first = e.Udp(move);
   EXPECT_EQ(e.Udp(move), first);
   const json started = e.WaitEvent("move_started", 1000);
@@ -170,24 +178,28 @@ TEST(Emulator, ExecutesARetriedUdpMoveOnceAndReportsItsSteps) {
 
 TEST(Emulator, AnswersGarbageTruncatedAndOversizedDatagramsAndKeepsRunning) {
   Emulator e;
-  for (const std::string bad : {std::string("garbage"), std::string("{\"cmd\":\"stop\""),
-                                std::string(3000, 'x')}) {
+  for (const std::string bad :
+       {std::string("garbage"), std::string("{\"cmd\":\"stop\""),
+        std::string(3000, 'x')}) {
     const json r = json::parse(e.Udp(bad));
     EXPECT_EQ(r["error"]["code"], "MALFORMED");
   }
   EXPECT_EQ(json::parse(e.Udp(R"({"cmd":"heartbeat"})"))["ok"], true);
 }
 
-std::vector<uint8_t> Frame(uint8_t type, uint16_t seq, const std::string& payload) {
+std::vector<uint8_t> Frame(uint8_t type, uint16_t seq,
+                           const std::string& payload) {
   std::vector<uint8_t> out(kFrameMaxSize);
-  out.resize(EncodeFrame(type, seq, reinterpret_cast<const uint8_t*>(payload.data()),
+  out.resize(EncodeFrame(type, seq,
+                         reinterpret_cast<const uint8_t*>(payload.data()),
                          payload.size(), out.data(), out.size()));
   return out;
 }
 
 TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
   Emulator e({"--time-scale", "10"});
-  const int fd = open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
+  const int fd =
+      open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(fd, 0);
   termios t{};
   tcgetattr(fd, &t);
@@ -195,9 +207,13 @@ TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
   tcsetattr(fd, TCSANOW, &t);
   // Garbage first: the device must resynchronise.
   const std::vector<uint8_t> junk = {0x00, 0xA5, 0x13, 0x5A, 0xFF};
-  ASSERT_EQ(write(fd, junk.data(), junk.size()), static_cast<ssize_t>(junk.size()));
-  const auto req = Frame(kFrameData, 40, R"({"cmd":"move_steps","left":300,"right":-300,"speed":1000})");
-  ASSERT_EQ(write(fd, req.data(), req.size()), static_cast<ssize_t>(req.size()));
+  ASSERT_EQ(write(fd, junk.data(), junk.size()),
+            static_cast<ssize_t>(junk.size()));
+  const auto req =
+      Frame(kFrameData, 40,
+            R"({"cmd":"move_steps","left":300,"right":-300,"speed":1000})");
+  ASSERT_EQ(write(fd, req.data(), req.size()),
+            static_cast<ssize_t>(req.size()));
 
   std::vector<uint8_t> in;
   bool acked = false;
@@ -213,12 +229,15 @@ TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
     while (pos < in.size()) {
       cube::Frame f;
       size_t used = 0;
-      if (DecodeFrame(in.data() + pos, in.size() - pos, &f, &used) != FrameError::kOk) break;
+      if (DecodeFrame(in.data() + pos, in.size() - pos, &f, &used) !=
+          FrameError::kOk)
+        break;
       if (f.type == kFrameAck && f.seq == 40) acked = true;
       if (f.type == kFrameData) {
         reply.assign(reinterpret_cast<const char*>(f.payload), f.len);
         const auto ack = Frame(kFrameAck, f.seq, "");
-        ASSERT_EQ(write(fd, ack.data(), ack.size()), static_cast<ssize_t>(ack.size()));
+        ASSERT_EQ(write(fd, ack.data(), ack.size()),
+                  static_cast<ssize_t>(ack.size()));
       }
       pos += used;
     }
@@ -238,21 +257,25 @@ TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
 
 TEST(Emulator, RunsTheSeedCommandsOverUdpWithTheirStepCounts) {
   Emulator e({"--time-scale", "20", "--host-timeout-ms", "10000"});
-  json r = json::parse(e.Udp(R"({"cmd":"move_steps","left":1000,"right":-1000,"speed":800})"));
+  json r = json::parse(
+      e.Udp(R"({"cmd":"move_steps","left":1000,"right":-1000,"speed":800})"));
   EXPECT_EQ(r["ok"], true);
   EXPECT_FALSE(r.contains("seq"));
   json done = e.WaitEvent("move_finished", 3000);
   EXPECT_EQ(done["left_position"], 1000);
   EXPECT_EQ(done["right_position"], -1000);
-  r = json::parse(e.Udp(R"({"cmd":"move_cm","left_cm":10,"right_cm":10,"speed":1024})"));
+  r = json::parse(
+      e.Udp(R"({"cmd":"move_cm","left_cm":10,"right_cm":10,"speed":1024})"));
   EXPECT_EQ(r["left_steps"], 2172);
   done = e.WaitEvent("move_finished", 3000);
   EXPECT_EQ(done["left_steps"], 2172);
   r = json::parse(e.Udp(R"({"cmd":"rotate_deg","degrees":90,"speed":1024})"));
   EXPECT_EQ(r["left_steps"], -1706);
   done = e.WaitEvent("move_finished", 3000);
-  EXPECT_EQ(done["right_steps"], 1707) << "the accumulator carries the 10 cm move's fraction";
-  r = json::parse(e.Udp(R"({"cmd":"set_config","wheel_diameter_cm":6.0,"wheel_base_cm":10.0})"));
+  EXPECT_EQ(done["right_steps"], 1707)
+      << "the accumulator carries the 10 cm move's fraction";
+  r = json::parse(e.Udp(
+      R"({"cmd":"set_config","wheel_diameter_cm":6.0,"wheel_base_cm":10.0})"));
   EXPECT_EQ(r["ok"], true);
   r = json::parse(e.Udp(R"({"cmd":"stop"})"));
   EXPECT_EQ(r["ok"], true);
@@ -264,14 +287,17 @@ TEST(Emulator, RunsTheSeedCommandsOverUdpWithTheirStepCounts) {
 
 TEST(Emulator, AnswersAnOversizeFrameOverThePtyWithMalformed) {
   Emulator e;
-  const int fd = open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
+  const int fd =
+      open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(fd, 0);
   termios t{};
   tcgetattr(fd, &t);
   cfmakeraw(&t);
   tcsetattr(fd, TCSANOW, &t);
-  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x07, 0x00, 0x00, 0x08, 0xFF, 0xF7};
-  ASSERT_EQ(write(fd, hdr.data(), hdr.size()), static_cast<ssize_t>(hdr.size()));
+  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x07, 0x00,
+                                    0x00, 0x08, 0xFF, 0xF7};
+  ASSERT_EQ(write(fd, hdr.data(), hdr.size()),
+            static_cast<ssize_t>(hdr.size()));
   std::vector<uint8_t> in;
   std::string reply;
   const auto deadline = Clock::now() + std::chrono::seconds(2);
@@ -283,7 +309,8 @@ TEST(Emulator, AnswersAnOversizeFrameOverThePtyWithMalformed) {
     if (n > 0) in.insert(in.end(), buf, buf + n);
     cube::Frame f;
     size_t used = 0;
-    if (DecodeFrame(in.data(), in.size(), &f, &used) == FrameError::kOk && f.type == kFrameData) {
+    if (DecodeFrame(in.data(), in.size(), &f, &used) == FrameError::kOk &&
+        f.type == kFrameData) {
       reply.assign(reinterpret_cast<const char*>(f.payload), f.len);
     }
   }
@@ -311,7 +338,8 @@ TEST(Emulator, RequiresAMacWhenStartedWithAKey) {
   EXPECT_EQ(e.ready["auth"], true);
   const std::string raw = e.Udp(R"({"cmd":"hello","seq":1,"nonce":"n"})");
   ASSERT_GT(raw.size(), 33u);
-  EXPECT_EQ(json::parse(raw.substr(0, raw.size() - 33))["error"]["code"], "AUTH_FAILED");
+  EXPECT_EQ(json::parse(raw.substr(0, raw.size() - 33))["error"]["code"],
+            "AUTH_FAILED");
   const std::vector<uint8_t> key = FromHex("000102030405060708090a0b0c0d0e0f");
   const std::string body = R"({"cmd":"hello","seq":1,"nonce":"n"})";
   const std::string ok = e.Udp(body + "#" + MacHex(key, body));

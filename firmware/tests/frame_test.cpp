@@ -1,10 +1,11 @@
+#include "frame.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
 #include <vector>
 
-#include "frame.h"
 #include "harness.h"
 
 namespace cube {
@@ -19,8 +20,9 @@ std::vector<uint8_t> Bytes(const std::string& s) {
 
 std::vector<uint8_t> Encode(uint8_t type, uint16_t seq, const std::string& p) {
   std::vector<uint8_t> out(kFrameMaxSize);
-  const size_t n = EncodeFrame(type, seq, reinterpret_cast<const uint8_t*>(p.data()),
-                               p.size(), out.data(), out.size());
+  const size_t n =
+      EncodeFrame(type, seq, reinterpret_cast<const uint8_t*>(p.data()),
+                  p.size(), out.data(), out.size());
   out.resize(n);
   return out;
 }
@@ -33,7 +35,8 @@ json GoldenFrames() {
 
 TEST(Crc16, MatchesTheStandardCheckValues) {
   const std::string check = "123456789";
-  EXPECT_EQ(Crc16CcittFalse(reinterpret_cast<const uint8_t*>(check.data()), check.size()),
+  EXPECT_EQ(Crc16CcittFalse(reinterpret_cast<const uint8_t*>(check.data()),
+                            check.size()),
             0x29B1);
   EXPECT_EQ(Crc16CcittFalse(nullptr, 0), 0xFFFF);
   const uint8_t a = 'A';
@@ -45,8 +48,9 @@ TEST(Frame, EncoderReproducesEveryGoldenFrame) {
     if (!v.contains("decoded")) continue;
     const json& d = v["decoded"];
     const uint8_t type = d["type"] == "data" ? kFrameData : kFrameAck;
-    EXPECT_EQ(Encode(type, d["seq"].get<uint16_t>(), d["payload"].get<std::string>()),
-              FromHex(v["hex"].get<std::string>()))
+    EXPECT_EQ(
+        Encode(type, d["seq"].get<uint16_t>(), d["payload"].get<std::string>()),
+        FromHex(v["hex"].get<std::string>()))
         << v["name"];
   }
 }
@@ -57,7 +61,8 @@ TEST(Frame, DecoderReadsEveryGoldenFrameAsRecorded) {
     const std::vector<uint8_t> bytes = FromHex(v["hex"].get<std::string>());
     Frame f;
     size_t used = 0;
-    ASSERT_EQ(DecodeFrame(bytes.data(), bytes.size(), &f, &used), FrameError::kOk)
+    ASSERT_EQ(DecodeFrame(bytes.data(), bytes.size(), &f, &used),
+              FrameError::kOk)
         << v["name"];
     EXPECT_EQ(used, bytes.size());
     EXPECT_EQ(f.type == kFrameData ? "data" : "ack", v["decoded"]["type"]);
@@ -74,8 +79,9 @@ TEST(Frame, InvalidGoldenFramesFailWithTheRecordedError) {
     const std::vector<uint8_t> bytes = FromHex(v["hex"].get<std::string>());
     Frame f;
     size_t used = 0;
-    EXPECT_STREQ(FrameErrorName(DecodeFrame(bytes.data(), bytes.size(), &f, &used)),
-                 v["error"].get<std::string>().c_str())
+    EXPECT_STREQ(
+        FrameErrorName(DecodeFrame(bytes.data(), bytes.size(), &f, &used)),
+        v["error"].get<std::string>().c_str())
         << v["name"];
     ++checked;
   }
@@ -93,7 +99,8 @@ TEST(Frame, RejectsEverySingleBitFlipOfEveryGoldenFrame) {
         bad[i] = static_cast<uint8_t>(bad[i] ^ (1u << b));
         Frame f;
         size_t used = 0;
-        ASSERT_NE(DecodeFrame(bad.data(), bad.size(), &f, &used), FrameError::kOk)
+        ASSERT_NE(DecodeFrame(bad.data(), bad.size(), &f, &used),
+                  FrameError::kOk)
             << v["name"] << " byte " << i << " bit " << b;
         ++flips;
       }
@@ -105,7 +112,8 @@ TEST(Frame, RejectsEverySingleBitFlipOfEveryGoldenFrame) {
 TEST(Frame, RefusesToEncodeAPayloadOver1024Bytes) {
   std::vector<uint8_t> out(2000);
   std::vector<uint8_t> payload(1025, 'x');
-  EXPECT_EQ(EncodeFrame(kFrameData, 1, payload.data(), payload.size(), out.data(), out.size()),
+  EXPECT_EQ(EncodeFrame(kFrameData, 1, payload.data(), payload.size(),
+                        out.data(), out.size()),
             0u);
 }
 
@@ -124,7 +132,8 @@ class Collect : public FrameSink {
 TEST(FrameParser, ResynchronisesAfterGarbage) {
   FrameParser p;
   Collect c;
-  std::vector<uint8_t> stream = {0x00, 0xA5, 0xA5, 0x5A, 0x07, 0xFF, 0x5A, 0xA5};
+  std::vector<uint8_t> stream = {0x00, 0xA5, 0xA5, 0x5A,
+                                 0x07, 0xFF, 0x5A, 0xA5};
   const auto f1 = Encode(kFrameData, 1, R"({"cmd":"stop"})");
   stream.insert(stream.end(), f1.begin(), f1.end());
   const std::vector<uint8_t> junk = {0x13, 0xA5, 0x5A, 0x01, 0x02};
@@ -140,7 +149,8 @@ TEST(FrameParser, ResynchronisesAfterGarbage) {
 TEST(FrameParser, FindsTheNextFrameAfterACorruptedOne) {
   FrameParser p;
   Collect c;
-  auto bad = Encode(kFrameData, 1, R"({"cmd":"move_steps","left":10,"right":10})");
+  auto bad =
+      Encode(kFrameData, 1, R"({"cmd":"move_steps","left":10,"right":10})");
   bad[12] ^= 0x40;
   const auto good = Encode(kFrameData, 2, R"({"cmd":"stop"})");
   std::vector<uint8_t> stream = bad;
@@ -197,7 +207,8 @@ TEST(FrameParser, AbandonsAStalledPartialFrameAfter200Ms) {
 TEST(FrameParser, ReportsAnOversizeHeader) {
   FrameParser p;
   Collect c;
-  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x01, 0x00, 0x00, 0x08, 0xFF, 0xF7};
+  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x01, 0x00,
+                                    0x00, 0x08, 0xFF, 0xF7};
   p.Push(hdr.data(), hdr.size(), 0, c);
   ASSERT_EQ(c.oversize.size(), 1u);
   EXPECT_EQ(c.oversize[0], 2048u);
@@ -205,7 +216,9 @@ TEST(FrameParser, ReportsAnOversizeHeader) {
 
 class Wire : public ByteSink {
  public:
-  void Write(const uint8_t* d, size_t n) override { bytes.insert(bytes.end(), d, d + n); }
+  void Write(const uint8_t* d, size_t n) override {
+    bytes.insert(bytes.end(), d, d + n);
+  }
   std::vector<uint8_t> bytes;
 };
 
@@ -219,13 +232,16 @@ class Inbox : public LinkHandler {
   std::vector<size_t> oversize;
 };
 
-std::vector<std::pair<uint8_t, uint16_t>> FramesIn(const std::vector<uint8_t>& wire) {
+std::vector<std::pair<uint8_t, uint16_t>> FramesIn(
+    const std::vector<uint8_t>& wire) {
   std::vector<std::pair<uint8_t, uint16_t>> out;
   size_t pos = 0;
   while (pos < wire.size()) {
     Frame f;
     size_t used = 0;
-    if (DecodeFrame(wire.data() + pos, wire.size() - pos, &f, &used) != FrameError::kOk) break;
+    if (DecodeFrame(wire.data() + pos, wire.size() - pos, &f, &used) !=
+        FrameError::kOk)
+      break;
     out.emplace_back(f.type, f.seq);
     pos += used;
   }
@@ -249,7 +265,8 @@ TEST(SerialLink, AcksARepeatedSeqAgainButDeliversItOnce) {
   Wire wire;
   Inbox inbox;
   SerialLink link(wire, inbox, 100);
-  const auto f = Encode(kFrameData, 7, R"({"cmd":"move_steps","left":100,"right":100})");
+  const auto f =
+      Encode(kFrameData, 7, R"({"cmd":"move_steps","left":100,"right":100})");
   link.Receive(f.data(), f.size(), 0);
   link.Receive(f.data(), f.size(), 10);
   EXPECT_EQ(inbox.messages.size(), 1u);
@@ -265,7 +282,8 @@ TEST(SerialLink, RetriesAnUnackedFrameEvery2000MsThreeAttemptsInAll) {
   Inbox inbox;
   SerialLink link(wire, inbox, 0xFFFF);
   const std::string msg = R"({"ok":true})";
-  ASSERT_TRUE(link.Send(reinterpret_cast<const uint8_t*>(msg.data()), msg.size(), 0));
+  ASSERT_TRUE(
+      link.Send(reinterpret_cast<const uint8_t*>(msg.data()), msg.size(), 0));
   EXPECT_EQ(FramesIn(wire.bytes).size(), 1u);
   link.Poll(1999);
   EXPECT_EQ(FramesIn(wire.bytes).size(), 1u);
@@ -305,7 +323,8 @@ TEST(SerialLink, PassesAnOversizeHeaderToTheHandler) {
   Wire wire;
   Inbox inbox;
   SerialLink link(wire, inbox, 1);
-  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x01, 0x00, 0x01, 0x04, 0xFE, 0xFB};
+  const std::vector<uint8_t> hdr = {0xA5, 0x5A, 0x01, 0x01, 0x00,
+                                    0x01, 0x04, 0xFE, 0xFB};
   link.Receive(hdr.data(), hdr.size(), 0);
   ASSERT_EQ(inbox.oversize.size(), 1u);
   EXPECT_EQ(inbox.oversize[0], 1025u);

@@ -1,11 +1,11 @@
+#include "json.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
-
-#include "json.h"
 
 namespace cube {
 namespace {
@@ -16,8 +16,11 @@ JsonError ParseText(JsonReader& r, const std::string& s) {
 
 TEST(JsonReader, ReadsAFlatMessage) {
   JsonReader r;
-  ASSERT_EQ(ParseText(r, R"({"cmd":"move_steps","seq":42,"left":-100,"speed":512.5,"x":true,"n":null})"),
-            JsonError::kOk);
+  ASSERT_EQ(
+      ParseText(
+          r,
+          R"({"cmd":"move_steps","seq":42,"left":-100,"speed":512.5,"x":true,"n":null})"),
+      JsonError::kOk);
   EXPECT_STREQ(r.Find("cmd")->str, "move_steps");
   EXPECT_EQ(r.Find("seq")->integer, 42);
   EXPECT_EQ(r.Find("left")->integer, -100);
@@ -31,16 +34,19 @@ TEST(JsonReader, ReadsAFlatMessage) {
 
 TEST(JsonReader, SkipsNestedUnknownFields) {
   JsonReader r;
-  ASSERT_EQ(ParseText(r, R"( { "meta" : {"a":[1,2,{"b":"}"}]}, "cmd" : "stop" } )"),
-            JsonError::kOk);
+  ASSERT_EQ(
+      ParseText(r, R"( { "meta" : {"a":[1,2,{"b":"}"}]}, "cmd" : "stop" } )"),
+      JsonError::kOk);
   EXPECT_EQ(r.Find("meta")->type, JsonType::kNested);
   EXPECT_STREQ(r.Find("cmd")->str, "stop");
 }
 
 TEST(JsonReader, TreatsTenPointZeroAndOneE1AsIntegers) {
   JsonReader r;
-  ASSERT_EQ(ParseText(r, R"({"a":10.0,"b":1e1,"c":10.5,"d":-0,"e":4294967295,"f":1.5e3})"),
-            JsonError::kOk);
+  ASSERT_EQ(
+      ParseText(
+          r, R"({"a":10.0,"b":1e1,"c":10.5,"d":-0,"e":4294967295,"f":1.5e3})"),
+      JsonError::kOk);
   EXPECT_TRUE(r.Find("a")->is_integer);
   EXPECT_EQ(r.Find("a")->integer, 10);
   EXPECT_TRUE(r.Find("b")->is_integer);
@@ -52,9 +58,16 @@ TEST(JsonReader, TreatsTenPointZeroAndOneE1AsIntegers) {
 }
 
 TEST(JsonReader, NumbersAreCorrectlyRoundedLikeStrtod) {
-  const char* samples[] = {"10.5", "0.1", "12.345678901", "-7.85398163397448",
-                           "3.141592653589793", "1e-5", "123456789012345678",
-                           "6.02214076e23", "2.5e-300", "0.30000000000000004"};
+  const char* samples[] = {"10.5",
+                           "0.1",
+                           "12.345678901",
+                           "-7.85398163397448",
+                           "3.141592653589793",
+                           "1e-5",
+                           "123456789012345678",
+                           "6.02214076e23",
+                           "2.5e-300",
+                           "0.30000000000000004"};
   for (const char* s : samples) {
     double d = 0;
     ASSERT_TRUE(ParseJsonNumber(s, std::strlen(s), &d)) << s;
@@ -71,7 +84,8 @@ TEST(JsonReader, NumbersAreCorrectlyRoundedLikeStrtod) {
 
 TEST(JsonReader, DecodesEscapesAndUnicode) {
   JsonReader r;
-  ASSERT_EQ(ParseText(r, R"({"s":"a\"b\\c\/\n\u00e9\ud83d\ude00"})"), JsonError::kOk);
+  ASSERT_EQ(ParseText(r, R"({"s":"a\"b\\c\/\n\u00e9\ud83d\ude00"})"),
+            JsonError::kOk);
   EXPECT_STREQ(r.Find("s")->str, "a\"b\\c/\n\xc3\xa9\xf0\x9f\x98\x80");
 }
 
@@ -104,7 +118,8 @@ TEST(JsonReader, NamesEachKindOfMalformedInput) {
   const std::string big = "{\"a\":\"" + std::string(1100, 'x') + "\"}";
   EXPECT_EQ(ParseText(r, big), JsonError::kTooLong);
   std::string many = "{";
-  for (int i = 0; i < 33; ++i) many += (i ? ",\"k" : "\"k") + std::to_string(i) + "\":1";
+  for (int i = 0; i < 33; ++i)
+    many += (i ? ",\"k" : "\"k") + std::to_string(i) + "\":1";
   many += "}";
   EXPECT_EQ(ParseText(r, many), JsonError::kTooManyFields);
 }

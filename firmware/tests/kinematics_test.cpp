@@ -1,8 +1,8 @@
+#include "kinematics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "kinematics.h"
 
 namespace cube {
 namespace {
@@ -70,14 +70,16 @@ StepProfile Move(int64_t n, double v = 1024, double a = 512) {
 TEST(StepProfile, TriangularMoveOf1706StepsTakesAbout3651Ms) {
   const int64_t d = ProfileDurationUs(Move(1706));
   EXPECT_NEAR(static_cast<double>(d) / 1e6, 3.651, 0.0005);
-  EXPECT_EQ(d, static_cast<int64_t>(std::floor(2.0 * std::sqrt(1706.0 / 512.0) * 1e6 + 0.5)));
+  EXPECT_EQ(d, static_cast<int64_t>(
+                   std::floor(2.0 * std::sqrt(1706.0 / 512.0) * 1e6 + 0.5)));
 }
 
 TEST(StepProfile, TrapezoidOf2172StepsTakesAbout4121Ms) {
   const int64_t d = ProfileDurationUs(Move(2172));
   EXPECT_NEAR(static_cast<double>(d) / 1e6, 4.121, 0.0005);
   // 2 s up, 0.121 s cruise, 2 s down.
-  EXPECT_NEAR(static_cast<double>(StepTimeUs(Move(2172), 1024)) / 1e6, 2.0, 1e-6);
+  EXPECT_NEAR(static_cast<double>(StepTimeUs(Move(2172), 1024)) / 1e6, 2.0,
+              1e-6);
 }
 
 TEST(StepProfile, StepTimesIncreaseStrictly) {
@@ -93,8 +95,9 @@ TEST(StepProfile, StepTimesIncreaseStrictly) {
 }
 
 TEST(StepProfile, FirstStepComesAfterSqrtTwoOverA) {
-  EXPECT_EQ(StepTimeUs(Move(2172), 1),
-            static_cast<int64_t>(std::floor(std::sqrt(2.0 / 512.0) * 1e6 + 0.5)));
+  EXPECT_EQ(
+      StepTimeUs(Move(2172), 1),
+      static_cast<int64_t>(std::floor(std::sqrt(2.0 / 512.0) * 1e6 + 0.5)));
 }
 
 TEST(StepProfile, CruiseStepsAreOneOverVApart) {

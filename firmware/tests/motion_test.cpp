@@ -1,10 +1,11 @@
 // The step planner and executor at the level of individual steps.
+#include "motion.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "harness.h"
-#include "motion.h"
 #include "stepper.h"
 
 namespace cube::testing {
@@ -15,7 +16,7 @@ struct Rig {
   RecordingMotors motors{clock};
   StepExecutor exec{motors, true};
   Motion motion{exec};
-  std::vector<std::pair<uint64_t, int>> left_steps;   // time, direction
+  std::vector<std::pair<uint64_t, int>> left_steps;  // time, direction
   std::vector<std::pair<uint64_t, int>> right_steps;
 
   // Advances straight to each queued step's due time and executes it, so
@@ -29,8 +30,10 @@ struct Rig {
         const int32_t l0 = exec.left_position();
         const int32_t r0 = exec.right_position();
         exec.Tick(clock.now_us);
-        if (exec.left_position() != l0) left_steps.emplace_back(clock.now_us, exec.left_position() - l0);
-        if (exec.right_position() != r0) right_steps.emplace_back(clock.now_us, exec.right_position() - r0);
+        if (exec.left_position() != l0)
+          left_steps.emplace_back(clock.now_us, exec.left_position() - l0);
+        if (exec.right_position() != r0)
+          right_steps.emplace_back(clock.now_us, exec.right_position() - r0);
       } else {
         exec.Tick(clock.now_us);
       }
@@ -77,7 +80,9 @@ TEST(StepPlanner, BothWheelsFinishTogetherOnAnArc) {
            rig.right_steps[slave].first <= rig.left_steps[k - 1].first) {
       ++slave;
     }
-    ASSERT_EQ(static_cast<int64_t>(slave), SlaveSteps(static_cast<int64_t>(k), 1234, 3000)) << k;
+    ASSERT_EQ(static_cast<int64_t>(slave),
+              SlaveSteps(static_cast<int64_t>(k), 1234, 3000))
+        << k;
   }
 }
 
@@ -88,7 +93,8 @@ TEST(StepPlanner, TheRightWheelCanBeTheMasterAndEachWheelKeepsItsSign) {
   EXPECT_EQ(rig.motion.left_position(), -500);
   EXPECT_EQ(rig.motion.right_position(), 1706);
   for (const auto& s : rig.left_steps) ASSERT_EQ(s.second, -1);
-  EXPECT_EQ(rig.motion.report().duration_us, ProfileDurationUs({1706, 1024, 512, false}));
+  EXPECT_EQ(rig.motion.report().duration_us,
+            ProfileDurationUs({1706, 1024, 512, false}));
 }
 
 TEST(StepPlanner, DrivesTheCoilsThroughTheHalfStepSequence) {

@@ -24,9 +24,12 @@ TEST(Hello, OpensASessionAndDescribesTheDevice) {
   EXPECT_EQ(r["protocol_version"], "1.0");
   EXPECT_EQ(r["auth"], false);
   const json caps = r["capabilities"];
-  EXPECT_NE(std::find(caps.begin(), caps.end(), "locomotion.differential:v1.0"), caps.end());
-  EXPECT_NE(std::find(caps.begin(), caps.end(), "communication.led:v1.0"), caps.end());
-  EXPECT_NE(std::find(caps.begin(), caps.end(), "safety.estop:v1.0"), caps.end());
+  EXPECT_NE(std::find(caps.begin(), caps.end(), "locomotion.differential:v1.0"),
+            caps.end());
+  EXPECT_NE(std::find(caps.begin(), caps.end(), "communication.led:v1.0"),
+            caps.end());
+  EXPECT_NE(std::find(caps.begin(), caps.end(), "safety.estop:v1.0"),
+            caps.end());
   EXPECT_EQ(r["config"]["steps_per_revolution"], 4096);
   EXPECT_EQ(r["config"]["max_speed_steps_per_s"], 1024);
   EXPECT_EQ(r["config"]["acceleration_steps_per_s2"], 512);
@@ -55,8 +58,11 @@ TEST(Hello, AnotherHelloOpensANewSessionWithANewSid) {
 TEST(Session, ARetriedMoveIsAnsweredFromMemoryAndNotExecutedTwice) {
   Device d;
   d.Hello();
-  const std::string req = json({{"cmd", "move_cm"}, {"seq", 2}, {"sid", d.sid},
-                                {"left_cm", 10}, {"right_cm", 10}})
+  const std::string req = json({{"cmd", "move_cm"},
+                                {"seq", 2},
+                                {"sid", d.sid},
+                                {"left_cm", 10},
+                                {"right_cm", 10}})
                               .dump();
   const std::string first = d.Raw(req);
   d.Run(100);
@@ -75,10 +81,13 @@ TEST(Session, RemembersTheLast16RepliesAndCallsOlderOnesStale) {
   d.Hello();
   std::string replies[20];
   for (uint32_t s = 2; s < 22; ++s) {
-    replies[s - 2] = d.Raw(json({{"cmd", "heartbeat"}, {"seq", s}, {"sid", d.sid}}).dump());
+    replies[s - 2] =
+        d.Raw(json({{"cmd", "heartbeat"}, {"seq", s}, {"sid", d.sid}}).dump());
   }
   // seq 6..21 are the last 16.
-  EXPECT_EQ(d.Raw(json({{"cmd", "heartbeat"}, {"seq", 6}, {"sid", d.sid}}).dump()), replies[4]);
+  EXPECT_EQ(
+      d.Raw(json({{"cmd", "heartbeat"}, {"seq", 6}, {"sid", d.sid}}).dump()),
+      replies[4]);
   const json stale = d.Send({{"cmd", "heartbeat"}, {"seq", 5}, {"sid", d.sid}});
   EXPECT_EQ(Code(stale), "STALE_SEQUENCE");
   EXPECT_EQ(stale["seq"], 5);
@@ -89,7 +98,11 @@ TEST(Session, ASeqBelowTheHighestThatWasNeverSentIsStaleAndNotExecuted) {
   Device d;
   d.Hello();
   d.Send({{"cmd", "heartbeat"}, {"seq", 10}, {"sid", d.sid}});
-  const json r = d.Send({{"cmd", "move_steps"}, {"seq", 7}, {"sid", d.sid}, {"left", 100}, {"right", 100}});
+  const json r = d.Send({{"cmd", "move_steps"},
+                         {"seq", 7},
+                         {"sid", d.sid},
+                         {"left", 100},
+                         {"right", 100}});
   EXPECT_EQ(Code(r), "STALE_SEQUENCE");
   EXPECT_FALSE(d.cube->running());
 }
@@ -97,7 +110,11 @@ TEST(Session, ASeqBelowTheHighestThatWasNeverSentIsStaleAndNotExecuted) {
 TEST(Session, AWrongSidIsASessionMismatchAndNotExecuted) {
   Device d;
   d.Hello();
-  const json r = d.Send({{"cmd", "move_steps"}, {"seq", 2}, {"sid", d.sid + 1}, {"left", 100}, {"right", 100}});
+  const json r = d.Send({{"cmd", "move_steps"},
+                         {"seq", 2},
+                         {"sid", d.sid + 1},
+                         {"left", 100},
+                         {"right", 100}});
   EXPECT_FALSE(r["ok"]);
   EXPECT_EQ(Code(r), "SESSION_MISMATCH");
   EXPECT_EQ(r["seq"], 2);
@@ -107,7 +124,8 @@ TEST(Session, AWrongSidIsASessionMismatchAndNotExecuted) {
 TEST(Session, SeqWithoutSidIsRefused) {
   Device d;
   d.Hello();
-  const json r = d.Send({{"cmd", "move_steps"}, {"seq", 2}, {"left", 100}, {"right", 100}});
+  const json r = d.Send(
+      {{"cmd", "move_steps"}, {"seq", 2}, {"left", 100}, {"right", 100}});
   EXPECT_EQ(Code(r), "SESSION_MISMATCH");
   EXPECT_FALSE(d.cube->running());
 }
@@ -118,7 +136,8 @@ TEST(Session, ARestartedHostIsNotMistakenForARetry) {
   d.Call("move_steps", {{"left", 100}, {"right", 100}});  // seq 2
   d.RunUntilIdle();
   d.Hello();  // the host restarted: new session, seq starts again
-  const json r = d.Call("move_steps", {{"left", 100}, {"right", 100}});  // seq 2 again
+  const json r =
+      d.Call("move_steps", {{"left", 100}, {"right", 100}});  // seq 2 again
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["move_id"], 2) << "executed, not replayed";
   d.RunUntilIdle();
@@ -128,7 +147,8 @@ TEST(Session, ARestartedHostIsNotMistakenForARetry) {
 TEST(Session, EveryReplyEchoesSeqAndSid) {
   Device d;
   d.Hello();
-  for (const char* cmd : {"heartbeat", "get_status", "stop", "no_such_command"}) {
+  for (const char* cmd :
+       {"heartbeat", "get_status", "stop", "no_such_command"}) {
     const json r = d.Call(cmd);
     EXPECT_EQ(r["seq"], d.seq) << cmd;
     EXPECT_EQ(r["sid"], d.sid) << cmd;
@@ -138,12 +158,14 @@ TEST(Session, EveryReplyEchoesSeqAndSid) {
 
 TEST(Seed, CommandsWithoutSeqWorkAsTheSeedFirmwareDid) {
   Device d;
-  json r = d.Send({{"cmd", "move_steps"}, {"left", 500}, {"right", 500}, {"speed", 800}});
+  json r = d.Send(
+      {{"cmd", "move_steps"}, {"left", 500}, {"right", 500}, {"speed", 800}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_FALSE(r.contains("seq"));
   EXPECT_EQ(r["speed"], 800);
   d.RunUntilIdle();
-  r = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}, {"speed", 1024}});
+  r = d.Send(
+      {{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}, {"speed", 1024}});
   EXPECT_EQ(r["left_steps"], 2172);
   d.RunUntilIdle();
   r = d.Send({{"cmd", "rotate_deg"}, {"degrees", 90}, {"speed", 1024}});
@@ -154,7 +176,9 @@ TEST(Seed, CommandsWithoutSeqWorkAsTheSeedFirmwareDid) {
   d.RunUntilIdle();
   r = d.Send({{"cmd", "stop"}});
   EXPECT_TRUE(r["ok"]);
-  r = d.Send({{"cmd", "set_config"}, {"wheel_diameter_cm", 6.0}, {"wheel_base_cm", 10.0}});
+  r = d.Send({{"cmd", "set_config"},
+              {"wheel_diameter_cm", 6.0},
+              {"wheel_base_cm", 10.0}});
   EXPECT_TRUE(r["ok"]);
   r = d.Status();
   EXPECT_EQ(r["left_steps"], 500 + 2172 - 1706);
@@ -185,7 +209,8 @@ TEST(Heartbeat, ReportsUptimeAndState) {
 TEST(MoveSteps, ReplyCarriesThePlan) {
   Device d;
   d.Hello();
-  const json r = d.Call("move_steps", {{"left", 2172}, {"right", -1000}, {"speed", 1024}});
+  const json r =
+      d.Call("move_steps", {{"left", 2172}, {"right", -1000}, {"speed", 1024}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["move_id"], 1);
   EXPECT_EQ(r["left_steps"], 2172);
@@ -227,25 +252,29 @@ TEST(MoveSteps, MissingOrMistypedParametersAreInvalid) {
   EXPECT_EQ(r["error"]["message"], "\"left\" must be an integer");
   r = d.Send({{"cmd", "move_steps"}, {"left", 10.5}, {"right", 10}});
   EXPECT_EQ(Code(r), "INVALID_PARAMETER");
-  r = d.Send({{"cmd", "move_steps"}, {"left", 10}, {"right", 10}, {"speed", "fast"}});
+  r = d.Send(
+      {{"cmd", "move_steps"}, {"left", 10}, {"right", 10}, {"speed", "fast"}});
   EXPECT_EQ(r["error"]["message"], "\"speed\" must be a number");
   EXPECT_FALSE(d.cube->running());
 }
 
 TEST(MoveSteps, SpeedAboveTheMaximumIsClampedAndReported) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", 100}, {"right", 100}, {"speed", 5000}});
+  const json r = d.Send(
+      {{"cmd", "move_steps"}, {"left", 100}, {"right", 100}, {"speed", 5000}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["speed"], 1024);
   EXPECT_EQ(r["speed_clamped"], true);
-  const json slow = d.Send({{"cmd", "move_steps"}, {"left", 1}, {"right", 1}, {"speed", 0.25}});
+  const json slow = d.Send(
+      {{"cmd", "move_steps"}, {"left", 1}, {"right", 1}, {"speed", 0.25}});
   EXPECT_EQ(slow["speed"], 1);
   EXPECT_EQ(slow["speed_clamped"], true);
 }
 
 TEST(MoveSteps, SpeedOfZeroOrLessIsOutOfRange) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", 100}, {"right", 100}, {"speed", 0}});
+  const json r = d.Send(
+      {{"cmd", "move_steps"}, {"left", 100}, {"right", 100}, {"speed", 0}});
   EXPECT_EQ(Code(r), "RANGE_EXCEEDED");
   EXPECT_EQ(r["error"]["message"], "\"speed\" must be 1..1024 steps/s");
   EXPECT_EQ(r["error"]["details"]["field"], "speed");
@@ -255,7 +284,8 @@ TEST(MoveSteps, SpeedOfZeroOrLessIsOutOfRange) {
 
 TEST(MoveCm, TenCentimetresIs2172Steps) {
   Device d;
-  const json r = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
+  const json r =
+      d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
   EXPECT_EQ(r["left_steps"], 2172);
   EXPECT_EQ(r["right_steps"], 2172);
   EXPECT_NEAR(r["duration_ms"].get<double>(), 4121, 1);
@@ -263,10 +293,13 @@ TEST(MoveCm, TenCentimetresIs2172Steps) {
 
 TEST(MoveCm, RepeatedMovesDoNotDrift) {
   Device d;
-  d.Send({{"cmd", "set_config"}, {"max_speed_steps_per_s", 2048}, {"acceleration_steps_per_s2", 100000}});
+  d.Send({{"cmd", "set_config"},
+          {"max_speed_steps_per_s", 2048},
+          {"acceleration_steps_per_s2", 100000}});
   int64_t total = 0;
   for (int i = 0; i < 100; ++i) {
-    const json r = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
+    const json r =
+        d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
     total += r["left_steps"].get<int64_t>();
     d.RunUntilIdle();
   }
@@ -289,7 +322,8 @@ TEST(MoveMotion, AMotionWhileMovingReplacesIt) {
   d.Send({{"cmd", "move_steps"}, {"left", 2000}, {"right", 2000}});
   d.Run(1000);
   const int64_t at = d.cube->left_position();
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", -100}, {"right", -100}});
+  const json r =
+      d.Send({{"cmd", "move_steps"}, {"left", -100}, {"right", -100}});
   EXPECT_EQ(r["move_id"], 2);
   ASSERT_EQ(d.observer.finished.size(), 1u);
   EXPECT_EQ(d.observer.finished[0].outcome, MoveOutcome::kReplaced);
@@ -320,7 +354,10 @@ TEST(RotateDeg, NegativeDegreesTurnClockwise) {
 
 TEST(Drive, RunsForItsDurationThenStops) {
   Device d;
-  const json r = d.Send({{"cmd", "drive"}, {"left_sps", 400}, {"right_sps", 400}, {"duration_ms", 1500}});
+  const json r = d.Send({{"cmd", "drive"},
+                         {"left_sps", 400},
+                         {"right_sps", 400},
+                         {"duration_ms", 1500}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["running"], true);
   EXPECT_EQ(r["duration_ms"], 1500);
@@ -338,7 +375,10 @@ TEST(Drive, RunsForItsDurationThenStops) {
 
 TEST(Drive, ScalesBothSpeedsToKeepTheCurvature) {
   Device d;
-  const json r = d.Send({{"cmd", "drive"}, {"left_sps", 4096}, {"right_sps", -2048}, {"duration_ms", 100}});
+  const json r = d.Send({{"cmd", "drive"},
+                         {"left_sps", 4096},
+                         {"right_sps", -2048},
+                         {"duration_ms", 100}});
   EXPECT_EQ(r["left_sps"], 1024);
   EXPECT_EQ(r["right_sps"], -512);
   EXPECT_EQ(r["speed_clamped"], true);
@@ -367,7 +407,10 @@ TEST(Drive, ZeroSpeedsStopTheRobot) {
 
 TEST(Drive, DurationOutOfRangeIsRefused) {
   Device d;
-  const json r = d.Send({{"cmd", "drive"}, {"left_sps", 1}, {"right_sps", 1}, {"duration_ms", 0}});
+  const json r = d.Send({{"cmd", "drive"},
+                         {"left_sps", 1},
+                         {"right_sps", 1},
+                         {"duration_ms", 0}});
   EXPECT_EQ(Code(r), "RANGE_EXCEEDED");
   EXPECT_EQ(r["error"]["message"], "\"duration_ms\" must be 1..600000 ms");
 }
@@ -405,16 +448,18 @@ TEST(GetStatus, ReportsPoseStepsMotionAndSafety) {
   EXPECT_TRUE(s["safety"]["coils_on"]);
   d.RunUntilIdle();
   s = d.Call("get_status");
-  for (const char* k : {"x_cm", "y_cm", "heading_rad", "left_steps", "right_steps", "running",
-                        "move_id", "move_outcome", "move_left_steps", "move_right_steps",
-                        "left_sps", "right_sps", "uptime_ms", "safety", "led"}) {
+  for (const char* k :
+       {"x_cm", "y_cm", "heading_rad", "left_steps", "right_steps", "running",
+        "move_id", "move_outcome", "move_left_steps", "move_right_steps",
+        "left_sps", "right_sps", "uptime_ms", "safety", "led"}) {
     EXPECT_TRUE(s.contains(k)) << k;
   }
-  for (const char* k : {"estop", "estop_reason", "trips", "last_trip", "host_timeout_ms",
-                        "ms_since_host", "coils_on"}) {
+  for (const char* k : {"estop", "estop_reason", "trips", "last_trip",
+                        "host_timeout_ms", "ms_since_host", "coils_on"}) {
     EXPECT_TRUE(s["safety"].contains(k)) << k;
   }
-  EXPECT_NEAR(s["x_cm"].get<double>(), 1000 / ExactStepsForCm(1, Geometry()), 1e-6);
+  EXPECT_NEAR(s["x_cm"].get<double>(), 1000 / ExactStepsForCm(1, Geometry()),
+              1e-6);
   EXPECT_EQ(s["left_steps"], 1000);
   EXPECT_EQ(s["running"], false);
   EXPECT_EQ(s["left_sps"], 0);
@@ -424,49 +469,66 @@ TEST(GetStatus, ReportsPoseStepsMotionAndSafety) {
 
 TEST(SetConfig, AppliesAndReportsTheNewConfiguration) {
   Device d;
-  const json r = d.Send({{"cmd", "set_config"}, {"steps_per_revolution", 4076},
-                         {"max_speed_steps_per_s", 2048}, {"host_timeout_ms", 5000},
+  const json r = d.Send({{"cmd", "set_config"},
+                         {"steps_per_revolution", 4076},
+                         {"max_speed_steps_per_s", 2048},
+                         {"host_timeout_ms", 5000},
                          {"unknown_future_field", 1}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["config"]["steps_per_revolution"], 4076);
   EXPECT_EQ(r["config"]["max_speed_steps_per_s"], 2048);
   EXPECT_EQ(r["config"]["host_timeout_ms"], 5000);
-  const json m = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
+  const json m =
+      d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
   EXPECT_EQ(m["left_steps"], 2162) << "trunc(10 * 4076 / (pi * 6))";
   EXPECT_EQ(m["speed"], 2048);
 }
 
 TEST(SetConfig, AnInvalidFieldAppliesNothing) {
   Device d;
-  const json r = d.Send({{"cmd", "set_config"}, {"wheel_diameter_cm", 7.0}, {"max_speed_steps_per_s", 4096}});
+  const json r = d.Send({{"cmd", "set_config"},
+                         {"wheel_diameter_cm", 7.0},
+                         {"max_speed_steps_per_s", 4096}});
   EXPECT_EQ(Code(r), "RANGE_EXCEEDED");
-  EXPECT_EQ(r["error"]["message"], "\"max_speed_steps_per_s\" must be 1..2048 steps/s");
+  EXPECT_EQ(r["error"]["message"],
+            "\"max_speed_steps_per_s\" must be 1..2048 steps/s");
   EXPECT_EQ(d.cube->config().geometry.wheel_diameter_cm, 6.0);
-  EXPECT_EQ(Code(d.Send({{"cmd", "set_config"}, {"host_timeout_ms", 100}})), "RANGE_EXCEEDED");
-  EXPECT_EQ(Code(d.Send({{"cmd", "set_config"}, {"steps_per_revolution", 4096.5}})),
+  EXPECT_EQ(Code(d.Send({{"cmd", "set_config"}, {"host_timeout_ms", 100}})),
+            "RANGE_EXCEEDED");
+  EXPECT_EQ(
+      Code(d.Send({{"cmd", "set_config"}, {"steps_per_revolution", 4096.5}})),
+      "INVALID_PARAMETER");
+  EXPECT_EQ(Code(d.Send({{"cmd", "set_config"}, {"wheel_base_cm", "10"}})),
             "INVALID_PARAMETER");
-  EXPECT_EQ(Code(d.Send({{"cmd", "set_config"}, {"wheel_base_cm", "10"}})), "INVALID_PARAMETER");
 }
 
 TEST(SetConfig, ResetsTheDistanceAccumulators) {
   Device d;
-  d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});  // 2172.995 -> 2172
+  d.Send({{"cmd", "move_cm"},
+          {"left_cm", 10},
+          {"right_cm", 10}});  // 2172.995 -> 2172
   d.RunUntilIdle();
   d.Send({{"cmd", "set_config"}});
-  const json r = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
+  const json r =
+      d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
   EXPECT_EQ(r["left_steps"], 2172) << "not 2173: the fraction was forgotten";
 }
 
 TEST(SetLed, SetsColourAndPattern) {
   Device d;
-  json r = d.Send({{"cmd", "set_led"}, {"r", 0}, {"g", 128}, {"b", 255}, {"pattern", "blink"}});
+  json r = d.Send({{"cmd", "set_led"},
+                   {"r", 0},
+                   {"g", 128},
+                   {"b", 255},
+                   {"pattern", "blink"}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(r["led"]["pattern"], "blink");
   EXPECT_EQ(r["led"]["b"], 255);
   d.Run(100);
   EXPECT_EQ(d.led.rgb, (std::vector<uint8_t>{0, 128, 255}));
   d.Run(500);
-  EXPECT_EQ(d.led.rgb, (std::vector<uint8_t>{0, 0, 0})) << "blink: off half the second";
+  EXPECT_EQ(d.led.rgb, (std::vector<uint8_t>{0, 0, 0}))
+      << "blink: off half the second";
   r = d.Send({{"cmd", "set_led"}, {"pattern", "off"}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_EQ(d.Status()["led"]["pattern"], "off");
@@ -474,9 +536,11 @@ TEST(SetLed, SetsColourAndPattern) {
 
 TEST(SetLed, RejectsUnknownPatternsAndOutOfRangeColours) {
   Device d;
-  json r = d.Send({{"cmd", "set_led"}, {"r", 1}, {"g", 1}, {"b", 1}, {"pattern", "disco"}});
+  json r = d.Send(
+      {{"cmd", "set_led"}, {"r", 1}, {"g", 1}, {"b", 1}, {"pattern", "disco"}});
   EXPECT_EQ(Code(r), "INVALID_PARAMETER");
-  EXPECT_EQ(r["error"]["message"], "\"pattern\" must be one of solid, blink, pulse, off");
+  EXPECT_EQ(r["error"]["message"],
+            "\"pattern\" must be one of solid, blink, pulse, off");
   r = d.Send({{"cmd", "set_led"}, {"r", 256}, {"g", 1}, {"b", 1}});
   EXPECT_EQ(Code(r), "RANGE_EXCEEDED");
   EXPECT_EQ(r["error"]["message"], "\"r\" must be 0..255");
@@ -487,9 +551,11 @@ TEST(SetLed, RejectsUnknownPatternsAndOutOfRangeColours) {
 TEST(Errors, GarbageTruncatedAndOversizedInputGetMalformedReplies) {
   Device d;
   for (const std::string bad :
-       {std::string("garbage"), std::string("{\"cmd\":\"move_steps\",\"left\":1"),
-        std::string(""), std::string("[1,2,3]"), std::string("{\"cmd\":\"stop\"} trailing"),
-        std::string("{\"cmd\":\"stop\",\"cmd\":\"stop\"}"), std::string("\xff\xfe\x00\x01", 4)}) {
+       {std::string("garbage"),
+        std::string("{\"cmd\":\"move_steps\",\"left\":1"), std::string(""),
+        std::string("[1,2,3]"), std::string("{\"cmd\":\"stop\"} trailing"),
+        std::string("{\"cmd\":\"stop\",\"cmd\":\"stop\"}"),
+        std::string("\xff\xfe\x00\x01", 4)}) {
     const json r = json::parse(d.Raw(bad));
     EXPECT_EQ(Code(r), "MALFORMED") << bad;
     EXPECT_FALSE(r["ok"]);
@@ -498,7 +564,8 @@ TEST(Errors, GarbageTruncatedAndOversizedInputGetMalformedReplies) {
   const json big = json::parse(d.Raw(std::string(1500, '{')));
   EXPECT_EQ(Code(big), "MALFORMED");
   EXPECT_EQ(big["error"]["details"]["length"], 1500);
-  EXPECT_TRUE(d.Send({{"cmd", "heartbeat"}})["ok"]) << "and the device keeps answering";
+  EXPECT_TRUE(d.Send({{"cmd", "heartbeat"}})["ok"])
+      << "and the device keeps answering";
 }
 
 TEST(Errors, UnknownCommandsAreNamed) {
@@ -512,7 +579,8 @@ TEST(Errors, UnknownCommandsAreNamed) {
 TEST(Errors, MissingOrMistypedCmdIsInvalid) {
   Device d;
   EXPECT_EQ(d.Send({{"left", 1}})["error"]["message"], "\"cmd\" is required");
-  EXPECT_EQ(d.Send({{"cmd", 5}})["error"]["message"], "\"cmd\" must be a string");
+  EXPECT_EQ(d.Send({{"cmd", 5}})["error"]["message"],
+            "\"cmd\" must be a string");
   const json r = d.Send({{"cmd", "stop"}, {"seq", -1}});
   EXPECT_EQ(Code(r), "INVALID_PARAMETER");
   EXPECT_FALSE(r.contains("seq"));
@@ -520,8 +588,12 @@ TEST(Errors, MissingOrMistypedCmdIsInvalid) {
 
 TEST(Errors, UnknownFieldsAreIgnored) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", 10}, {"right", 10},
-                         {"note", "hi"}, {"meta", {{"a", {1, 2, 3}}}}, {"flag", nullptr}});
+  const json r = d.Send({{"cmd", "move_steps"},
+                         {"left", 10},
+                         {"right", 10},
+                         {"note", "hi"},
+                         {"meta", {{"a", {1, 2, 3}}}},
+                         {"flag", nullptr}});
   EXPECT_TRUE(r["ok"]);
 }
 
@@ -537,13 +609,16 @@ TEST(Errors, ErrorRepliesHaveCodeMessageAndDetails) {
 TEST(Errors, RandomBytesAlwaysGetOneValidJsonReply) {
   Device d;
   std::mt19937 rng(42);
-  const std::string pieces[] = {"{", "}", "\"cmd\"", ":", ",", "\"move_steps\"", "\"left\"",
-                                "1e999", "-0", "[", "]", "\"seq\"", "4294967296", "null",
-                                "\"\\u0000\"", "true", " ", "\"sid\"", "#", "\xff"};
+  const std::string pieces[] = {
+      "{",          "}",     "\"cmd\"",     ":",    ",", "\"move_steps\"",
+      "\"left\"",   "1e999", "-0",          "[",    "]", "\"seq\"",
+      "4294967296", "null",  "\"\\u0000\"", "true", " ", "\"sid\"",
+      "#",          "\xff"};
   for (int i = 0; i < 5000; ++i) {
     std::string msg;
     const int n = static_cast<int>(rng() % 24);
-    for (int k = 0; k < n; ++k) msg += pieces[rng() % (sizeof(pieces) / sizeof(pieces[0]))];
+    for (int k = 0; k < n; ++k)
+      msg += pieces[rng() % (sizeof(pieces) / sizeof(pieces[0]))];
     const std::string raw = d.Raw(msg);
     ASSERT_FALSE(raw.empty()) << msg;
     const json r = json::parse(raw, nullptr, false);

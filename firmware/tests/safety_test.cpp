@@ -28,20 +28,26 @@ TEST(StepLimit, MoreThan40960StepsIsRefusedAndTripsTheEstop) {
 
 TEST(StepLimit, ExactlyTheLimitIsAllowed) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", -40960}, {"right", 40960}});
+  const json r =
+      d.Send({{"cmd", "move_steps"}, {"left", -40960}, {"right", 40960}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_FALSE(d.cube->estopped());
 }
 
 TEST(StepLimit, AppliesToDistancesAndTurnsToo) {
   Device a;
-  EXPECT_EQ(Code(a.Send({{"cmd", "move_cm"}, {"left_cm", 0}, {"right_cm", 200}})), "RANGE_EXCEEDED");
+  EXPECT_EQ(
+      Code(a.Send({{"cmd", "move_cm"}, {"left_cm", 0}, {"right_cm", 200}})),
+      "RANGE_EXCEEDED");
   EXPECT_TRUE(a.cube->estopped());
   Device b;
-  EXPECT_EQ(Code(b.Send({{"cmd", "rotate_deg"}, {"degrees", 3600}})), "RANGE_EXCEEDED");
+  EXPECT_EQ(Code(b.Send({{"cmd", "rotate_deg"}, {"degrees", 3600}})),
+            "RANGE_EXCEEDED");
   EXPECT_TRUE(b.cube->estopped());
   Device c;
-  EXPECT_EQ(Code(c.Send({{"cmd", "move_cm"}, {"left_cm", 1e300}, {"right_cm", 0}})), "RANGE_EXCEEDED");
+  EXPECT_EQ(
+      Code(c.Send({{"cmd", "move_cm"}, {"left_cm", 1e300}, {"right_cm", 0}})),
+      "RANGE_EXCEEDED");
   EXPECT_TRUE(c.cube->estopped());
 }
 
@@ -49,7 +55,8 @@ TEST(StepLimit, ARefusedDistanceDoesNotShiftTheAccumulator) {
   Device d;
   d.Send({{"cmd", "move_cm"}, {"left_cm", 500}, {"right_cm", 500}});
   d.Send({{"cmd", "reset_estop"}});
-  const json r = d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
+  const json r =
+      d.Send({{"cmd", "move_cm"}, {"left_cm", 10}, {"right_cm", 10}});
   EXPECT_EQ(r["left_steps"], 2172);
 }
 
@@ -75,19 +82,26 @@ TEST(Estop, StopsMotionAtOnceAndLatches) {
 TEST(Estop, IsNotClearedByAnyOtherPacket) {
   Device d;
   d.Send({{"cmd", "estop"}});
-  for (const json& req : {json{{"cmd", "hello"}, {"seq", 1}}, json{{"cmd", "stop"}},
-                          json{{"cmd", "heartbeat"}}, json{{"cmd", "get_status"}},
-                          json{{"cmd", "set_config"}, {"max_speed_steps_per_s", 100}},
-                          json{{"cmd", "set_led"}, {"r", 1}, {"g", 2}, {"b", 3}},
-                          json{{"cmd", "estop"}}, json{{"cmd", "nonsense"}}}) {
+  for (const json& req :
+       {json{{"cmd", "hello"}, {"seq", 1}}, json{{"cmd", "stop"}},
+        json{{"cmd", "heartbeat"}}, json{{"cmd", "get_status"}},
+        json{{"cmd", "set_config"}, {"max_speed_steps_per_s", 100}},
+        json{{"cmd", "set_led"}, {"r", 1}, {"g", 2}, {"b", 3}},
+        json{{"cmd", "estop"}}, json{{"cmd", "nonsense"}}}) {
     d.Send(req);
     d.Raw("garbage");
     d.Run(10);
     EXPECT_TRUE(d.cube->estopped()) << req.dump();
   }
   for (const char* cmd : {"move_steps", "move_cm", "rotate_deg", "drive"}) {
-    const json r = d.Send({{"cmd", cmd}, {"left", 1}, {"right", 1}, {"left_cm", 1},
-                           {"right_cm", 1}, {"degrees", 1}, {"left_sps", 1}, {"right_sps", 1}});
+    const json r = d.Send({{"cmd", cmd},
+                           {"left", 1},
+                           {"right", 1},
+                           {"left_cm", 1},
+                           {"right_cm", 1},
+                           {"degrees", 1},
+                           {"left_sps", 1},
+                           {"right_sps", 1}});
     EXPECT_EQ(Code(r), "EMERGENCY_STOPPED") << cmd;
   }
 }
@@ -109,7 +123,8 @@ TEST(Estop, ResetIsAcceptedFromAHostWithAnOldSession) {
   const uint32_t old_sid = d.sid;
   d.Call("estop");
   d.Hello();  // another host took over
-  const json r = d.Send({{"cmd", "reset_estop"}, {"seq", 99}, {"sid", old_sid}});
+  const json r =
+      d.Send({{"cmd", "reset_estop"}, {"seq", 99}, {"sid", old_sid}});
   EXPECT_TRUE(r["ok"]);
   EXPECT_FALSE(d.cube->estopped());
 }
@@ -150,12 +165,14 @@ TEST(HostTimeout, StopsMotionWhenTheHostGoesQuietAndRecordsATrip) {
   EXPECT_EQ(s["safety"]["last_trip"]["reason"], "host_timeout");
   EXPECT_EQ(s["safety"]["estop"], false) << "not latched";
   EXPECT_EQ(d.observer.trips, (std::vector<std::string>{"host_timeout"}));
-  EXPECT_TRUE(d.Send({{"cmd", "move_steps"}, {"left", 10}, {"right", 10}})["ok"]);
+  EXPECT_TRUE(
+      d.Send({{"cmd", "move_steps"}, {"left", 10}, {"right", 10}})["ok"]);
 }
 
 TEST(HostTimeout, HeartbeatsKeepAMoveLongerThanTheTimeoutRunning) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", 8000}, {"right", 8000}});
+  const json r =
+      d.Send({{"cmd", "move_steps"}, {"left", 8000}, {"right", 8000}});
   EXPECT_GT(r["duration_ms"].get<int>(), 5000);
   d.RunUntilIdle(20000, true);
   EXPECT_EQ(d.cube->left_position(), 8000);
@@ -201,7 +218,8 @@ TEST(Trips, EveryTripIsCountedWithItsReason) {
   d.Send({{"cmd", "drive"}, {"left_sps", 10}, {"right_sps", 10}});
   d.Run(2100, false);
   EXPECT_EQ(d.observer.trips,
-            (std::vector<std::string>{"estop_command", "step_limit", "host_timeout"}));
+            (std::vector<std::string>{"estop_command", "step_limit",
+                                      "host_timeout"}));
   EXPECT_EQ(d.Status()["safety"]["trips"], 3);
 }
 
@@ -211,7 +229,8 @@ TEST(Estop, ShowsAsAFastRedBlinkOnTheLed) {
   d.Send({{"cmd", "estop"}});
   d.Run(100);
   EXPECT_EQ(d.led.rgb, (std::vector<uint8_t>{255, 0, 0}));
-  EXPECT_EQ(d.Status()["led"]["g"], 255) << "the commanded colour is still reported";
+  EXPECT_EQ(d.Status()["led"]["g"], 255)
+      << "the commanded colour is still reported";
 }
 
 }  // namespace

@@ -16,10 +16,10 @@ json Kinematics() {
   return text.empty() ? json() : json::parse(text);
 }
 
-#define REQUIRE_KINEMATICS(v)                                               \
-  const json v = Kinematics();                                              \
-  if (v.is_null()) {                                                        \
-    GTEST_SKIP() << "tests/vectors/kinematics.json not written yet";        \
+#define REQUIRE_KINEMATICS(v)                                        \
+  const json v = Kinematics();                                       \
+  if (v.is_null()) {                                                 \
+    GTEST_SKIP() << "tests/vectors/kinematics.json not written yet"; \
   }
 
 Geometry RobotOf(const json& v) {
@@ -34,7 +34,8 @@ TEST(KinematicsVectors, DistanceToSteps) {
   REQUIRE_KINEMATICS(v);
   const Geometry g = RobotOf(v);
   for (const json& c : v["distance_to_steps"]) {
-    EXPECT_EQ(DistanceToSteps(c["distance_cm"].get<double>(), g), c["steps"].get<int64_t>())
+    EXPECT_EQ(DistanceToSteps(c["distance_cm"].get<double>(), g),
+              c["steps"].get<int64_t>())
         << c.dump();
   }
 }
@@ -44,8 +45,10 @@ TEST(KinematicsVectors, RotationToSteps) {
   const Geometry g = RobotOf(v);
   for (const json& c : v["rotation_to_steps"]) {
     const double arc = RotationArcCm(c["degrees"].get<double>(), g);
-    EXPECT_EQ(DistanceToSteps(-arc, g), c["left_steps"].get<int64_t>()) << c.dump();
-    EXPECT_EQ(DistanceToSteps(arc, g), c["right_steps"].get<int64_t>()) << c.dump();
+    EXPECT_EQ(DistanceToSteps(-arc, g), c["left_steps"].get<int64_t>())
+        << c.dump();
+    EXPECT_EQ(DistanceToSteps(arc, g), c["right_steps"].get<int64_t>())
+        << c.dump();
   }
 }
 
@@ -57,7 +60,8 @@ TEST(KinematicsVectors, Accumulator) {
     const json& d = c["distances_cm"];
     ASSERT_EQ(d.size(), c["deltas"].size());
     for (size_t i = 0; i < d.size(); ++i) {
-      ASSERT_EQ(acc.Add(d[i].get<double>(), g), c["deltas"][i].get<int64_t>()) << i;
+      ASSERT_EQ(acc.Add(d[i].get<double>(), g), c["deltas"][i].get<int64_t>())
+          << i;
     }
   }
 }
@@ -69,7 +73,8 @@ TEST(KinematicsVectors, TrapezoidalProfileStepTimes) {
     p.steps = c["steps"].get<int64_t>();
     p.speed = c["max_speed_steps_per_s"].get<double>();
     p.accel = c["acceleration_steps_per_s2"].get<double>();
-    EXPECT_EQ(ProfileDurationUs(p), c["duration_us"].get<int64_t>()) << c["steps"];
+    EXPECT_EQ(ProfileDurationUs(p), c["duration_us"].get<int64_t>())
+        << c["steps"];
     for (const json& s : c["samples"]) {
       EXPECT_EQ(StepTimeUs(p, s["k"].get<int64_t>()), s["t_us"].get<int64_t>())
           << "steps " << p.steps << " k " << s["k"];
@@ -85,7 +90,8 @@ TEST(KinematicsVectors, VelocityProfileStepTimes) {
     p.speed = c["speed_steps_per_s"].get<double>();
     p.accel = c["acceleration_steps_per_s2"].get<double>();
     for (const json& s : c["samples"]) {
-      EXPECT_EQ(StepTimeUs(p, s["k"].get<int64_t>()), s["t_us"].get<int64_t>()) << s.dump();
+      EXPECT_EQ(StepTimeUs(p, s["k"].get<int64_t>()), s["t_us"].get<int64_t>())
+          << s.dump();
     }
   }
 }
@@ -96,7 +102,9 @@ TEST(KinematicsVectors, SlaveSteps) {
     const int64_t n = c["master_steps"].get<int64_t>();
     const int64_t m = c["slave_steps"].get<int64_t>();
     for (const json& s : c["samples"]) {
-      EXPECT_EQ(SlaveSteps(s["k"].get<int64_t>(), m, n), s["slave"].get<int64_t>()) << s.dump();
+      EXPECT_EQ(SlaveSteps(s["k"].get<int64_t>(), m, n),
+                s["slave"].get<int64_t>())
+          << s.dump();
     }
   }
 }
@@ -111,7 +119,8 @@ TEST(KinematicsVectors, Odometry) {
     }
     EXPECT_NEAR(p.x_cm, c["x_cm"].get<double>(), 1e-9) << c.dump();
     EXPECT_NEAR(p.y_cm, c["y_cm"].get<double>(), 1e-9) << c.dump();
-    EXPECT_NEAR(p.heading_rad, c["heading_rad"].get<double>(), 1e-9) << c.dump();
+    EXPECT_NEAR(p.heading_rad, c["heading_rad"].get<double>(), 1e-9)
+        << c.dump();
   }
 }
 
@@ -120,10 +129,14 @@ TEST(KinematicsVectors, RobotMatchesTheFirmwareDefaults) {
   const CubeConfig defaults;
   EXPECT_EQ(v["robot"]["steps_per_revolution"].get<double>(),
             defaults.geometry.steps_per_revolution);
-  EXPECT_EQ(v["robot"]["wheel_diameter_cm"].get<double>(), defaults.geometry.wheel_diameter_cm);
-  EXPECT_EQ(v["robot"]["wheel_base_cm"].get<double>(), defaults.geometry.wheel_base_cm);
-  EXPECT_EQ(v["robot"]["max_speed_steps_per_s"].get<int64_t>(), defaults.max_speed_sps);
-  EXPECT_EQ(v["robot"]["acceleration_steps_per_s2"].get<int64_t>(), defaults.accel_sps2);
+  EXPECT_EQ(v["robot"]["wheel_diameter_cm"].get<double>(),
+            defaults.geometry.wheel_diameter_cm);
+  EXPECT_EQ(v["robot"]["wheel_base_cm"].get<double>(),
+            defaults.geometry.wheel_base_cm);
+  EXPECT_EQ(v["robot"]["max_speed_steps_per_s"].get<int64_t>(),
+            defaults.max_speed_sps);
+  EXPECT_EQ(v["robot"]["acceleration_steps_per_s2"].get<int64_t>(),
+            defaults.accel_sps2);
 }
 
 // protocol-messages.json ---------------------------------------------------
@@ -132,7 +145,8 @@ json Substitute(const json& j, uint32_t sid) {
   if (j.is_string() && j.get<std::string>() == "$sid") return sid;
   if (j.is_object() || j.is_array()) {
     json out = j;
-    for (auto it = out.begin(); it != out.end(); ++it) *it = Substitute(*it, sid);
+    for (auto it = out.begin(); it != out.end(); ++it)
+      *it = Substitute(*it, sid);
     return out;
   }
   return j;
@@ -142,7 +156,8 @@ void ExpectSubset(const json& want, const json& got, const std::string& where) {
   if (want.is_object()) {
     ASSERT_TRUE(got.is_object()) << where << ": " << got.dump();
     for (auto it = want.begin(); it != want.end(); ++it) {
-      ASSERT_TRUE(got.contains(it.key())) << where << "." << it.key() << " missing in " << got.dump();
+      ASSERT_TRUE(got.contains(it.key()))
+          << where << "." << it.key() << " missing in " << got.dump();
       ExpectSubset(it.value(), got[it.key()], where + "." + it.key());
     }
     return;
@@ -156,7 +171,8 @@ void ExpectSubset(const json& want, const json& got, const std::string& where) {
 
 TEST(ProtocolVectors, EveryGoldenExchangeBehavesAsRecorded) {
   const std::string text = ReadVectorFile("protocol-messages.json");
-  ASSERT_FALSE(text.empty()) << "tests/vectors/protocol-messages.json is missing";
+  ASSERT_FALSE(text.empty())
+      << "tests/vectors/protocol-messages.json is missing";
   const json file = json::parse(text);
   int steps = 0;
   for (const json& c : file["cases"]) {
@@ -164,18 +180,22 @@ TEST(ProtocolVectors, EveryGoldenExchangeBehavesAsRecorded) {
     uint32_t sid = 0;
     std::string previous;
     for (const json& s : c["steps"]) {
-      const std::string where = c["name"].get<std::string>() + " step " + std::to_string(steps);
+      const std::string where =
+          c["name"].get<std::string>() + " step " + std::to_string(steps);
       if (s.contains("advance_ms")) d.Run(s["advance_ms"].get<uint64_t>());
       const std::string raw = s.contains("send_raw")
                                   ? d.Raw(s["send_raw"].get<std::string>())
                                   : d.Raw(Substitute(s["send"], sid).dump());
       const json reply = json::parse(raw);
-      if (reply.contains("cmd") && reply["cmd"] == "hello" && reply.value("ok", false)) {
+      if (reply.contains("cmd") && reply["cmd"] == "hello" &&
+          reply.value("ok", false)) {
         sid = reply["sid"].get<uint32_t>();
       }
-      if (s.contains("expect")) ExpectSubset(Substitute(s["expect"], sid), reply, where);
+      if (s.contains("expect"))
+        ExpectSubset(Substitute(s["expect"], sid), reply, where);
       for (const json& k : s.value("expect_absent", json::array())) {
-        EXPECT_FALSE(reply.contains(k.get<std::string>())) << where << " has " << k;
+        EXPECT_FALSE(reply.contains(k.get<std::string>()))
+            << where << " has " << k;
       }
       if (s.value("same_as_previous", false)) EXPECT_EQ(raw, previous) << where;
       previous = raw;

@@ -375,9 +375,7 @@ bool Cube::SetKey(const uint8_t* key, size_t len) {
   return true;
 }
 
-uint64_t Cube::uptime_ms() const {
-  return (clock_.NowUs() - boot_us_) / 1000;
-}
+uint64_t Cube::uptime_ms() const { return (clock_.NowUs() - boot_us_) / 1000; }
 
 void Cube::Tick() { executor_.Tick(clock_.NowUs()); }
 
@@ -449,8 +447,7 @@ void Cube::RecordTrip(const char* reason, const char* detail) {
   if (observer_ != nullptr) observer_->OnTrip(last_trip_);
 }
 
-void Cube::LatchEstop(const char* reason, const char* detail,
-                      MoveOutcome why) {
+void Cube::LatchEstop(const char* reason, const char* detail, MoveOutcome why) {
   motion_.Stop(why, clock_.NowUs());
   IntegratePending();
   estop_ = true;
@@ -477,7 +474,8 @@ bool Cube::VerifyMac(const uint8_t* json, size_t len, const uint8_t* hex) {
   ToHex(digest, kMacHexLen / 2, want);
   uint8_t diff = 0;
   for (size_t i = 0; i < kMacHexLen; ++i) {
-    diff = static_cast<uint8_t>(diff | (static_cast<uint8_t>(want[i]) ^ hex[i]));
+    diff =
+        static_cast<uint8_t>(diff | (static_cast<uint8_t>(want[i]) ^ hex[i]));
   }
   return diff == 0;
 }
@@ -500,9 +498,9 @@ size_t Cube::Finish(Reply& reply, uint8_t* out, size_t cap) {
 
 bool Cube::IsCommand(const char* cmd) const {
   static const char* const kCommands[] = {
-      "hello",     "heartbeat", "move_steps", "move_cm", "rotate_deg",
-      "drive",     "stop",      "get_status", "set_config", "set_led",
-      "estop",     "reset_estop"};
+      "hello",      "heartbeat", "move_steps", "move_cm",
+      "rotate_deg", "drive",     "stop",       "get_status",
+      "set_config", "set_led",   "estop",      "reset_estop"};
   for (const char* c : kCommands) {
     if (Equals(c, cmd)) return true;
   }
@@ -514,16 +512,17 @@ size_t Cube::HandleOversize(size_t announced_len, uint8_t* out, size_t cap) {
   const size_t json_cap = (cap < kMaxMessage ? cap : kMaxMessage) - mac_room;
   Reply reply(reinterpret_cast<char*>(out), json_cap);
   Text t;
-  t.S("message is ").I(static_cast<int64_t>(announced_len))
-      .S(" bytes; the limit is ").I(static_cast<int64_t>(kMaxMessage));
+  t.S("message is ")
+      .I(static_cast<int64_t>(announced_len))
+      .S(" bytes; the limit is ")
+      .I(static_cast<int64_t>(kMaxMessage));
   reply.Fail(kMalformed, t.c_str());
   reply.DetailInt("length", static_cast<int64_t>(announced_len));
   reply.DetailInt("max", static_cast<int64_t>(kMaxMessage));
   return Finish(reply, out, cap);
 }
 
-size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
-                    size_t cap) {
+size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
   const uint64_t now = clock_.NowUs();
   if (len > kMaxMessage) return HandleOversize(len, out, cap);
   const size_t mac_room = key_len_ > 0 ? 1 + kMacHexLen : 0;
@@ -537,7 +536,8 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
   const uint8_t* mac_hex = nullptr;
   if (len >= 1 + kMacHexLen && req[len - 1 - kMacHexLen] == '#') {
     bool hex = true;
-    for (size_t i = len - kMacHexLen; i < len; ++i) hex = hex && IsLowerHex(req[i]);
+    for (size_t i = len - kMacHexLen; i < len; ++i)
+      hex = hex && IsLowerHex(req[i]);
     if (hex) {
       mac_hex = req + len - kMacHexLen;
       json_len = len - 1 - kMacHexLen;
@@ -576,7 +576,8 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
     }
   }
 
-  if (key_len_ > 0 && (mac_hex == nullptr || !VerifyMac(req, json_len, mac_hex))) {
+  if (key_len_ > 0 &&
+      (mac_hex == nullptr || !VerifyMac(req, json_len, mac_hex))) {
     reply.Fail(kAuthFailed, mac_hex == nullptr
                                 ? "message has no MAC; a key is configured"
                                 : "MAC does not match the message");
@@ -640,13 +641,12 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
     return n;
   }
 
-  const bool safety_cmd =
-      Equals(cmd, "stop") || Equals(cmd, "estop") ||
-      (Equals(cmd, "reset_estop") && key_len_ == 0);
+  const bool safety_cmd = Equals(cmd, "stop") || Equals(cmd, "estop") ||
+                          (Equals(cmd, "reset_estop") && key_len_ == 0);
 
   if (reply.has_seq || reply.has_sid) {
-    const bool in_session = reply.has_seq && reply.has_sid && session_open_ &&
-                            reply.sid == sid_;
+    const bool in_session =
+        reply.has_seq && reply.has_sid && session_open_ && reply.sid == sid_;
     if (!in_session) {
       if (safety_cmd) {
         last_host_us_ = now;
@@ -680,7 +680,10 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out,
     }
     if (reply.seq <= last_seq_) {
       Text t;
-      t.S("\"seq\" ").I(reply.seq).S(" is not above ").I(last_seq_)
+      t.S("\"seq\" ")
+          .I(reply.seq)
+          .S(" is not above ")
+          .I(last_seq_)
           .S(" and its reply is no longer remembered");
       reply.Fail(kStaleSequence, t.c_str());
       reply.DetailInt("seq", reply.seq);
@@ -824,7 +827,8 @@ void Cube::CmdHeartbeat(Reply& r) {
 bool Cube::CheckNotEstopped(Reply& r) {
   if (!estop_) return true;
   Text t;
-  t.S("emergency stop is latched (").S(estop_reason_)
+  t.S("emergency stop is latched (")
+      .S(estop_reason_)
       .S("); send reset_estop first");
   r.Fail(kEmergencyStopped, t.c_str());
   r.DetailStr("reason", estop_reason_);
@@ -858,8 +862,12 @@ bool Cube::ReadSpeed(Reply& r, double* speed, bool* clamped) {
 
 void Cube::TripStepLimit(Reply& r, const char* field, int64_t steps) {
   Text t;
-  t.Q(field).S(" gives ").I(steps).S(" steps; the limit is ")
-      .I(kMaxStepsPerCommand).S(" steps per command (emergency stop latched)");
+  t.Q(field)
+      .S(" gives ")
+      .I(steps)
+      .S(" steps; the limit is ")
+      .I(kMaxStepsPerCommand)
+      .S(" steps per command (emergency stop latched)");
   r.Fail(kRangeExceeded, t.c_str());
   r.DetailStr("field", field);
   r.DetailInt("min", -kMaxStepsPerCommand);
@@ -992,12 +1000,13 @@ void Cube::CmdDrive(Reply& r) {
   int64_t l = 0;
   int64_t rr = 0;
   int64_t dur = 0;
-  if (!Required(r, GetInt(r, "left_sps", -2147483647, 2147483647, "steps/s", &l),
+  if (!Required(r,
+                GetInt(r, "left_sps", -2147483647, 2147483647, "steps/s", &l),
                 "left_sps")) {
     return;
   }
-  if (!Required(r, GetInt(r, "right_sps", -2147483647, 2147483647, "steps/s",
-                          &rr),
+  if (!Required(r,
+                GetInt(r, "right_sps", -2147483647, 2147483647, "steps/s", &rr),
                 "right_sps")) {
     return;
   }
@@ -1145,7 +1154,8 @@ void Cube::CmdSetConfig(Reply& r) {
   if (g == Got::kOk) next.geometry.wheel_base_cm = d;
   g = GetInt(r, "steps_per_revolution", 100, 100000, "steps", &i);
   if (g == Got::kError) return;
-  if (g == Got::kOk) next.geometry.steps_per_revolution = static_cast<double>(i);
+  if (g == Got::kOk)
+    next.geometry.steps_per_revolution = static_cast<double>(i);
   g = GetInt(r, "max_speed_steps_per_s", 1, 2048, "steps/s", &i);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.max_speed_sps = i;

@@ -8,9 +8,8 @@ uint16_t Crc16CcittFalse(const uint8_t* data, size_t len, uint16_t crc) {
   for (size_t i = 0; i < len; ++i) {
     crc = static_cast<uint16_t>(crc ^ (static_cast<uint16_t>(data[i]) << 8));
     for (int b = 0; b < 8; ++b) {
-      crc = (crc & 0x8000u) != 0
-                ? static_cast<uint16_t>((crc << 1) ^ 0x1021u)
-                : static_cast<uint16_t>(crc << 1);
+      crc = (crc & 0x8000u) != 0 ? static_cast<uint16_t>((crc << 1) ^ 0x1021u)
+                                 : static_cast<uint16_t>(crc << 1);
     }
   }
   return crc;
@@ -171,8 +170,8 @@ void SerialLink::OnFrame(const Frame& frame) {
     return;
   }
   uint8_t ack[kFrameHeaderSize + kFrameCrcSize];
-  const size_t n = EncodeFrame(kFrameAck, frame.seq, nullptr, 0, ack,
-                               sizeof(ack));
+  const size_t n =
+      EncodeFrame(kFrameAck, frame.seq, nullptr, 0, ack, sizeof(ack));
   out_.Write(ack, n);
   if (have_last_rx_ && frame.seq == last_rx_seq_) {
     ++duplicates_;
@@ -191,8 +190,8 @@ bool SerialLink::Send(const uint8_t* payload, size_t len, uint64_t now_ms) {
   if (len > kFrameMaxPayload || count_ >= kQueue) return false;
   Outgoing& o = queue_[(head_ + count_) % kQueue];
   o.seq = next_seq_++;
-  o.size = EncodeFrame(kFrameData, o.seq, payload, len, o.bytes,
-                       sizeof(o.bytes));
+  o.size =
+      EncodeFrame(kFrameData, o.seq, payload, len, o.bytes, sizeof(o.bytes));
   ++count_;
   if (!in_flight_) Transmit(now_ms);
   return true;

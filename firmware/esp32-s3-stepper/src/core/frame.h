@@ -28,8 +28,8 @@ enum class FrameError : uint8_t {
   kIncomplete,  // more bytes are needed
   kBadSync,
   kBadType,
-  kBadLength,   // len_inv mismatch, or an ACK with a payload
-  kOversize,    // len > 1024
+  kBadLength,  // len_inv mismatch, or an ACK with a payload
+  kOversize,   // len > 1024
   kBadCrc,
 };
 

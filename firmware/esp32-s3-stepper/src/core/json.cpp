@@ -173,8 +173,8 @@ NumScan ScanNumber(const char* s, size_t len, size_t* used, NumberValue* out) {
     }
     if (exact && whole <= static_cast<uint64_t>(INT64_MAX)) {
       out->is_integer = true;
-      out->integer = neg ? -static_cast<int64_t>(whole)
-                         : static_cast<int64_t>(whole);
+      out->integer =
+          neg ? -static_cast<int64_t>(whole) : static_cast<int64_t>(whole);
     }
   }
   return NumScan::kOk;

@@ -39,8 +39,8 @@ void Motion::Sync() {
   const int32_t l = exec_.left_position();
   const int32_t r = exec_.right_position();
   // Differences of wrapping 32-bit counters, read back as signed.
-  const int32_t dl = static_cast<int32_t>(static_cast<uint32_t>(l) -
-                                          static_cast<uint32_t>(last_raw_left_));
+  const int32_t dl = static_cast<int32_t>(
+      static_cast<uint32_t>(l) - static_cast<uint32_t>(last_raw_left_));
   const int32_t dr = static_cast<int32_t>(
       static_cast<uint32_t>(r) - static_cast<uint32_t>(last_raw_right_));
   last_raw_left_ = l;
@@ -195,8 +195,7 @@ void Motion::Update(uint64_t now_us) {
   }
 }
 
-void Motion::CurrentSpeeds(uint64_t now_us, double* left,
-                           double* right) const {
+void Motion::CurrentSpeeds(uint64_t now_us, double* left, double* right) const {
   *left = 0.0;
   *right = 0.0;
   if (!running_ || now_us < start_us_) return;
@@ -207,8 +206,7 @@ void Motion::CurrentSpeeds(uint64_t now_us, double* left,
     vs = vm_ == 0 ? 0.0
                   : vm * static_cast<double>(vs_) / static_cast<double>(vm_);
   } else {
-    vs = n_ == 0 ? 0.0
-                 : vm * static_cast<double>(m_) / static_cast<double>(n_);
+    vs = n_ == 0 ? 0.0 : vm * static_cast<double>(m_) / static_cast<double>(n_);
   }
   const double master = vm * master_dir_;
   const double slave = vs * slave_dir_;

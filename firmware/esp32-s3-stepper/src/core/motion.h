@@ -99,10 +99,10 @@ class Motion {
   // Plan of the running motion.
   StepProfile profile_;
   bool master_left_ = true;
-  int64_t n_ = 0;          // master steps (position mode)
-  int64_t m_ = 0;          // slave steps (position mode)
-  int64_t vm_ = 0;         // |master speed| (velocity mode)
-  int64_t vs_ = 0;         // |slave speed| (velocity mode)
+  int64_t n_ = 0;   // master steps (position mode)
+  int64_t m_ = 0;   // slave steps (position mode)
+  int64_t vm_ = 0;  // |master speed| (velocity mode)
+  int64_t vs_ = 0;  // |slave speed| (velocity mode)
   int8_t master_dir_ = 0;
   int8_t slave_dir_ = 0;
   int64_t next_k_ = 1;

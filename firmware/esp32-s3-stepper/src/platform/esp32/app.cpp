@@ -25,7 +25,8 @@
 #if __has_include("../../secrets.h")
 #include "../../secrets.h"
 #else
-#error "Copy src/secrets.example.h to src/secrets.h and set your WiFi network (docs/flashing.md)"
+#error \
+    "Copy src/secrets.example.h to src/secrets.h and set your WiFi network (docs/flashing.md)"
 #endif
 
 namespace {
@@ -108,8 +109,9 @@ void PollUdp() {
 void PollSerial() {
   int avail = Serial.available();
   while (avail > 0) {
-    const size_t want =
-        avail > static_cast<int>(sizeof(rx_buf)) ? sizeof(rx_buf) : static_cast<size_t>(avail);
+    const size_t want = avail > static_cast<int>(sizeof(rx_buf))
+                            ? sizeof(rx_buf)
+                            : static_cast<size_t>(avail);
     const size_t got = Serial.readBytes(rx_buf, want);
     if (got == 0) break;
     serial_link->Receive(rx_buf, got, millis());
