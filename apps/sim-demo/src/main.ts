@@ -89,6 +89,28 @@ function record(call: string, result: HALToolResult): void {
   while (log.children.length > 30) log.lastElementChild?.remove();
 }
 
+function note(text: string): void {
+  const item = document.createElement('li');
+  item.className = 'event';
+  item.textContent = text;
+  log.prepend(item);
+  while (log.children.length > 30) log.lastElementChild?.remove();
+}
+hal.events.on('communication', (e) => {
+  if (e.type === 'led') note(`LED ${e.pattern} rgb(${e.r}, ${e.g}, ${e.b})`);
+  else if (e.type === 'log') note(`log [${e.level}] ${e.message}`);
+  else if (e.type === 'speak') note(`says "${e.text}"`);
+  else note(`plays ${e.soundId}`);
+});
+hal.events.on('motionFinished', (m) => {
+  if (m.outcome === 'collision' && m.contact !== undefined) {
+    const p = m.contact.point;
+    note(`bumped into a ${m.contact.role} at (${p.x.toFixed(2)}, ${p.y.toFixed(2)}) m`);
+  } else if (m.outcome === 'host_timeout') {
+    note('host timeout: the robot stopped by itself');
+  }
+});
+
 // ---- goals: click the floor ------------------------------------------------------------------------
 
 type GoalState = 'none' | 'driving' | 'reached' | 'failed' | 'cancelled';
@@ -235,7 +257,13 @@ async function emergencyStop(): Promise<void> {
 }
 estopButton.addEventListener('click', () => void emergencyStop());
 
-const plot = new TrajectoryPlot(element('plot'));
+const plotCanvas = element<HTMLCanvasElement>('plot');
+const plot = new TrajectoryPlot(plotCanvas);
+plotCanvas.addEventListener('click', (e) => {
+  const p = plot.toWorld(e.clientX, e.clientY);
+  const { width, height } = world.map.arena;
+  if (Math.abs(p.x) <= width / 2 && Math.abs(p.y) <= height / 2) void goTo(p.x, p.y);
+});
 function resetWorld(name: BuiltinMapName): void {
   cancelGoal();
   goalState = 'none';

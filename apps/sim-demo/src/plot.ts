@@ -5,6 +5,7 @@ export class TrajectoryPlot {
   readonly #canvas: HTMLCanvasElement;
   readonly #ctx: CanvasRenderingContext2D;
   #trail: Array<{ x: number; y: number }> = [];
+  #scale = 1;
 
   constructor(canvas: HTMLCanvasElement) {
     this.#canvas = canvas;
@@ -26,6 +27,17 @@ export class TrajectoryPlot {
     }
   }
 
+  /** The world point (metres) under a point of the canvas as shown, in client pixels. */
+  toWorld(clientX: number, clientY: number): { x: number; y: number } {
+    const rect = this.#canvas.getBoundingClientRect();
+    const cx = ((clientX - rect.left) / rect.width) * this.#canvas.width;
+    const cy = ((clientY - rect.top) / rect.height) * this.#canvas.height;
+    return {
+      x: (cx - this.#canvas.width / 2) / this.#scale,
+      y: (this.#canvas.height / 2 - cy) / this.#scale,
+    };
+  }
+
   get trail(): ReadonlyArray<{ x: number; y: number }> {
     return this.#trail;
   }
@@ -34,8 +46,11 @@ export class TrajectoryPlot {
     const ctx = this.#ctx;
     const { width: w, height: h } = this.#canvas;
     const { arena } = world.map;
-    const pad = 12;
+    // Sizes below are for a canvas shown about 250 px wide; k scales them to its real width.
+    const k = w / 250;
+    const pad = 6 * k;
     const scale = Math.min((w - 2 * pad) / arena.width, (h - 2 * pad) / arena.height);
+    this.#scale = scale;
     const px = (x: number) => w / 2 + x * scale;
     const py = (y: number) => h / 2 - y * scale;
     ctx.clearRect(0, 0, w, h);
@@ -47,7 +62,7 @@ export class TrajectoryPlot {
       arena.height * scale,
     );
     ctx.strokeStyle = '#e4ddcd';
-    ctx.lineWidth = 1;
+    ctx.lineWidth = 0.6 * k;
     for (let x = -arena.width / 2; x <= arena.width / 2 + 1e-9; x += 0.5) {
       ctx.beginPath();
       ctx.moveTo(px(x), py(-arena.height / 2));
@@ -72,7 +87,7 @@ export class TrajectoryPlot {
     }
     if (this.#trail.length > 1) {
       ctx.strokeStyle = '#f57c00';
-      ctx.lineWidth = 2;
+      ctx.lineWidth = 1.6 * k;
       ctx.beginPath();
       this.#trail.forEach((p, i) =>
         i === 0 ? ctx.moveTo(px(p.x), py(p.y)) : ctx.lineTo(px(p.x), py(p.y)),
@@ -81,21 +96,21 @@ export class TrajectoryPlot {
     }
     if (goal !== undefined) {
       ctx.strokeStyle = '#d81b60';
-      ctx.lineWidth = 2;
+      ctx.lineWidth = 1.6 * k;
       ctx.beginPath();
-      ctx.arc(px(goal.x), py(goal.y), 6, 0, Math.PI * 2);
+      ctx.arc(px(goal.x), py(goal.y), 4 * k, 0, Math.PI * 2);
       ctx.stroke();
     }
     for (const robot of world.robots) {
       const x = px(robot.x);
       const y = py(robot.y);
-      const r = Math.max(4, robot.radius * scale);
+      const r = Math.max(4 * k, robot.radius * scale);
       ctx.save();
       ctx.translate(x, y);
       ctx.rotate(-robot.yaw);
       ctx.fillStyle = robot.id === robotId ? '#f4b400' : '#4285f4';
       ctx.strokeStyle = '#263238';
-      ctx.lineWidth = 1.5;
+      ctx.lineWidth = 1 * k;
       ctx.beginPath();
       ctx.moveTo(r * 1.3, 0);
       ctx.lineTo(-r, r * 0.9);
@@ -106,8 +121,10 @@ export class TrajectoryPlot {
       ctx.restore();
     }
     ctx.fillStyle = '#6b7a8c';
-    ctx.font = '11px system-ui, sans-serif';
-    ctx.fillText('+x →', w - 40, h - 2);
-    ctx.fillText('+y ↑', 2, 10);
+    ctx.font = `${Math.round(9 * k)}px system-ui, sans-serif`;
+    ctx.textAlign = 'right';
+    ctx.fillText('+x →', w - pad - 4 * k, h - pad - 4 * k);
+    ctx.textAlign = 'left';
+    ctx.fillText('+y ↑', pad + 4 * k, pad + 11 * k);
   }
 }
