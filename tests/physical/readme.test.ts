@@ -1,0 +1,63 @@
+// The package README's examples, run as written against the emulator in real time (only the
+// address changes).
+import { readFileSync } from 'node:fs';
+import { PhysicalHAL } from '@hal/physical';
+import { afterAll, describe, expect, it } from 'vitest';
+import { startEmulator, stopAllEmulators } from './emulator.js';
+
+afterAll(stopAllEmulators);
+
+const readme = readFileSync(new URL('../../packages/physical/README.md', import.meta.url), 'utf8');
+const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!);
+
+type Example = (hal: typeof PhysicalHAL, log: (...values: unknown[]) => void) => Promise<void>;
+
+/** Turns a README block into a function: drops the import, routes console.log to `log`. */
+function compile(block: string, replacements: Array<[string, string]>): Example {
+  let body = block.replace(/^import .*$/m, '').replaceAll('console.log(', 'log(');
+  for (const [from, to] of replacements) {
+    expect(body).toContain(from);
+    body = body.replaceAll(from, to);
+  }
+  const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
+    ...args: string[]
+  ) => Example;
+  return new AsyncFunction('PhysicalHAL', 'log', body);
+}
+
+describe('the @hal/physical README', () => {
+  it('has the two connection examples', () => {
+    expect(blocks).toHaveLength(2);
+  });
+
+  it('connects by IP, moves 10 cm and prints the pose', async () => {
+    const emulator = await startEmulator({ pty: false });
+    const logged: unknown[][] = [];
+    try {
+      const example = compile(blocks[0]!, [
+        ["'192.168.4.1'", "'127.0.0.1'"],
+        ['udpPort: 4210', `udpPort: ${emulator.udpPort}`],
+      ]);
+      await example(PhysicalHAL, (...values) => logged.push(values));
+      expect(logged[0]?.[0]).toBe(true);
+      expect(logged[0]?.[1]).toMatchObject({ position: { x: expect.closeTo(0.1, 3) } });
+      expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
+    } finally {
+      await emulator.stop();
+    }
+  });
+
+  it('connects by serial port and turns 90 degrees', async () => {
+    const emulator = await startEmulator();
+    const logged: unknown[][] = [];
+    try {
+      const example = compile(blocks[1]!, [["'/dev/ttyUSB0'", `'${emulator.pty}'`]]);
+      await example(PhysicalHAL, (...values) => logged.push(values));
+      expect(logged).toEqual([[true]]);
+      const finished = await emulator.waitFor((e) => e.event === 'move_finished');
+      expect(finished).toMatchObject({ left_steps: -1706, right_steps: 1706 });
+    } finally {
+      await emulator.stop();
+    }
+  });
+});
