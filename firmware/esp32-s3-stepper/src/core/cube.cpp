@@ -377,7 +377,7 @@ bool Cube::SetKey(const uint8_t* key, size_t len) {
 
 uint64_t Cube::uptime_ms() const { return (clock_.NowUs() - boot_us_) / 1000; }
 
-void Cube::Tick() { executor_.Tick(clock_.NowUs()); }
+CUBE_ISR_FN void Cube::Tick() { executor_.Tick(clock_.NowUs()); }
 
 void Cube::IntegratePending() {
   int64_t dl = 0;

@@ -7,6 +7,15 @@
 #include <cstddef>
 #include <cstdint>
 
+// Marks the functions that run in the step interrupt. On ESP-IDF builds
+// (the Arduino core defines ESP_PLATFORM) they go to IRAM, so the interrupt
+// never waits on the flash cache; elsewhere it expands to nothing.
+#if defined(ESP_PLATFORM)
+#define CUBE_ISR_FN __attribute__((section(".iram1.cube_isr")))
+#else
+#define CUBE_ISR_FN
+#endif
+
 namespace cube {
 
 enum class Wheel : uint8_t { kLeft = 0, kRight = 1 };

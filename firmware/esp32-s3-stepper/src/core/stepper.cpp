@@ -13,7 +13,7 @@ bool StepQueue::Push(const StepEvent& e) {
   return true;
 }
 
-bool StepQueue::Front(StepEvent* e) const {
+CUBE_ISR_FN bool StepQueue::Front(StepEvent* e) const {
   const uint32_t tail = tail_.load(std::memory_order_relaxed);
   const uint32_t head = head_.load(std::memory_order_acquire);
   if (head == tail) return false;
@@ -21,7 +21,7 @@ bool StepQueue::Front(StepEvent* e) const {
   return true;
 }
 
-void StepQueue::Pop() {
+CUBE_ISR_FN void StepQueue::Pop() {
   const uint32_t tail = tail_.load(std::memory_order_relaxed);
   tail_.store(tail + 1, std::memory_order_release);
 }
@@ -34,7 +34,7 @@ size_t StepQueue::Size() const {
 StepExecutor::StepExecutor(MotorDriver& motors, bool right_mirrored)
     : motors_(motors), right_mirrored_(right_mirrored) {}
 
-void StepExecutor::StepWheel(Wheel w, int dir) {
+CUBE_ISR_FN void StepExecutor::StepWheel(Wheel w, int dir) {
   const size_t i = static_cast<size_t>(w);
   int shaft = dir;
   if (w == Wheel::kRight && right_mirrored_) shaft = -dir;
@@ -47,7 +47,7 @@ void StepExecutor::StepWheel(Wheel w, int dir) {
             std::memory_order_release);
 }
 
-void StepExecutor::Tick(uint64_t now_us) {
+CUBE_ISR_FN void StepExecutor::Tick(uint64_t now_us) {
   const bool want = coils_wanted_.load();
   if (want != coils_applied_.load()) {
     if (want) {

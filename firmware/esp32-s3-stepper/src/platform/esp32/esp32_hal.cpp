@@ -13,7 +13,7 @@
 
 namespace cube {
 
-uint64_t Esp32Clock::NowUs() {
+uint64_t IRAM_ATTR Esp32Clock::NowUs() {
   return static_cast<uint64_t>(esp_timer_get_time());
 }
 
