@@ -244,8 +244,16 @@ int main(int argc, char** argv) {
         break;
       }
     }
-    robot.Tick();
-    robot.Poll();
+    // The step interrupt and the task, as on the board. At a high time
+    // scale more steps fall due per pass than the queue holds, so repeat
+    // while steps are still being made.
+    for (int pass = 0; pass < 256; ++pass) {
+      const int64_t l = robot.left_position();
+      const int64_t r = robot.right_position();
+      robot.Tick();
+      robot.Poll();
+      if (robot.left_position() == l && robot.right_position() == r) break;
+    }
     link.Poll(real_clock.NowUs() / 1000);
   }
   log.Stopping(g_stop != 0 ? "signal" : why);
