@@ -93,7 +93,7 @@ describe('apps/sim-demo in Chromium', () => {
 
     // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
     const start = await page.evaluate(() => window.simDemo?.pose());
-    await page.locator('#viewport canvas').focus();
+    await page.locator('#viewport > canvas').focus();
     await page.keyboard.down('ArrowUp');
     await page.waitForFunction((x0) => (window.simDemo?.pose().x ?? 0) > x0 + 0.15, start?.x ?? 0, {
       timeout: 20_000,

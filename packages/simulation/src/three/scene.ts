@@ -274,7 +274,7 @@ export class WorldScene {
     this.#static.add(ground);
     const size = Math.max(arena.width, arena.height);
     const divisions = Math.round(size / 0.5);
-    const grid = new THREE.GridHelper(size, divisions, '#b9b2a3', '#ddd6c8');
+    const grid = new THREE.GridHelper(size, divisions, '#a39a86', '#c9c0ad');
     grid.position.y = 0.001;
     grid.scale.set(arena.width / size, 1, arena.height / size);
     this.#static.add(grid);
