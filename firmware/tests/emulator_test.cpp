@@ -197,7 +197,7 @@ std::vector<uint8_t> Frame(uint8_t type, uint16_t seq,
 }
 
 TEST(Emulator, AnswersSeedCommandsInFramesOverThePty) {
-  Emulator e({"--time-scale", "10"});
+  Emulator e({"--time-scale", "10", "--host-timeout-ms", "10000"});
   const int fd =
       open(e.ready["pty"].get<std::string>().c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(fd, 0);
