@@ -194,8 +194,14 @@ export class OpenAICompatibleProvider implements DecisionProvider {
       { role: 'user', content: this.#userContent(context, schema) },
     ];
     const problems: string[] = [];
+    let builtFor = this.#format;
     for (let attempt = 1; attempt <= this.#maxAttempts; attempt += 1) {
       if (signal.aborted) throw this.#aborted(signal);
+      if (builtFor !== this.#format) {
+        // The server refused structured output: the schema now goes in the prompt.
+        messages[1] = { role: 'user', content: this.#userContent(context, schema) };
+        builtFor = this.#format;
+      }
       let reply: string | undefined;
       try {
         const content = await this.#request(messages, schema, signal);

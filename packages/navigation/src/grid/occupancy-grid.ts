@@ -290,8 +290,9 @@ export class OccupancyGrid {
   /**
    * Lays the front, left and right (and, when present, front-left and front-right) readings
    * taken at `pose` into the grid. Each sensor adds free evidence across its field of view up to
-   * its reading and, when the reading is short of the maximum range, occupied evidence on the arc
-   * of its field of view at that distance. Non-finite readings are ignored.
+   * its reading. A reading short of the maximum range that the grid does not already explain (no
+   * occupied cell in the cone at about that distance) adds occupied evidence on the arc of the
+   * field of view at that distance. Non-finite readings are ignored.
    */
   integrateRangeReadings(
     pose: Pose2D,
@@ -312,45 +313,72 @@ export class OccupancyGrid {
       if (reading === undefined || !Number.isFinite(reading) || reading < 0) continue;
       const hit = reading < model.maxRangeM - 1e-6;
       const range = Math.min(reading, model.maxRangeM) + model.originOffsetM;
-      // Free evidence across the cone: nothing in it is nearer than the reading. Occupied
-      // evidence on the arc at the reading's distance: a cone's reading does not say where across
-      // the cone the obstacle is, so the whole arc is suspect (free evidence from other views
-      // clears the parts that are not).
-      const arc = new Set<number>();
+      const angles: number[] = [];
       for (let i = 0; i < rays; i += 1) {
-        const spread = rays === 1 ? 0 : (i / (rays - 1) - 0.5) * fov;
-        const angle = pose.yaw + offset + spread;
-        this.integrateRay(pose.x, pose.y, angle, range, false);
-        if (hit) {
-          const end = worldToCell(
-            this.spec,
-            pose.x + range * Math.cos(angle),
-            pose.y + range * Math.sin(angle),
-          );
-          if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
-        }
+        angles.push(pose.yaw + offset + (rays === 1 ? 0 : (i / (rays - 1) - 0.5) * fov));
       }
-      if (hit) {
-        // Fill the arc between the rays' ends, one point per half cell.
-        const steps = Math.ceil((range * fov) / (this.spec.resolutionM / 2));
-        for (let k = 0; k <= steps; k += 1) {
-          const angle = pose.yaw + offset + (steps === 0 ? 0 : (k / steps - 0.5) * fov);
-          const end = worldToCell(
-            this.spec,
-            pose.x + range * Math.cos(angle),
-            pose.y + range * Math.sin(angle),
-          );
-          if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
-        }
-        for (const index of arc) {
-          this.addEvidence(
-            index % this.spec.width,
-            Math.floor(index / this.spec.width),
-            this.model.hit,
-          );
-        }
+      // What the map already explains: the nearest occupied cell across the cone. A reading
+      // that far (or farther) adds no new obstacle; a shorter one means something unexpected.
+      const expected = hit
+        ? this.#nearestOccupied(pose, angles, range + 4 * this.spec.resolutionM)
+        : Infinity;
+      const unexpected = hit && range < expected - 2 * this.spec.resolutionM;
+      // Free evidence across the cone: nothing in it is nearer than the reading.
+      for (const angle of angles) this.integrateRay(pose.x, pose.y, angle, range, false);
+      if (!unexpected) continue;
+      // Occupied evidence on the arc at the reading's distance: a cone's reading does not say
+      // where across the cone the obstacle is, so the whole arc is suspect (free evidence from
+      // other views clears the parts that are not).
+      const arc = new Set<number>();
+      const steps = Math.max(1, Math.ceil((range * fov) / (this.spec.resolutionM / 2)));
+      for (let k = 0; k <= steps; k += 1) {
+        const angle = pose.yaw + offset + (rays === 1 ? 0 : (k / steps - 0.5) * fov);
+        const end = worldToCell(
+          this.spec,
+          pose.x + range * Math.cos(angle),
+          pose.y + range * Math.sin(angle),
+        );
+        if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
+      }
+      for (const index of arc) {
+        this.addEvidence(
+          index % this.spec.width,
+          Math.floor(index / this.spec.width),
+          this.model.hit,
+        );
       }
     }
+  }
+
+  /**
+   * Distance to the nearest occupied cell along any of the rays, up to `limit` metres. The edge
+   * of the grid counts as a wall (as it does for planning): the arena's walls usually lie there.
+   */
+  #nearestOccupied(pose: Pose2D, angles: readonly number[], limit: number): number {
+    let nearest = Infinity;
+    const { originX, originY, resolutionM, width, height } = this.spec;
+    const maxX = originX + width * resolutionM;
+    const maxY = originY + height * resolutionM;
+    for (const angle of angles) {
+      const dx = Math.cos(angle);
+      const dy = Math.sin(angle);
+      const exitX =
+        dx > 1e-12 ? (maxX - pose.x) / dx : dx < -1e-12 ? (originX - pose.x) / dx : Infinity;
+      const exitY =
+        dy > 1e-12 ? (maxY - pose.y) / dy : dy < -1e-12 ? (originY - pose.y) / dy : Infinity;
+      const exit = Math.min(exitX, exitY);
+      if (exit >= 0 && exit < nearest) nearest = exit;
+      const ex = pose.x + limit * Math.cos(angle);
+      const ey = pose.y + limit * Math.sin(angle);
+      traverseCells(this.spec, pose.x, pose.y, ex, ey, (cx, cy) => {
+        if (this.stateOf(cx, cy) !== 'occupied') return true;
+        const c = cellCentre(this.spec, cx, cy);
+        const d = Math.hypot(c.x - pose.x, c.y - pose.y) - this.spec.resolutionM / 2;
+        if (d < nearest) nearest = d;
+        return false;
+      });
+    }
+    return nearest;
   }
 
   /** How many cells are in each state. */
