@@ -123,6 +123,71 @@ describe('PhysicalHAL', () => {
     });
   });
 
+  describe('#moveTo', () => {
+    it('splits a straight leg longer than one command allows into several moves', async () => {
+      const robot = new MockRobot({ timeScale: 200, hostTimeoutMs: 10_000 });
+      const hal = halOn(robot, { timeScale: 200 });
+      await hal.initialize();
+      const result = await hal.locomotion.moveTo(0, 2.5, 0);
+      expect(result.success, JSON.stringify(result)).toBe(true);
+      const moves = robot.requests.filter((r) => r['cmd'] === 'move_cm');
+      expect(moves.length).toBe(2);
+      for (const move of moves) expect(Number(move['left_cm']) * 217.3).toBeLessThan(40960);
+      const pose = await hal.locomotion.getPose();
+      // whole steps: the heading is good to one step (~0.0009 rad), ~2 mm sideways over 2.5 m
+      expect(Math.abs(pose.position.y - 2.5)).toBeLessThan(0.001);
+      expect(Math.abs(pose.position.x)).toBeLessThan(0.003);
+      await hal.cleanup();
+    });
+  });
+
+  describe('#drive', () => {
+    it('keeps driving after it resolves when no duration is given, until stop()', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const hal = halOn(robot);
+      await hal.initialize();
+      const result = await hal.locomotion.drive(255, 128);
+      expect(result.success).toBe(true);
+      expect(result.data).toMatchObject({ running: true, leftSps: 1024, rightSps: 514 });
+      await expect.poll(() => robot.position.left, { timeout: 5000 }).toBeGreaterThan(50);
+      expect((await hal.locomotion.getPose()).velocity.linear).toBeGreaterThan(0);
+      expect((await hal.locomotion.stop()).success).toBe(true);
+      const stopped = robot.position.left;
+      expect((await hal.locomotion.getPose()).velocity.linear).toBe(0);
+      await new Promise((resolve) => setTimeout(resolve, 30));
+      expect(robot.position.left).toBe(stopped);
+      await hal.cleanup();
+    });
+  });
+
+  describe('#log', () => {
+    it('writes to the injected logger, never the console', async () => {
+      const entries: unknown[][] = [];
+      const hal = halOn(new MockRobot(), {
+        logger: { log: (...entry) => entries.push(entry) },
+      });
+      hal.communication.log('battery low', 'warn');
+      expect(entries).toContainEqual([
+        'warn',
+        'hal:physical:log',
+        'battery low',
+        { deviceId: 'cube-1' },
+      ]);
+    });
+  });
+
+  describe('#getIMU', () => {
+    it('reports the heading from odometry, marked with its source', async () => {
+      const hal = halOn(new MockRobot({ timeScale: TIME_SCALE }));
+      await hal.initialize();
+      await hal.locomotion.rotate('left', 45);
+      const imu = await hal.vision.getIMU();
+      expect(imu.source).toBe('odometry');
+      expect(imu.heading).toBeCloseTo(Math.PI / 4, 2);
+      await hal.cleanup();
+    });
+  });
+
   describe('#getDistanceSensors', () => {
     it('rejects with NOT_IMPLEMENTED: the V1 robot has no range sensors', async () => {
       const hal = halOn(new MockRobot());
