@@ -137,6 +137,24 @@ describe('SimulationHAL', () => {
       await hal.cleanup();
       expect(hal.world.realtimeSpeed).toBe(0);
     });
+
+    it('keeps waiting when the speed is lowered mid-motion (timeouts are in simulated time)', async () => {
+      const hal = await ready(new SimulationHAL({ clock: 'realtime', realtimeSpeed: 40 }));
+      const move = hal.locomotion.moveForward(1);
+      hal.world.startRealtime({ speed: 1 });
+      const result = await move;
+      expect(result.success, JSON.stringify(result)).toBe(true);
+    });
+
+    it('fails with TIMEOUT when the ticker stops and the clock stalls', async () => {
+      const hal = await ready(
+        new SimulationHAL({ clock: 'realtime', realtimeSpeed: 1, stallTimeoutMs: 30 }),
+      );
+      hal.world.stopRealtime();
+      const result = await hal.locomotion.moveForward(1);
+      expect(result.code).toBe('TIMEOUT');
+      expect(hal.robot.running).toBe(false);
+    });
   });
 
   describe('vision', () => {

@@ -83,8 +83,10 @@ export interface SimulationHALOptions {
   clock?: SimulationClock;
   /** Speed of the ticker the HAL starts in 'realtime' mode. Default 1. */
   realtimeSpeed?: number;
-  /** Wall-clock wait for a motion in 'manual' mode, ms. Default 60000. */
+  /** 'manual' mode: fail a motion with TIMEOUT when the clock has not moved for this long, ms. Default 60000. */
   manualTimeoutMs?: number;
+  /** 'realtime' mode: fail a motion with TIMEOUT when the ticker has stalled this long, ms. Default 5000. */
+  stallTimeoutMs?: number;
   /** Extra features of the simulated robot. */
   features?: SimulatedFeatures;
   /** Range sensor model. */
@@ -239,24 +241,13 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       const limit = planned + 1_000_000;
       this.world.advanceUntil(() => report.outcome !== 'running', limit);
     } else {
-      const wallMs =
-        this.#clock === 'realtime'
-          ? planned / 1000 / Math.max(this.world.realtimeSpeed, 1e-3) + 2000
-          : (this.#options.manualTimeoutMs ?? 60_000);
-      let timer: ReturnType<typeof setTimeout> | undefined;
-      await Promise.race([
-        handle.finished,
-        new Promise<void>((resolve) => {
-          timer = setTimeout(resolve, wallMs);
-        }),
-      ]);
-      clearTimeout(timer);
+      await this.#waitForClock(report, handle.finished, planned);
     }
     if (report.outcome === 'running') {
       robot.stop();
       throw new HalError(
         'TIMEOUT',
-        `motion ${report.moveId} did not finish within its planned ${Math.ceil(planned / 1000)} ms`,
+        `motion ${report.moveId} did not finish within its planned ${Math.ceil(planned / 1000)} ms (simulated time at ${Math.round(this.world.nowUs / 1000)} ms)`,
         { details: { moveId: report.moveId, plannedMs: Math.ceil(planned / 1000) } },
       );
     }
@@ -275,6 +266,39 @@ export class SimulationHAL implements HardwareAbstractionLayer {
     });
   }
 
+  /**
+   * Waits for a motion that someone else's clock drives. Gives up when simulated time passes the
+   * planned end by a second, or when the clock has not moved for the stall timeout (wall time).
+   */
+  async #waitForClock(
+    report: MotionReport,
+    finished: Promise<MotionReport>,
+    plannedUs: number,
+  ): Promise<void> {
+    const stallMs =
+      this.#clock === 'manual'
+        ? (this.#options.manualTimeoutMs ?? 60_000)
+        : (this.#options.stallTimeoutMs ?? 5000);
+    const deadlineUs = report.startedUs + plannedUs + 1_000_000;
+    let seenUs = this.world.nowUs;
+    let seenAt = Date.now();
+    let timer: ReturnType<typeof setInterval> | undefined;
+    await Promise.race([
+      finished,
+      new Promise<void>((resolve) => {
+        timer = setInterval(() => {
+          const now = this.world.nowUs;
+          if (now !== seenUs) {
+            seenUs = now;
+            seenAt = Date.now();
+          }
+          if (now > deadlineUs || Date.now() - seenAt > stallMs) resolve();
+        }, 10);
+      }),
+    ]);
+    clearInterval(timer);
+  }
+
   #poseData(): Record<string, number> {
     const r = this.robot;
     return { x: r.x, y: r.y, yaw: r.yaw };
@@ -285,15 +309,16 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       moveId: report.moveId,
       leftSteps: report.doneLeft,
       rightSteps: report.doneRight,
-      durationMs: Math.ceil(report.durationUs / 1000),
+      plannedDurationMs: Math.ceil(report.durationUs / 1000),
       pose: this.#poseData(),
     };
   }
 
-  /** m/s along the ground to master-wheel steps/s (undefined: the firmware's default, top speed). */
+  /** m/s along the ground to master-wheel steps/s, within 1..top speed (undefined: top speed). */
   #wheelSpeed(speedMPerS: number | undefined): number | undefined {
     if (speedMPerS === undefined) return undefined;
-    return speedMPerS * 100 * stepsPerCm(this.robot.config);
+    const config = this.robot.config;
+    return Math.max(1, Math.min(config.maxSpeedStepsPerS, speedMPerS * 100 * stepsPerCm(config)));
   }
 
   // ---- subsystems -----------------------------------------------------------------------------
@@ -310,41 +335,57 @@ export class SimulationHAL implements HardwareAbstractionLayer {
           const max = this.robot.config.maxSpeedStepsPerS;
           const leftSps = Math.trunc((p.left / 255) * max);
           const rightSps = Math.trunc((p.right / 255) * max);
-          const handle = this.robot.drive(
-            leftSps,
-            rightSps,
-            p.durationMs === undefined ? undefined : Math.round(p.durationMs),
-          );
-          if (handle === undefined) return { running: false, leftSps: 0, rightSps: 0 };
-          if (p.durationMs === undefined) {
+          const ms = p.durationMs === undefined ? undefined : Math.max(1, Math.round(p.durationMs));
+          const handle = this.robot.drive(leftSps, rightSps, ms);
+          if (handle === undefined) {
+            return { leftSps, rightSps, speedClamped: false, running: false };
+          }
+          const data = {
+            moveId: handle.report.moveId,
+            leftSps: handle.report.leftSps,
+            rightSps: handle.report.rightSps,
+            speedClamped: handle.report.speedClamped,
+          };
+          if (ms === undefined) {
             this.events.emit('motionStarted', { ...handle.report });
             void handle.finished.then((r) => this.events.emit('motionFinished', { ...r }));
-            return { running: true, moveId: handle.report.moveId, leftSps, rightSps };
+            return { ...data, running: true };
           }
           const report = await this.#await(handle);
-          return { ...this.#motionData(report), running: false, leftSps, rightSps };
+          return {
+            ...data,
+            running: false,
+            leftSteps: report.doneLeft,
+            rightSteps: report.doneRight,
+          };
         }),
       moveTo: (x, y, z, speed) =>
         b.call('moveTo', { x, y, z, speed }, async (p) => {
+          // The same commands PhysicalHAL sends: turn toward the point, then straight moves
+          // along the heading reached, each no longer than one command allows.
           const robot = this.robot;
-          const dx = p.x - robot.x;
-          const dy = p.y - robot.y;
-          const distanceCm = Math.hypot(dx, dy) * 100;
-          const wheelSpeed = this.#wheelSpeed(p.speed);
-          let turnedDeg = 0;
-          if (distanceCm >= 0.05) {
-            turnedDeg = (normalizeAngle(Math.atan2(dy, dx) - robot.yaw) * 180) / Math.PI;
-            if (Math.abs(turnedDeg) >= 0.01) {
-              await this.#await(robot.rotateDeg(turnedDeg, wheelSpeed));
-            }
-            // One command moves at most maxStepsPerCommand steps: longer legs go in equal parts.
-            const perCmd = robot.config.maxStepsPerCommand / stepsPerCm(robot.config);
-            const parts = Math.ceil(distanceCm / (perCmd * 0.99));
-            for (let i = 0; i < parts; i += 1) {
-              await this.#await(robot.moveCm(distanceCm / parts, distanceCm / parts, wheelSpeed));
-            }
+          const sps = this.#wheelSpeed(p.speed);
+          let dx = p.x - robot.x;
+          let dy = p.y - robot.y;
+          if (Math.hypot(dx, dy) < 1e-4) return { moves: 0, pose: this.#poseData() };
+          let moves = 0;
+          const turnDeg = (normalizeAngle(Math.atan2(dy, dx) - robot.yaw) * 180) / Math.PI;
+          if (Math.abs(turnDeg) > 0.01) {
+            await this.#await(robot.rotateDeg(turnDeg, sps));
+            moves += 1;
           }
-          return { pose: this.#poseData(), turnedDeg, distanceCm };
+          const maxCm = (robot.config.maxStepsPerCommand - 1) / stepsPerCm(robot.config);
+          for (;;) {
+            dx = p.x - robot.x;
+            dy = p.y - robot.y;
+            const along = (dx * Math.cos(robot.yaw) + dy * Math.sin(robot.yaw)) * 100;
+            if (along < 0.01) break;
+            const cm = Math.min(along, maxCm);
+            await this.#await(robot.moveCm(cm, cm, sps));
+            moves += 1;
+            if (cm >= along) break;
+          }
+          return { moves, pose: this.#poseData() };
         }),
       rotate: (direction, degrees) =>
         b.call('rotate', { direction, degrees }, async (p) => {
@@ -359,11 +400,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       stop: () =>
         b.call('stop', {}, async () => {
           const stopped = this.robot.stop();
-          return {
-            stopped,
-            leftSteps: this.robot.leftSteps,
-            rightSteps: this.robot.rightSteps,
-          };
+          return { stopped, pose: this.#poseData() };
         }),
       getPose: async (): Promise<Pose> => {
         const r = this.robot;
