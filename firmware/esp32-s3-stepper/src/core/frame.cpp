@@ -5,14 +5,15 @@
 namespace cube {
 
 uint16_t Crc16CcittFalse(const uint8_t* data, size_t len, uint16_t crc) {
+  uint32_t c = crc;
   for (size_t i = 0; i < len; ++i) {
-    crc = static_cast<uint16_t>(crc ^ (static_cast<uint16_t>(data[i]) << 8));
+    c ^= static_cast<uint32_t>(data[i]) << 8;
     for (int b = 0; b < 8; ++b) {
-      crc = (crc & 0x8000u) != 0 ? static_cast<uint16_t>((crc << 1) ^ 0x1021u)
-                                 : static_cast<uint16_t>(crc << 1);
+      c = (c & 0x8000u) != 0 ? ((c << 1) ^ 0x1021u) : (c << 1);
     }
+    c &= 0xFFFFu;
   }
-  return crc;
+  return static_cast<uint16_t>(c);
 }
 
 const char* FrameErrorName(FrameError e) {
