@@ -212,9 +212,13 @@ export class Session {
 
   async #sayHello(options: RequestOptions | undefined): Promise<HelloReply> {
     const seq = this.#nextSeq();
-    const nonce = this.#options.codec.authenticated ? randomNonce() : undefined;
-    const params: RequestParams['hello'] = { client: this.#options.client ?? '@hal/physical' };
-    if (nonce !== undefined) params.nonce = nonce;
+    // always a nonce: it lets the robot recognise a resent hello as a retry (same session), and
+    // lets us tell its reply from a late reply to an older hello
+    const nonce = randomNonce();
+    const params: RequestParams['hello'] = {
+      client: this.#options.client ?? '@hal/physical',
+      nonce,
+    };
     const bytes = this.#options.codec.encode({ cmd: 'hello', seq, ...params });
     let reply: WireReply;
     try {
@@ -228,7 +232,7 @@ export class Session {
       this.malformedReplies += 1;
       throw new HalError('MALFORMED', "the robot's hello reply does not match protocol 1.0");
     }
-    if (nonce !== undefined && parsed.data.nonce !== nonce) {
+    if (parsed.data.nonce !== nonce) {
       throw new HalError('AUTH_FAILED', "the robot's hello reply does not echo our nonce");
     }
     if (!parsed.data.protocol_version.startsWith('1.')) {
