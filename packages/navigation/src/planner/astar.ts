@@ -2,6 +2,8 @@ import { NodeHeap } from './binary-heap.js';
 import type { ObstacleMap } from './obstacle-map.js';
 
 const SQRT2 = Math.SQRT2;
+/** Slack for comparing f values that are equal but summed in a different order. */
+const F_EPSILON = 1e-9;
 const OCTILE_DIAGONAL_EXTRA = SQRT2 - 2;
 // Neighbours in the order west, east, south, north, south-west, south-east, north-west,
 // north-east; NEED[k] is the mask of straight neighbours (bits W=1, E=2, S=4, N=8) that must be
@@ -105,8 +107,14 @@ export class AStarSearch {
     // free flags are known when the diagonals (which need both neighbours free) are tried.
     const offset = this.#offsets;
 
-    while (heap.size > 0) {
-      const u = heap.pop();
+    // `next`: a node to expand straight away without queueing it. When expanding u discovers a
+    // neighbour whose f is no larger than u's (u's f is the smallest on the open list), that
+    // neighbour is a valid next pick for A*, so it skips the heap: on open ground most of the
+    // route is expanded this way.
+    let next = -1;
+    while (next !== -1 || heap.size > 0) {
+      const u = next !== -1 ? next : heap.pop();
+      next = -1;
       mark[u] = done;
       expanded += 1;
       if (u === goal) {
@@ -118,6 +126,9 @@ export class AStarSearch {
       const ux = u % w;
       const uy = (u - ux) / w;
       const gu = g[u] as number;
+      const fu = gu + octile(ux, uy, gx, gy) + F_EPSILON;
+      let nextF = 0;
+      let nextG = -1;
       // Bit k set: straight neighbour k (west, east, south, north) is on the grid and free.
       let free = 0;
       if (ux > 0 && blocked[u - 1] === 0) free |= 1;
@@ -136,15 +147,26 @@ export class AStarSearch {
           mark[v] = gen;
           g[v] = ng;
           parent[v] = u;
-          const vx = ux + (DX[k] as number);
-          const vy = uy + (DY[k] as number);
-          heap.push(v, ng + octile(vx, vy, gx, gy), ng);
+          const fv = ng + octile(ux + (DX[k] as number), uy + (DY[k] as number), gx, gy);
+          if (fv <= fu && ng > nextG) {
+            // The better candidate for `next`; the previous one goes on the heap.
+            if (next !== -1) heap.push(next, nextF, nextG);
+            next = v;
+            nextF = fv;
+            nextG = ng;
+          } else {
+            heap.push(v, fv, ng);
+          }
         } else if (ng < (g[v] as number)) {
           g[v] = ng;
           parent[v] = u;
-          const vx = ux + (DX[k] as number);
-          const vy = uy + (DY[k] as number);
-          heap.decrease(v, ng + octile(vx, vy, gx, gy), ng);
+          const fv = ng + octile(ux + (DX[k] as number), uy + (DY[k] as number), gx, gy);
+          if (v === next) {
+            nextF = fv;
+            nextG = ng;
+          } else {
+            heap.decrease(v, fv, ng);
+          }
         }
       }
     }
