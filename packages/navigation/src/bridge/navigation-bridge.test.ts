@@ -343,6 +343,25 @@ describe('NavigationBridge', () => {
       expect(second.status).toBe('stopped');
     });
 
+    it('lets a new run start as soon as stop() resolves (a new click-to-goal)', async () => {
+      const hal = await ready(new FakeHAL({ start: { x: -2, y: 0, yaw: 0 } }));
+      const bridge = new NavigationBridge({
+        hal,
+        provider: new GoalSeekingProvider(),
+        maxLegM: 0.2,
+      });
+      let second: Promise<unknown> | undefined;
+      const off = bridge.on('result', () => {
+        off();
+        second = bridge.stop().then(() => bridge.run({ x: -1, y: 1 }));
+      });
+      const first = await bridge.run({ x: 2, y: 0 });
+      expect(first.status).toBe('stopped');
+      const next = (await second) as { status: string };
+      expect(next.status).toBe('reached');
+      expect(Math.hypot(hal.x + 1, hal.y - 1)).toBeLessThanOrEqual(0.1);
+    });
+
     it('stops when the provider says STOP away from the goal, even claiming it was reached', async () => {
       const hal = await ready(new FakeHAL());
       const provider = new ScriptedProvider([decision({ type: 'STOP' }, true)]);

@@ -194,6 +194,7 @@ export class NavigationBridge {
   #running = false;
   #stopRequested = false;
   #controller: AbortController | undefined;
+  #ending: Promise<unknown> | undefined;
 
   constructor(options: NavigationBridgeOptions) {
     this.hal = options.hal;
@@ -238,13 +239,18 @@ export class NavigationBridge {
 
   /**
    * Ends the current run: the pending decision is cancelled, the wheels are stopped, and `run()`
-   * resolves with status `stopped` (reason STOP_REQUESTED). Does nothing when no run is going.
+   * resolves with status `stopped` (reason STOP_REQUESTED). Resolves once that run has ended, so
+   * a new `run()` may follow at once. Does nothing when no run is going.
    */
   async stop(): Promise<void> {
     if (!this.#running) return;
     this.#stopRequested = true;
     this.#controller?.abort(new NavigationError('ABORTED', 'the navigation run was stopped'));
     await this.#stopWheels();
+    // The stopped motion resolves at once (INTERRUPTED), so the run ends promptly; wait for it
+    // (bounded), so that a new run can start as soon as this resolves.
+    const ending = this.#ending;
+    if (ending !== undefined) await withTimeout(ending, 2 * this.#sensorTimeoutMs);
   }
 
   /**
@@ -252,10 +258,18 @@ export class NavigationBridge {
    * reached or the run stops or fails. Always resolves (it rejects only when a run is already in
    * progress or the goal is not a pair of finite numbers).
    */
-  async run(
-    goal: Point | null,
-    options: { signal?: AbortSignal } = {},
-  ): Promise<NavigationOutcome> {
+  run(goal: Point | null, options: { signal?: AbortSignal } = {}): Promise<NavigationOutcome> {
+    if (this.#running) {
+      return Promise.reject(
+        new NavigationError('CONFIG', 'a navigation run is already in progress'),
+      );
+    }
+    const running = this.#run(goal, options);
+    this.#ending = running.catch(() => undefined);
+    return running;
+  }
+
+  async #run(goal: Point | null, options: { signal?: AbortSignal }): Promise<NavigationOutcome> {
     if (this.#running) {
       throw new NavigationError('CONFIG', 'a navigation run is already in progress');
     }

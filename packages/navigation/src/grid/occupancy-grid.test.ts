@@ -55,6 +55,20 @@ describe('OccupancyGrid', () => {
       expect(grid.isTraversable(1.9, 0)).toBe(false);
     });
 
+    it('sizes a grid to the arena of a map with OccupancyGrid.fromMap', () => {
+      const grid = OccupancyGrid.fromMap(
+        {
+          arena: { width: 3, height: 2 },
+          obstacles: [{ kind: 'cylinder', x: 0, y: 0, radius: 0.1 }],
+        },
+        { resolutionM: 0.1, marginM: 0.5 },
+      );
+      expect(grid.spec).toMatchObject({ width: 40, height: 30, originX: -2, originY: -1.5 });
+      expect(grid.stateAt(0, 0)).toBe('occupied');
+      expect(grid.stateAt(1.8, 0)).toBe('occupied'); // in the margin, outside the arena
+      expect(grid.stateAt(1, 0.5)).toBe('free');
+    });
+
     it('leaves open space unknown when told the map shows obstacles only', () => {
       const grid = new OccupancyGrid();
       grid.seedFromMap(boxMap, { freeSpace: false });

@@ -158,6 +158,25 @@ export class OccupancyGrid {
     this.planner = new GridPlanner(this.spec, this.obstacles);
   }
 
+  /**
+   * A grid sized to a known map's arena (plus `marginM` on each side, default 0) and seeded from
+   * it. Other options as for the constructor.
+   */
+  static fromMap(
+    map: KnownMap,
+    options: Omit<OccupancyGridOptions, 'widthM' | 'heightM' | 'originX' | 'originY'> & {
+      marginM?: number;
+    } = {},
+  ): OccupancyGrid {
+    const margin = options.marginM ?? 0;
+    const width = (map.arena?.width ?? 5) + 2 * margin;
+    const height = (map.arena?.height ?? 5) + 2 * margin;
+    const { marginM: _margin, ...rest } = options;
+    const grid = new OccupancyGrid({ ...rest, widthM: width, heightM: height });
+    grid.seedFromMap(map);
+    return grid;
+  }
+
   /** Increments on every change of any cell's state (for redrawing and re-planning). */
   get version(): number {
     return this.#version;
