@@ -27,7 +27,7 @@ const speed = [1, 2, 5, 10, 20].includes(requestedSpeed) ? requestedSpeed : 5;
 
 const world = new World({ map: mapName, seed: 1 });
 world.startRealtime({ speed });
-const view = new WorldScene(world);
+const view = new WorldScene(world, { showRangeRays: true });
 const robotCamera = createThreeFrameSource(view, { canvas: element('camera-view') });
 const hal = new SimulationHAL({ world, clock: 'realtime', frameSource: robotCamera.frameSource });
 await hal.initialize();
@@ -331,6 +331,14 @@ function follow(): void {
   followed = now;
 }
 
+const ledInput = element<HTMLInputElement>('led-input');
+ledInput.addEventListener('change', async () => {
+  const hex = Number.parseInt(ledInput.value.slice(1), 16);
+  const [r, g, b] = [(hex >> 16) & 255, (hex >> 8) & 255, hex & 255];
+  record(`setLED(${r}, ${g}, ${b})`, await hal.communication.setLED(r, g, b, 'solid'));
+  ledInput.blur();
+});
+
 // ---- telemetry -----------------------------------------------------------------------------------
 
 const telemetry = element<HTMLElement>('telemetry');
@@ -368,6 +376,8 @@ function showTelemetry(): void {
     'Range F/L/R',
     `${ranges.front.toFixed(2)} / ${ranges.left.toFixed(2)} / ${ranges.right.toFixed(2)} m`,
   );
+  const led = robot.led;
+  row('LED', led.pattern === 'off' ? 'off' : `rgb(${led.r}, ${led.g}, ${led.b}) ${led.pattern}`);
   const trip = robot.lastTrip;
   row(
     'Last trip',

@@ -43,7 +43,10 @@ export function createThreeFrameSource(
   const render = (robotId: string) => {
     const robot = view.world.robot(robotId);
     view.robotCamera(robot, { ...options, width, height }, camera);
+    const overlays = view.overlaysVisible;
+    view.overlaysVisible = false;
     renderer.render(view.scene, camera);
+    view.overlaysVisible = overlays;
   };
   return {
     canvas,

@@ -70,4 +70,16 @@ describe('WorldScene', () => {
     view.setPlannedPath(undefined);
     expect(meshes(view.scene).length).toBe(before);
   });
+
+  it('draws range-sensor rays up to what they hit when asked to', () => {
+    const world = new World({ map: { name: 'box', arena: { width: 2, height: 2 } } });
+    world.addRobot();
+    const view = new WorldScene(world, { shadows: false, showRangeRays: true });
+    view.update();
+    const rays = view.scene.getObjectsByProperty('type', 'LineSegments')[0] as THREE.LineSegments;
+    const position = rays.geometry.getAttribute('position');
+    // The first segment is the front ray: from the body edge (0.07 m) to the wall at x = 1 m.
+    expect(position.getX(0)).toBeCloseTo(0.07, 5);
+    expect(position.getX(1)).toBeCloseTo(1, 5);
+  });
 });

@@ -1,6 +1,7 @@
 import * as THREE from 'three';
 import { cameraPose } from '../camera.js';
 import type { CameraOptions } from '../camera.js';
+import { rangeAlong } from '../sensors.js';
 import type { SimRobot } from '../robot.js';
 import type { Rgb, Solid } from '../shapes.js';
 import type { World } from '../world.js';
@@ -32,6 +33,10 @@ export interface WorldSceneOptions {
   robotColors?: readonly string[];
   /** Cast shadows. Default true. */
   shadows?: boolean;
+  /** Draw each robot's range-sensor rays (front, diagonals, sides) up to what they hit. Default false. */
+  showRangeRays?: boolean;
+  /** Range of the drawn rays, metres. Default 2 (the default sensor range). */
+  rangeRayLength?: number;
 }
 
 /** World (x, y, z) in metres to a Three.js position. */
@@ -46,8 +51,11 @@ export function fromThree(v: THREE.Vector3): { x: number; y: number; z: number }
 
 const colorOf = (c: Rgb) => new THREE.Color(c.r / 255, c.g / 255, c.b / 255);
 
+const RAY_ANGLES = [0, Math.PI / 4, -Math.PI / 4, Math.PI / 2, -Math.PI / 2];
+
 interface RobotView {
   group: THREE.Group;
+  rays: THREE.LineSegments | undefined;
   led: THREE.MeshStandardMaterial;
   trail: THREE.Line;
   trailPositions: Float32Array;
@@ -75,6 +83,8 @@ export class WorldScene {
       trailLength: options.trailLength ?? 5000,
       robotColors: options.robotColors ?? ['#f4b400', '#4285f4', '#db4437', '#0f9d58', '#ab47bc'],
       shadows: options.shadows ?? true,
+      showRangeRays: options.showRangeRays ?? false,
+      rangeRayLength: options.rangeRayLength ?? 2,
     };
     this.scene.background = new THREE.Color('#dfe7f1');
     this.scene.fog = new THREE.Fog('#dfe7f1', 12, 30);
@@ -119,10 +129,22 @@ export class WorldScene {
         on ? led.g / 255 : 0.05,
         on ? led.b / 255 : 0.05,
       );
+      if (view.rays !== undefined) this.#updateRays(view.rays, robot);
       if (Math.hypot(robot.x - view.lastX, robot.y - view.lastY) > 0.005 || view.trailCount === 0) {
         this.#pushTrail(view, robot.x, robot.y);
       }
     }
+  }
+
+  /**
+   * Whether the overlays (trails, planned path, goal, occupancy grid, sensor rays) are drawn.
+   * The robot's camera view turns them off while it renders: they are not in the robot's world.
+   */
+  get overlaysVisible(): boolean {
+    return this.#overlays.visible;
+  }
+  set overlaysVisible(visible: boolean) {
+    this.#overlays.visible = visible;
   }
 
   /** Clears every robot's trail. */
@@ -311,6 +333,10 @@ export class WorldScene {
     for (const view of this.#robots.values()) {
       this.#overlays.remove(view.trail);
       view.trail.geometry.dispose();
+      if (view.rays !== undefined) {
+        this.#overlays.remove(view.rays);
+        view.rays.geometry.dispose();
+      }
       this.scene.remove(view.group);
     }
     this.#robots.clear();
@@ -370,7 +396,46 @@ export class WorldScene {
     const trail = new THREE.Line(geometry, new THREE.LineBasicMaterial({ color }));
     trail.frustumCulled = false;
     this.#overlays.add(trail);
-    return { group, led, trail, trailPositions, trailCount: 0, lastX: robot.x, lastY: robot.y };
+    let rays: THREE.LineSegments | undefined;
+    if (this.#options.showRangeRays) {
+      const rayGeometry = new THREE.BufferGeometry();
+      rayGeometry.setAttribute(
+        'position',
+        new THREE.BufferAttribute(new Float32Array(RAY_ANGLES.length * 6), 3),
+      );
+      rays = new THREE.LineSegments(
+        rayGeometry,
+        new THREE.LineBasicMaterial({ color: '#e53935', transparent: true, opacity: 0.55 }),
+      );
+      rays.frustumCulled = false;
+      this.#overlays.add(rays);
+    }
+    return {
+      group,
+      rays,
+      led,
+      trail,
+      trailPositions,
+      trailCount: 0,
+      lastX: robot.x,
+      lastY: robot.y,
+    };
+  }
+
+  #updateRays(rays: THREE.LineSegments, robot: SimRobot): void {
+    const attr = rays.geometry.getAttribute('position') as THREE.BufferAttribute;
+    const h = 0.06;
+    RAY_ANGLES.forEach((offset, i) => {
+      const angle = robot.yaw + offset;
+      const hit = rangeAlong(this.world, robot, angle, this.#options.rangeRayLength);
+      const from = robot.radius;
+      const to = robot.radius + hit.distance;
+      const c = Math.cos(angle);
+      const sn = Math.sin(angle);
+      attr.setXYZ(i * 2, robot.x + c * from, h, -(robot.y + sn * from));
+      attr.setXYZ(i * 2 + 1, robot.x + c * to, h, -(robot.y + sn * to));
+    });
+    attr.needsUpdate = true;
   }
 
   #pushTrail(view: RobotView, x: number, y: number): void {
