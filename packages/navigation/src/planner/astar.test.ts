@@ -157,6 +157,15 @@ describe('AStarSearch', () => {
       expect(result.cost).toBe(2);
     });
 
+    it('expands only the cells of the route on open ground (ties broken toward the goal)', () => {
+      const map = new ObstacleMap(100, 100);
+      const diagonal = new AStarSearch(map).search(0, 0, 99, 99);
+      expect(diagonal.expanded).toBe(100);
+      const slanted = new AStarSearch(map).search(0, 10, 99, 60);
+      expect(slanted.cost).toBeCloseTo(49 + 50 * Math.SQRT2, 9);
+      expect(slanted.expanded).toBe(slanted.cells.length);
+    });
+
     it('takes diagonal steps in open space', () => {
       const map = new ObstacleMap(5, 5);
       const result = new AStarSearch(map).search(0, 0, 4, 4);

@@ -42,7 +42,7 @@ export interface GridSearchResult {
  * A* on an {@link ObstacleMap}: 8-connected, where a diagonal step is allowed only when both cells
  * it passes between are free (no corner cutting past an obstacle), step costs 1 and sqrt(2), the
  * octile distance as heuristic (consistent, so the first path found is a shortest one on this
- * connectivity), and an indexed binary heap (with decrease-key) as the open list.
+ * connectivity), and an indexed 4-ary heap (with decrease-key) as the open list.
  *
  * All per-search state lives in typed arrays allocated once per grid and reused: a generation
  * counter marks which entries belong to the current search, so nothing is cleared between
@@ -56,6 +56,7 @@ export class AStarSearch {
   readonly #mark: Uint32Array;
   readonly #heap: NodeHeap;
   readonly #offsets: Int32Array;
+  readonly #tie: number;
   #generation = 0;
 
   constructor(map: ObstacleMap) {
@@ -67,6 +68,14 @@ export class AStarSearch {
     this.#heap = new NodeHeap(n);
     const w = map.width;
     this.#offsets = Int32Array.from([-1, 1, -w, w, -w - 1, -w + 1, w - 1, w + 1]);
+    // The heap key is f - tie * g: between equal f, the node with the larger g (nearer the goal)
+    // comes first, which keeps A* from expanding whole plateaus of ties. Every f on this grid is
+    // a + b * sqrt(2) with integers |a|, |b| <= n = width + height, so two different f differ
+    // by more than 1 / (3n) (sqrt(2) is badly approximable: |q sqrt(2) - p| > 1 / (3q)); g is at
+    // most sqrt(2) n. With tie = 1 / (12 n^2), tie * g < 1 / (6n): the tie-break never reorders
+    // different f, and it stays far above the rounding error of f.
+    const span = map.width + map.height;
+    this.#tie = 1 / (12 * span * span);
   }
 
   /** Finds a shortest path from cell (sx, sy) to cell (gx, gy). */
@@ -101,7 +110,8 @@ export class AStarSearch {
     g[start] = 0;
     parent[start] = -1;
     mark[start] = gen;
-    heap.push(start, octile(sx, sy, gx, gy), 0);
+    heap.push(start, octile(sx, sy, gx, gy));
+    const tie = this.#tie;
     let expanded = 0;
     // Neighbour k: index offset, dx, dy, step cost. The four straight ones come first, so their
     // free flags are known when the diagonals (which need both neighbours free) are tried.
@@ -150,12 +160,12 @@ export class AStarSearch {
           const fv = ng + octile(ux + (DX[k] as number), uy + (DY[k] as number), gx, gy);
           if (fv <= fu && ng > nextG) {
             // The better candidate for `next`; the previous one goes on the heap.
-            if (next !== -1) heap.push(next, nextF, nextG);
+            if (next !== -1) heap.push(next, nextF - tie * nextG);
             next = v;
             nextF = fv;
             nextG = ng;
           } else {
-            heap.push(v, fv, ng);
+            heap.push(v, fv - tie * ng);
           }
         } else if (ng < (g[v] as number)) {
           g[v] = ng;
@@ -165,7 +175,7 @@ export class AStarSearch {
             nextF = fv;
             nextG = ng;
           } else {
-            heap.decrease(v, fv, ng);
+            heap.decrease(v, fv - tie * ng);
           }
         }
       }
