@@ -7,7 +7,7 @@ import { startFaultProxy } from './fault-proxy.js';
 
 afterAll(stopAllEmulators);
 
-const TIME_SCALE = 50;
+const TIME_SCALE = 30;
 const MOVES = 200;
 
 describe('PhysicalHAL over a lossy UDP link', () => {

@@ -8,7 +8,7 @@ import type { Emulator, EmulatorEvent } from './emulator.js';
 afterAll(stopAllEmulators);
 
 const TIME_SCALE = 10;
-const HOST_TIMEOUT_MS = 1000;
+const HOST_TIMEOUT_MS = 2000;
 
 type Link = 'udp' | 'serial';
 
@@ -120,12 +120,12 @@ for (const link of ['udp', 'serial'] as const) {
 
     it('keeps a move longer than the host timeout alive with heartbeats', async () => {
       await start();
-      // 10 cm takes 4.1 s of robot time, four times the 1000 ms host timeout
+      // 10 cm takes 4.1 s of robot time, twice the 2000 ms host timeout
       expect((await hal.locomotion.moveForward(10)).success).toBe(true);
       const drive = await hal.locomotion.drive(120, 120);
       expect(drive.success).toBe(true);
-      // an agent thinking: nothing but heartbeats for 10 host timeouts
-      await new Promise((resolve) => setTimeout(resolve, (10 * HOST_TIMEOUT_MS) / TIME_SCALE));
+      // an agent thinking: nothing but heartbeats for 5 host timeouts
+      await new Promise((resolve) => setTimeout(resolve, (5 * HOST_TIMEOUT_MS) / TIME_SCALE));
       expect(emulator.events.filter((e) => e.event === 'trip')).toEqual([]);
       expect((await hal.refreshStatus()).running).toBe(true);
       expect((await hal.locomotion.stop()).success).toBe(true);
