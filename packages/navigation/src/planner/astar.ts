@@ -69,13 +69,14 @@ export class AStarSearch {
     const w = map.width;
     this.#offsets = Int32Array.from([-1, 1, -w, w, -w - 1, -w + 1, w - 1, w + 1]);
     // The heap key is f - tie * g: between equal f, the node with the larger g (nearer the goal)
-    // comes first, which keeps A* from expanding whole plateaus of ties. Every f on this grid is
-    // a + b * sqrt(2) with integers |a|, |b| <= n = width + height, so two different f differ
-    // by more than 1 / (3n) (sqrt(2) is badly approximable: |q sqrt(2) - p| > 1 / (3q)); g is at
-    // most sqrt(2) n. With tie = 1 / (12 n^2), tie * g < 1 / (6n): the tie-break never reorders
-    // different f, and it stays far above the rounding error of f.
-    const span = map.width + map.height;
-    this.#tie = 1 / (12 * span * span);
+    // comes first, which keeps A* from expanding whole plateaus of ties. This is exactly A* with
+    // the heuristic scaled by 1 / (1 - tie), so tie must be small enough never to reorder two
+    // different f: every f here is a + b sqrt(2) with integers |a|, |b| <= K = cells, two
+    // different ones differ by more than 1 / (6K) (sqrt(2) is badly approximable:
+    // |q sqrt(2) - p| > 1 / (3q)), and g <= sqrt(2) K; tie = 1 / (12 sqrt(2) K^2) keeps
+    // tie * g below half that gap, so the first path found is a shortest one.
+    const cells = map.width * map.height;
+    this.#tie = 1 / (12 * Math.SQRT2 * cells * cells);
   }
 
   /** Finds a shortest path from cell (sx, sy) to cell (gx, gy). */
