@@ -1,10 +1,7 @@
 export { PhysicalHAL } from './physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './physical-hal.js';
 
-export { Session, robotError } from './session.js';
-export type { SessionOptions, SessionState } from './session.js';
-
-export { PoseTracker } from './pose-tracker.js';
+export type { SessionState } from './session.js';
 
 export { MockRobot } from './mock/mock-robot.js';
 export type { MockRobotOptions, MockTransportOptions } from './mock/mock-robot.js';
@@ -12,12 +9,7 @@ export type { MockRobotOptions, MockTransportOptions } from './mock/mock-robot.j
 export type { Logger, LogLevel, ScopedLogger } from './logger.js';
 export { scoped, silentLogger } from './logger.js';
 
-export {
-  DEFAULT_ATTEMPTS,
-  DEFAULT_REPLY_TIMEOUT_MS,
-  ReplyMatcher,
-  RttWindow,
-} from './transport/transport.js';
+export { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS, ReplyMatcher } from './transport/transport.js';
 export type {
   RequestOptions,
   SerialLinkStats,
