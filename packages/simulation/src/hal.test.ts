@@ -16,6 +16,38 @@ afterEach(async () => {
 });
 
 describe('SimulationHAL', () => {
+  describe('.fromConfig', () => {
+    it('builds a HAL from the shared HALConfig, joining the given world', async () => {
+      const world = new World({ map: 'maze' });
+      const hal = await ready(
+        SimulationHAL.fromConfig({
+          mode: 'simulation',
+          deviceId: 'sim-7',
+          simulator: world,
+          robot: { maxSpeedStepsPerS: 512 },
+          capabilities: ['vision.camera:v1.0'],
+        }),
+      );
+      expect(hal.world).toBe(world);
+      expect(hal.robot.config.maxSpeedStepsPerS).toBe(512);
+      const info = hal.getDeviceInfo();
+      expect(info.id).toBe('sim-7');
+      expect(info.capabilities).toContain('vision.camera:v1.0');
+      expect(info.capabilities).not.toContain('vision.range:v1.0');
+    });
+
+    it('refuses a physical configuration with INVALID_PARAMETER naming "mode"', () => {
+      let error: unknown;
+      try {
+        SimulationHAL.fromConfig({ mode: 'physical', deviceId: 'x' });
+      } catch (e) {
+        error = e;
+      }
+      expect(isHalError(error) && error.code).toBe('INVALID_PARAMETER');
+      expect(String(error)).toContain('"mode"');
+    });
+  });
+
   describe('#moveForward', () => {
     it('fails with COLLISION and the contact point when the robot drives into an obstacle', async () => {
       const world = new World({

@@ -1,8 +1,18 @@
 import { normalizeAngle } from '@hal/kinematics';
-import { CAPABILITIES, HalBoundary, HalError, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
+import {
+  CAPABILITIES,
+  HALConfigSchema,
+  HalBoundary,
+  HalError,
+  hasCapability,
+  robotConfig,
+  stepsPerCm,
+  V1_ROBOT,
+} from '@hal/types';
 import type {
   CommunicationInterface,
   DeviceInfo,
+  HALConfig,
   HALLogLevel,
   HardwareAbstractionLayer,
   LocomotionInterface,
@@ -168,6 +178,60 @@ export class SimulationHAL implements HardwareAbstractionLayer {
     this.vision = this.#makeVision();
     this.communication = this.#makeCommunication();
     this.safety = this.#makeSafety();
+  }
+
+  /**
+   * Builds a SimulationHAL from the shared {@link HALConfig} (the way PhysicalHAL is built):
+   * `mode` must be 'simulation'; `simulator` may be the {@link World} to join (default a new
+   * one); `robot` overrides the V1 geometry and limits; `deviceId` names the device; and
+   * `capabilities`, when given, chooses the simulated features (camera, range sensors, IMU,
+   * speaker) by their capability strings. Throws INVALID_PARAMETER on a bad configuration.
+   */
+  static fromConfig(config: HALConfig, options: SimulationHALOptions = {}): SimulationHAL {
+    const parsed = HALConfigSchema.safeParse(config);
+    if (!parsed.success) {
+      const issue = parsed.error.issues[0];
+      const where = issue?.path.map(String).join('.') || 'config';
+      throw new HalError('INVALID_PARAMETER', `HALConfig: "${where}" ${issue?.message ?? ''}`, {
+        details: { parameter: where },
+      });
+    }
+    const c = parsed.data;
+    if (c.mode !== 'simulation') {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `HALConfig: "mode" must be "simulation" for a SimulationHAL, got "${c.mode}"`,
+        { details: { parameter: 'mode' } },
+      );
+    }
+    if (c.simulator !== undefined && !(c.simulator instanceof World)) {
+      throw new HalError('INVALID_PARAMETER', 'HALConfig: "simulator" must be a World', {
+        details: { parameter: 'simulator' },
+      });
+    }
+    const caps = c.capabilities;
+    const features: SimulatedFeatures =
+      caps === undefined
+        ? (options.features ?? {})
+        : {
+            camera: hasCapability(caps, CAPABILITIES.camera),
+            rangeSensors: hasCapability(caps, CAPABILITIES.rangeSensors),
+            imu: hasCapability(caps, CAPABILITIES.imu),
+            speaker: hasCapability(caps, CAPABILITIES.speaker),
+          };
+    return new SimulationHAL({
+      ...options,
+      ...(c.simulator instanceof World ? { world: c.simulator } : {}),
+      ...(c.robot === undefined
+        ? {}
+        : {
+            robot: Object.fromEntries(
+              Object.entries(c.robot).filter(([, v]) => v !== undefined),
+            ) as Partial<RobotConfig>,
+          }),
+      deviceId: c.deviceId,
+      features,
+    });
   }
 
   /** The simulated robot this HAL drives (looked up by id: a map change re-creates it). */
