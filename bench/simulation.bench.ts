@@ -85,3 +85,23 @@ console.log(
   `SimulationHAL, fast clock: ${fmt(calls / wallS)} motion calls/s ` +
     `(moveForward(5) and rotate(90) in turn), ${fmt(simS / wallS)}x real time`,
 );
+
+// The headless camera: software render plus JPEG encoding, 320x240.
+{
+  const { renderRobotView } = await import('@hal/simulation');
+  const camHal = new SimulationHAL({ world: new World({ map: 'room' }) });
+  await camHal.initialize();
+  const renders = 100;
+  let t = process.hrtime.bigint();
+  for (let i = 0; i < renders; i += 1) renderRobotView(camHal.world, camHal.robot);
+  const renderMs = Number(process.hrtime.bigint() - t) / 1e6 / renders;
+  const frames = 30;
+  t = process.hrtime.bigint();
+  for (let i = 0; i < frames; i += 1) await camHal.vision.captureFrame();
+  const frameMs = Number(process.hrtime.bigint() - t) / 1e6 / frames;
+  await camHal.cleanup();
+  console.log(
+    `captureFrame (Node, 320x240 JPEG): ${frameMs.toFixed(1)} ms per frame ` +
+      `(${(1000 / frameMs).toFixed(0)} frames/s), of which rendering ${renderMs.toFixed(1)} ms`,
+  );
+}
