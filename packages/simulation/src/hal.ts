@@ -249,6 +249,8 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       this.world.startRealtime({ speed: this.#options.realtimeSpeed ?? 1 });
       this.#startedTicker = true;
     }
+    // PhysicalHAL opens a session with `hello`, which resets the robot's distance accumulators.
+    this.robot.hello();
     this.#ready = true;
   }
 

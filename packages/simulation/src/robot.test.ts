@@ -50,13 +50,20 @@ describe('SimRobot', () => {
       expect(robot.rightSteps).toBe(217_299);
     });
 
+    it('forgets the carry on hello, as on a new session', () => {
+      const robot = new SimRobot({ id: 'r' });
+      robot.moveCm(10, 10); // 2172.99 steps: issues 2172, carries 0.99
+      runToEnd(robot);
+      robot.hello();
+      expect(robot.moveCm(10, 10).report.plannedLeft).toBe(2172); // not 2173
+    });
+
     it('forgets the carry on set_config', () => {
       const robot = new SimRobot({ id: 'r' });
-      robot.moveCm(0.01, 0.01); // 2.17 steps: issues 2, carries 0.17
+      robot.moveCm(10, 10);
       runToEnd(robot);
       robot.setConfig({});
-      const handle = robot.moveCm(0.01, 0.01);
-      expect(handle.report.plannedLeft).toBe(2);
+      expect(robot.moveCm(10, 10).report.plannedLeft).toBe(2172);
     });
 
     it('refuses more than 40960 steps with RANGE_EXCEEDED, trips the e-stop and keeps the carry', () => {

@@ -390,6 +390,13 @@ export class SimRobot {
     return this.#config;
   }
 
+  /** `hello`: a host opens a session; the distance accumulators are reset (nothing else changes). */
+  hello(): void {
+    this.touchHost();
+    this.#accLeft.reset();
+    this.#accRight.reset();
+  }
+
   /** `set_led`. */
   setLed(led: LedState): void {
     this.touchHost();
