@@ -1,11 +1,13 @@
 import {
   GoalSeekingProvider,
+  NavigationBridge,
   NavigationError,
   OccupancyGrid,
   OpenAICompatibleProvider,
   decisionJsonSchema,
 } from '@hal/navigation';
 import type { DecisionContext, NavigationDecision } from '@hal/navigation';
+import { SimulationHAL, World } from '@hal/simulation';
 import { afterEach, describe, expect, it } from 'vitest';
 import { startFakeOpenAIServer } from './fake-openai-server.js';
 import type { FakeOpenAIServer, ScriptedReply } from './fake-openai-server.js';
@@ -213,5 +215,66 @@ describe('OpenAICompatibleProvider', () => {
     await llm.decide(context(), signal());
     const parts = s.requests[0]?.body.messages?.[1]?.content as { type: string }[];
     expect(parts.map((p) => p.type)).toEqual(['text']);
+  });
+});
+
+describe('OpenAICompatibleProvider driving the navigation bridge on SimulationHAL', () => {
+  it('reaches the goal on decisions from the server, sending a camera frame each cycle', async () => {
+    const goal = { x: 1.5, y: 0.5 };
+    const s = await serve([
+      {
+        content: JSON.stringify({
+          reasoning: 'Heading for the goal.',
+          action: { type: 'MOVE_TO', ...goal },
+          goal_reached: false,
+        }),
+      },
+    ]);
+    const world = new World({ map: 'obstacles', seed: 3 });
+    const hal = new SimulationHAL({ world, start: { x: -1.8, y: 0, yaw: 0 } });
+    await hal.initialize();
+    try {
+      const bridge = new NavigationBridge({
+        hal,
+        provider: provider(s.baseUrl),
+        grid: OccupancyGrid.fromMap(world.map),
+      });
+      const outcome = await bridge.run(goal);
+      expect(outcome.status).toBe('reached');
+      expect(s.requests.length).toBe(outcome.cycles);
+      for (const request of s.requests) {
+        const parts = request.body.messages?.[1]?.content as {
+          type: string;
+          image_url?: { url: string };
+        }[];
+        expect(parts.find((p) => p.type === 'image_url')?.image_url?.url).toMatch(
+          /^data:image\/jpeg;base64,\/9j\//,
+        );
+      }
+    } finally {
+      await hal.cleanup();
+    }
+  });
+
+  it('still reaches the goal through the fallback when the server only talks nonsense', async () => {
+    const s = await serve([{ content: 'Sure! Moving now.' }]);
+    const world = new World({ map: 'empty', seed: 1 });
+    const hal = new SimulationHAL({ world });
+    await hal.initialize();
+    try {
+      const llm = provider(s.baseUrl, { maxAttempts: 2, fallback: new GoalSeekingProvider() });
+      const decisions: string[] = [];
+      const bridge = new NavigationBridge({
+        hal,
+        provider: llm,
+        grid: OccupancyGrid.fromMap(world.map),
+      });
+      bridge.on('decision', ({ decision }) => decisions.push(decision.reasoning));
+      const outcome = await bridge.run({ x: 1, y: -1 });
+      expect(outcome.status).toBe('reached');
+      expect(decisions.every((r) => r.startsWith('[fallback goal-seeking'))).toBe(true);
+    } finally {
+      await hal.cleanup();
+    }
   });
 });
