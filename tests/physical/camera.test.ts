@@ -128,7 +128,7 @@ describe('MjpegCamera', () => {
 describe('PhysicalHAL#captureFrame', () => {
   it('returns the camera frame when a camera URL is configured, and offers the camera capability', async () => {
     const server = await cameraServer();
-    const robot = new MockRobot({ timeScale: 20 });
+    const robot = new MockRobot({ timeScale: 20, hostTimeoutMs: 10_000 });
     const hal = new PhysicalHAL(
       {
         mode: 'physical',

@@ -12,7 +12,11 @@ afterAll(stopAllEmulators);
 
 describeHalContract('PhysicalHAL over UDP to the emulator', {
   create: async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE, pty: false });
+    const emulator = await startEmulator({
+      timeScale: TIME_SCALE,
+      hostTimeoutMs: 10_000,
+      pty: false,
+    });
     const hal = new PhysicalHAL(
       {
         mode: 'physical',
@@ -30,7 +34,7 @@ describeHalContract('PhysicalHAL over UDP to the emulator', {
 
 describeHalContract('PhysicalHAL over a serial pseudo-terminal to the emulator', {
   create: async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE });
+    const emulator = await startEmulator({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
     const hal = new PhysicalHAL(
       {
         mode: 'physical',

@@ -4,6 +4,7 @@ import { MockRobot } from './mock/mock-robot.js';
 import { PhysicalHAL } from './physical-hal.js';
 import type { PhysicalHALOptions } from './physical-hal.js';
 
+// the mock robots get a 10 s host timeout: at 50x that is 200 ms of real time, room for a busy machine
 const TIME_SCALE = 50;
 
 function halOn(robot: MockRobot, options: PhysicalHALOptions = {}): PhysicalHAL {
@@ -14,14 +15,14 @@ function halOn(robot: MockRobot, options: PhysicalHALOptions = {}): PhysicalHAL 
 }
 
 describeHalContract('PhysicalHAL over the mock robot', {
-  create: () => halOn(new MockRobot({ timeScale: TIME_SCALE })),
+  create: () => halOn(new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 })),
   timeoutMs: 20_000,
 });
 
 describe('PhysicalHAL', () => {
   describe('#moveForward', () => {
     it('sends one move_cm and resolves once the robot reports the move done', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = halOn(robot);
       await hal.initialize();
       const result = await hal.locomotion.moveForward(10);
@@ -33,7 +34,7 @@ describe('PhysicalHAL', () => {
     });
 
     it('executes a move once when its reply is lost and the request is retried', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = new PhysicalHAL(
         { mode: 'physical', deviceId: 'cube-1' },
         { transport: robot.transport(), timeScale: TIME_SCALE },
@@ -49,7 +50,7 @@ describe('PhysicalHAL', () => {
     });
 
     it('fails with NOT_CONNECTED when the robot stops answering, and recovers when it is back', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = new PhysicalHAL(
         { mode: 'physical', deviceId: 'cube-1' },
         {
@@ -75,7 +76,7 @@ describe('PhysicalHAL', () => {
 
   describe('#rotate', () => {
     it('turns 90 degrees with 1706 steps per wheel, left wheel backwards', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = halOn(robot);
       await hal.initialize();
       expect((await hal.locomotion.rotate('left', 90)).success).toBe(true);
@@ -86,7 +87,7 @@ describe('PhysicalHAL', () => {
 
   describe('#stop', () => {
     it('interrupts a running move, which resolves with INTERRUPTED', async () => {
-      const robot = new MockRobot({ timeScale: 5 });
+      const robot = new MockRobot({ timeScale: 5, hostTimeoutMs: 10_000 });
       const hal = halOn(robot, { timeScale: 5 });
       await hal.initialize();
       const move = hal.locomotion.moveForward(20);
@@ -104,7 +105,7 @@ describe('PhysicalHAL', () => {
 
   describe('session', () => {
     it('says hello again after the robot restarts and keeps the pose', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = new PhysicalHAL(
         { mode: 'physical', deviceId: 'cube-1' },
         { transport: robot.transport(), timeScale: TIME_SCALE, reconnectIntervalMs: 10 },
@@ -143,7 +144,7 @@ describe('PhysicalHAL', () => {
 
   describe('#drive', () => {
     it('keeps driving after it resolves when no duration is given, until stop()', async () => {
-      const robot = new MockRobot({ timeScale: TIME_SCALE });
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
       const hal = halOn(robot);
       await hal.initialize();
       const result = await hal.locomotion.drive(255, 128);
@@ -178,7 +179,7 @@ describe('PhysicalHAL', () => {
 
   describe('#getIMU', () => {
     it('reports the heading from odometry, marked with its source', async () => {
-      const hal = halOn(new MockRobot({ timeScale: TIME_SCALE }));
+      const hal = halOn(new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 }));
       await hal.initialize();
       await hal.locomotion.rotate('left', 45);
       const imu = await hal.vision.getIMU();

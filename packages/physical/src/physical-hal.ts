@@ -110,7 +110,7 @@ function deviceRobotConfig(base: RobotConfig, c: DeviceConfig): RobotConfig {
   });
 }
 
-function defaultTransport(config: HALConfig): TransportFactory {
+function defaultTransport(config: HALConfig, timeoutMs: number): TransportFactory {
   const connection = config.connection;
   if (connection?.type === 'wifi' && connection.host !== undefined) {
     return udpTransport(
@@ -120,10 +120,11 @@ function defaultTransport(config: HALConfig): TransportFactory {
     );
   }
   if (connection?.type === 'serial' && connection.port !== undefined) {
+    // frames are resent as quickly as requests, so a corrupted frame cannot outlast the host timeout
     return serialTransport(
       connection.baudRate === undefined
-        ? { path: connection.port }
-        : { path: connection.port, baudRate: connection.baudRate },
+        ? { path: connection.port, timeoutMs }
+        : { path: connection.port, baudRate: connection.baudRate, timeoutMs },
     );
   }
   throw new HalError(
@@ -224,7 +225,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
 
   async #open(): Promise<void> {
     const logger = this.#options.logger ?? silentLogger;
-    const factory = this.#options.transport ?? defaultTransport(this.#config);
+    const factory =
+      this.#options.transport ?? defaultTransport(this.#config, this.#requestOptions().timeoutMs!);
     const key = this.#config.connection?.key;
     const codec = new MessageCodec(key === undefined ? undefined : await createAuthenticator(key));
     const transport = await factory.connect({ decode: (bytes) => codec.decode(bytes), logger });

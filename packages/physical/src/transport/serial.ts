@@ -107,7 +107,7 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
       let closed = false;
       let txSeq = Math.floor(Math.random() * 0x10000);
       let lastDelivered: number | undefined;
-      let awaitingAck: { seq: number; acked: () => void } | undefined;
+      let awaitingAck: { seq: number; acked: () => void; abort: () => void } | undefined;
       let partialTimer: ReturnType<typeof setTimeout> | undefined;
       let chain: Promise<unknown> = Promise.resolve();
 
@@ -174,10 +174,11 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
         txSeq = (txSeq + 1) & 0xffff;
         const frame = encodeFrame({ type: 'data', seq, payload });
         for (let attempt = 1; attempt <= attempts; attempt++) {
+          if (closed) throw new HalError('NOT_CONNECTED', 'the serial port is closed');
           if (attempt > 1) link.frameRetries += 1;
           let timer: ReturnType<typeof setTimeout> | undefined;
           const acked = new Promise<boolean>((resolve) => {
-            awaitingAck = { seq, acked: () => resolve(true) };
+            awaitingAck = { seq, acked: () => resolve(true), abort: () => resolve(false) };
             timer = setTimeout(() => resolve(false), timeoutMs);
           });
           try {
@@ -213,6 +214,7 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
           if (closed) return;
           closed = true;
           clearTimeout(partialTimer);
+          awaitingAck?.abort();
           matcher.close();
           await new Promise<void>((resolve) => {
             if (!port.isOpen) resolve();
