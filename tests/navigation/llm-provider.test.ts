@@ -208,6 +208,19 @@ describe('OpenAICompatibleProvider', () => {
     ).toThrow('"baseUrl"');
   });
 
+  it('adds a picture of the occupancy grid when asked to', async () => {
+    const s = await serve([{ content: JSON.stringify(valid) }]);
+    await provider(s.baseUrl, { sendMapImage: true }).decide(context(), signal());
+    const parts = s.requests[0]?.body.messages?.[1]?.content as {
+      type: string;
+      image_url?: { url: string };
+    }[];
+    const images = parts.filter((p) => p.type === 'image_url').map((p) => p.image_url?.url ?? '');
+    expect(images).toHaveLength(2);
+    expect(images[0]).toBe(FRAME);
+    expect(images[1]).toMatch(/^data:image\/jpeg;base64,\/9j\//);
+  });
+
   it('leaves the image out when told not to send frames', async () => {
     const s = await serve([{ content: JSON.stringify(valid) }]);
     const llm = provider(s.baseUrl, { sendFrame: false });

@@ -1,3 +1,4 @@
+import { gridImageDataUrl } from '../grid/image.js';
 import { describeWorld } from '../grid/summary.js';
 import { NavigationError, SILENT_LOGGER } from '../errors.js';
 import type { NavigationLogger } from '../errors.js';
@@ -32,6 +33,11 @@ export interface OpenAICompatibleOptions {
   responseFormat?: ResponseFormatMode;
   /** Send the camera frame as an image. Default true. */
   sendFrame?: boolean;
+  /**
+   * Also send a small picture of the occupancy grid (route, robot, goal) as a second image.
+   * Default false. Node only (the JPEG encoder needs `Buffer`).
+   */
+  sendMapImage?: boolean;
   /** Asked when no valid decision came from the model (the reasoning says so). */
   fallback?: DecisionProvider;
   /** Replaces the built-in system prompt. */
@@ -120,6 +126,7 @@ type ChatMessage =
 export class OpenAICompatibleProvider implements DecisionProvider {
   readonly name: string;
   readonly wantsFrame: boolean;
+  readonly #sendMapImage: boolean;
   readonly #url: string;
   readonly #apiKey: string | undefined;
   readonly #model: string;
@@ -183,6 +190,7 @@ export class OpenAICompatibleProvider implements DecisionProvider {
     this.#fetch = fetchImpl;
     this.#logger = options.logger ?? SILENT_LOGGER;
     this.wantsFrame = options.sendFrame ?? true;
+    this.#sendMapImage = options.sendMapImage ?? false;
     this.name = `llm:${model}`;
   }
 
@@ -301,6 +309,15 @@ export class OpenAICompatibleProvider implements DecisionProvider {
     const parts: ContentPart[] = [{ type: 'text', text: lines.join('\n') }];
     if (this.wantsFrame && context.frame !== undefined) {
       parts.push({ type: 'image_url', image_url: { url: context.frame } });
+    }
+    if (this.#sendMapImage) {
+      const url = gridImageDataUrl(context.grid, {
+        pose: context.pose,
+        goal: context.goal,
+        size: 200,
+      });
+      parts.push({ type: 'text', text: 'The map (north up; black: obstacle, grey: unknown):' });
+      parts.push({ type: 'image_url', image_url: { url } });
     }
     return parts;
   }
