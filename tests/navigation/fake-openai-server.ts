@@ -6,8 +6,8 @@ import type { AddressInfo } from 'node:net';
 
 /** One scripted reply. */
 export type ScriptedReply =
-  /** A chat completion whose message content is this text. */
-  | { content: string }
+  /** A chat completion whose message content is this text (or these text parts). */
+  | { content: string | { type: 'text'; text: string }[] }
   /** An HTTP error status with this body. */
   | { status: number; body: string }
   /** Never answer (until the server closes). */

@@ -90,6 +90,19 @@ describe('OpenAICompatibleProvider', () => {
     expect(await provider(s.baseUrl).decide(context(), signal())).toEqual(valid);
   });
 
+  it('accepts content given as a list of text parts', async () => {
+    const text = JSON.stringify(valid);
+    const s = await serve([
+      {
+        content: [
+          { type: 'text', text: text.slice(0, 20) },
+          { type: 'text', text: text.slice(20) },
+        ],
+      },
+    ]);
+    expect(await provider(s.baseUrl).decide(context(), signal())).toEqual(valid);
+  });
+
   it('asks again, saying why, after a reply that is not JSON', async () => {
     const s = await serve([
       { content: 'I think we should go left {' },

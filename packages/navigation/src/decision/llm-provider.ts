@@ -385,12 +385,28 @@ export class OpenAICompatibleProvider implements DecisionProvider {
     } catch {
       throw new AttemptError('the server answered with something that is not JSON', true);
     }
-    const content = (payload as { choices?: { message?: { content?: unknown } }[] }).choices?.[0]
-      ?.message?.content;
-    if (typeof content !== 'string') {
-      throw new AttemptError('the reply has no choices[0].message.content text', true);
+    const message = (
+      payload as { choices?: { message?: { content?: unknown; refusal?: unknown } }[] }
+    ).choices?.[0]?.message;
+    const content = message?.content;
+    if (typeof content === 'string') return content;
+    // Some servers give the content as a list of parts.
+    if (Array.isArray(content)) {
+      const text = content
+        .map((part: unknown) =>
+          typeof part === 'object' &&
+          part !== null &&
+          typeof (part as { text?: unknown }).text === 'string'
+            ? (part as { text: string }).text
+            : '',
+        )
+        .join('');
+      if (text !== '') return text;
     }
-    return content;
+    if (typeof message?.refusal === 'string') {
+      throw new AttemptError(`the model refused: ${message.refusal.slice(0, 200)}`, true);
+    }
+    throw new AttemptError('the reply has no choices[0].message.content text', true);
   }
 
   #aborted(signal: AbortSignal): NavigationError {
