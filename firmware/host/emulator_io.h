@@ -9,6 +9,7 @@
 
 #include "cube.h"
 #include "frame.h"
+#include "json_writer.h"
 
 namespace cube {
 

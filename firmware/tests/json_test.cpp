@@ -1,11 +1,13 @@
-#include "json.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
+
+#include "json_number.h"
+#include "json_reader.h"
+#include "json_writer.h"
 
 namespace cube {
 namespace {

@@ -8,7 +8,8 @@
 #include <cstdint>
 
 #include "hal.h"
-#include "json.h"
+#include "json_reader.h"
+#include "json_writer.h"
 #include "kinematics.h"
 #include "motion.h"
 #include "stepper.h"
@@ -64,7 +65,7 @@ class CubeObserver : public MotionListener {
   virtual void OnTrip(const SafetyTrip& trip) = 0;
 };
 
-class Reply;  // defined in cube.cpp
+class Reply;  // defined in reply.h
 
 class Cube : private MotionListener {
  public:

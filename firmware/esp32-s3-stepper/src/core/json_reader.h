@@ -1,11 +1,10 @@
-// A bounded, allocation-free JSON codec for the protocol's flat messages.
+// A bounded, allocation-free JSON reader for the protocol's flat messages.
 //
 // JsonReader parses one top-level object of at most kMaxInput bytes into a
 // fixed table of fields. Nested objects and arrays are checked for syntax and
 // skipped (type kNested), so unknown structured fields are ignored.
-// JsonWriter appends JSON to a caller-owned buffer and records overflow.
-#ifndef CUBE_CORE_JSON_H_
-#define CUBE_CORE_JSON_H_
+#ifndef CUBE_CORE_JSON_READER_H_
+#define CUBE_CORE_JSON_READER_H_
 
 #include <cstddef>
 #include <cstdint>
@@ -71,55 +70,6 @@ class JsonReader {
   size_t count_ = 0;
 };
 
-// Parses a JSON number token (as produced by the writer) into a double.
-// Returns false when `text` is not a complete JSON number.
-bool ParseJsonNumber(const char* text, size_t len, double* out);
-
-class JsonWriter {
- public:
-  JsonWriter(char* buf, size_t cap);
-
-  void BeginObject();
-  void EndObject();
-  void BeginArray();
-  void EndArray();
-  void Key(const char* key);
-  void String(const char* s);
-  void String(const char* s, size_t len);
-  void Int(int64_t v);
-  void Uint(uint64_t v);
-  // Finite numbers with at most 9 decimals; non-finite ones as null.
-  void Double(double v);
-  void Bool(bool v);
-  void Null();
-  // Appends raw, already valid JSON text as a value.
-  void Raw(const char* s, size_t len);
-
-  bool ok() const { return ok_; }
-  size_t size() const { return len_; }
-  const char* data() const { return buf_; }
-
- private:
-  void BeforeValue();
-  void Put(char c);
-  void Put(const char* s, size_t n);
-  void PutQuoted(const char* s, size_t n);
-
-  char* buf_;
-  size_t cap_;
-  size_t len_ = 0;
-  bool ok_ = true;
-  int depth_ = 0;
-  bool first_[JsonReader::kMaxDepth + 2] = {};
-  bool after_key_ = false;
-};
-
-// Writes `v` as text (no quotes) into `out`; the same format as
-// JsonWriter::Double. Returns the length, or 0 when it does not fit.
-size_t FormatNumber(double v, char* out, size_t cap);
-size_t FormatInt(int64_t v, char* out, size_t cap);
-size_t FormatUint(uint64_t v, char* out, size_t cap);
-
 }  // namespace cube
 
-#endif  // CUBE_CORE_JSON_H_
+#endif  // CUBE_CORE_JSON_READER_H_

@@ -1,0 +1,293 @@
+// Cube: the session, status and settings commands (hello, heartbeat,
+// get_status, set_config, set_led, estop, reset_estop).
+#include <cstring>
+
+#include "cube.h"
+#include "json_number.h"
+#include "reply.h"
+#include "request_fields.h"
+#include "text.h"
+
+namespace cube {
+
+void Cube::WriteConfig(JsonWriter& w) const {
+  w.BeginObject();
+  w.Key("wheel_diameter_cm");
+  w.Double(config_.geometry.wheel_diameter_cm);
+  w.Key("wheel_base_cm");
+  w.Double(config_.geometry.wheel_base_cm);
+  w.Key("steps_per_revolution");
+  w.Double(config_.geometry.steps_per_revolution);
+  w.Key("max_speed_steps_per_s");
+  w.Int(config_.max_speed_sps);
+  w.Key("acceleration_steps_per_s2");
+  w.Int(config_.accel_sps2);
+  w.Key("host_timeout_ms");
+  w.Int(config_.host_timeout_ms);
+  w.Key("max_steps_per_command");
+  w.Int(kMaxStepsPerCommand);
+  w.EndObject();
+}
+
+void Cube::CmdHello(Reply& r) {
+  const JsonField* nonce = nullptr;
+  const Got gn = GetString(r, "nonce", &nonce);
+  if (gn == Got::kError) return;
+  if (gn == Got::kAbsent && key_len_ > 0) {
+    Missing(r, "nonce");
+    return;
+  }
+  if (gn == Got::kOk && (nonce->str_len < 1 || nonce->str_len > 64)) {
+    TypeError(r, "nonce", "1..64 characters");
+    return;
+  }
+  const JsonField* client = nullptr;
+  if (GetString(r, "client", &client) == Got::kError) return;
+
+  uint32_t sid = 0;
+  for (int i = 0; i < 8 && (sid == 0 || sid == sid_); ++i) {
+    sid = random_.NextU32();
+  }
+  if (sid == 0 || sid == sid_) sid = sid_ + 1 == 0 ? 1 : sid_ + 1;
+  sid_ = sid;
+  session_open_ = true;
+  last_seq_ = r.has_seq ? r.seq : 0;
+  memory_count_ = 0;
+  memory_next_ = 0;
+  hello_has_seq_ = r.has_seq;
+  hello_seq_ = r.seq;
+  hello_reply_len_ = 0;
+  if (nonce != nullptr) {
+    CopyText(hello_nonce_, sizeof(hello_nonce_), nonce->str, nonce->str_len);
+  } else {
+    hello_nonce_[0] = '\0';
+  }
+  acc_left_.Reset();
+  acc_right_.Reset();
+
+  r.has_sid = true;
+  r.sid = sid_;
+  JsonWriter& w = r.Ok();
+  if (nonce != nullptr) {
+    w.Key("nonce");
+    w.String(nonce->str, nonce->str_len);
+  }
+  w.Key("device_id");
+  w.String(device_id_);
+  w.Key("firmware_version");
+  w.String(kFirmwareVersion);
+  w.Key("protocol_version");
+  w.String(kProtocolVersion);
+  w.Key("auth");
+  w.Bool(key_len_ > 0);
+  w.Key("capabilities");
+  w.BeginArray();
+  w.String("locomotion.differential:v1.0");
+  char cap[64] = "locomotion.stepper:v1.0:steps_per_rev=";
+  const size_t base = std::strlen(cap);
+  const size_t k = FormatNumber(config_.geometry.steps_per_revolution,
+                                cap + base, sizeof(cap) - base - 1);
+  cap[base + k] = '\0';
+  w.String(cap);
+  w.String("communication.led:v1.0");
+  w.String("safety.estop:v1.0");
+  w.String("safety.host_timeout:v1.0");
+  w.EndArray();
+  w.Key("config");
+  WriteConfig(w);
+}
+
+void Cube::CmdHeartbeat(Reply& r) {
+  JsonWriter& w = r.Ok();
+  w.Key("uptime_ms");
+  w.Uint(uptime_ms());
+  w.Key("running");
+  w.Bool(motion_.running());
+  w.Key("estop");
+  w.Bool(estop_);
+}
+
+void Cube::CmdGetStatus(Reply& r) {
+  const uint64_t now = clock_.NowUs();
+  motion_.Update(now);
+  IntegratePending();
+  const MotionReport& m = motion_.report();
+  double lsps = 0;
+  double rsps = 0;
+  motion_.CurrentSpeeds(now, &lsps, &rsps);
+  JsonWriter& w = r.Ok();
+  w.Key("x_cm");
+  w.Double(pose_.x_cm);
+  w.Key("y_cm");
+  w.Double(pose_.y_cm);
+  w.Key("heading_rad");
+  w.Double(pose_.heading_rad);
+  w.Key("left_steps");
+  w.Int(motion_.left_position());
+  w.Key("right_steps");
+  w.Int(motion_.right_position());
+  w.Key("running");
+  w.Bool(motion_.running());
+  w.Key("move_id");
+  w.Uint(m.move_id);
+  w.Key("move_outcome");
+  w.String(MoveOutcomeName(m.outcome));
+  w.Key("move_left_steps");
+  w.Int(m.done_left);
+  w.Key("move_right_steps");
+  w.Int(m.done_right);
+  w.Key("left_sps");
+  w.Double(lsps);
+  w.Key("right_sps");
+  w.Double(rsps);
+  w.Key("uptime_ms");
+  w.Uint(uptime_ms());
+  w.Key("safety");
+  w.BeginObject();
+  w.Key("estop");
+  w.Bool(estop_);
+  w.Key("estop_reason");
+  w.String(estop_reason_);
+  w.Key("trips");
+  w.Uint(trips_);
+  w.Key("last_trip");
+  if (trips_ == 0) {
+    w.Null();
+  } else {
+    w.BeginObject();
+    w.Key("reason");
+    w.String(last_trip_.reason);
+    w.Key("detail");
+    w.String(last_trip_.detail);
+    w.Key("uptime_ms");
+    w.Uint(last_trip_.uptime_ms);
+    w.EndObject();
+  }
+  w.Key("host_timeout_ms");
+  w.Int(config_.host_timeout_ms);
+  w.Key("ms_since_host");
+  w.Uint((now - last_host_us_) / 1000);
+  w.Key("coils_on");
+  w.Bool(executor_.coils_wanted());
+  w.EndObject();
+  w.Key("led");
+  w.BeginObject();
+  w.Key("r");
+  w.Uint(led_.r);
+  w.Key("g");
+  w.Uint(led_.g);
+  w.Key("b");
+  w.Uint(led_.b);
+  w.Key("pattern");
+  w.String(LedPatternName(led_.pattern));
+  w.EndObject();
+}
+
+void Cube::CmdSetConfig(Reply& r) {
+  CubeConfig next = config_;
+  double d = 0;
+  int64_t i = 0;
+  Got g = GetRangedNumber(r, "wheel_diameter_cm", 0.5, 50, "cm", &d);
+  if (g == Got::kError) return;
+  if (g == Got::kOk) next.geometry.wheel_diameter_cm = d;
+  g = GetRangedNumber(r, "wheel_base_cm", 1, 100, "cm", &d);
+  if (g == Got::kError) return;
+  if (g == Got::kOk) next.geometry.wheel_base_cm = d;
+  g = GetInt(r, "steps_per_revolution", 100, 100000, "steps", &i);
+  if (g == Got::kError) return;
+  if (g == Got::kOk)
+    next.geometry.steps_per_revolution = static_cast<double>(i);
+  g = GetInt(r, "max_speed_steps_per_s", 1, 2048, "steps/s", &i);
+  if (g == Got::kError) return;
+  if (g == Got::kOk) next.max_speed_sps = i;
+  g = GetInt(r, "acceleration_steps_per_s2", 1, 100000, "steps/s^2", &i);
+  if (g == Got::kError) return;
+  if (g == Got::kOk) next.accel_sps2 = i;
+  g = GetInt(r, "host_timeout_ms", 500, 10000, "ms", &i);
+  if (g == Got::kError) return;
+  if (g == Got::kOk) next.host_timeout_ms = i;
+
+  IntegratePending();  // steps so far count with the old geometry
+  config_ = next;
+  acc_left_.Reset();
+  acc_right_.Reset();
+  JsonWriter& w = r.Ok();
+  w.Key("config");
+  WriteConfig(w);
+}
+
+void Cube::CmdSetLed(Reply& r) {
+  LedState next;
+  next.pattern = LedPattern::kSolid;
+  const JsonField* p = nullptr;
+  const Got gp = GetString(r, "pattern", &p);
+  if (gp == Got::kError) return;
+  if (gp == Got::kOk) {
+    if (Equals(p->str, "solid")) {
+      next.pattern = LedPattern::kSolid;
+    } else if (Equals(p->str, "blink")) {
+      next.pattern = LedPattern::kBlink;
+    } else if (Equals(p->str, "pulse")) {
+      next.pattern = LedPattern::kPulse;
+    } else if (Equals(p->str, "off")) {
+      next.pattern = LedPattern::kOff;
+    } else {
+      TypeError(r, "pattern", "one of solid, blink, pulse, off");
+      return;
+    }
+  }
+  const char* keys[3] = {"r", "g", "b"};
+  uint8_t* dst[3] = {&next.r, &next.g, &next.b};
+  for (int c = 0; c < 3; ++c) {
+    int64_t v = 0;
+    const Got g = GetInt(r, keys[c], 0, 255, "", &v);
+    if (g == Got::kError) return;
+    if (g == Got::kAbsent && next.pattern != LedPattern::kOff) {
+      Missing(r, keys[c]);
+      return;
+    }
+    *dst[c] = static_cast<uint8_t>(v);
+  }
+  led_ = next;
+  JsonWriter& w = r.Ok();
+  w.Key("led");
+  w.BeginObject();
+  w.Key("r");
+  w.Uint(led_.r);
+  w.Key("g");
+  w.Uint(led_.g);
+  w.Key("b");
+  w.Uint(led_.b);
+  w.Key("pattern");
+  w.String(LedPatternName(led_.pattern));
+  w.EndObject();
+}
+
+void Cube::CmdEstop(Reply& r) {
+  // An e-stop never fails: a reason of the wrong type is ignored.
+  const JsonField* reason = r.req->Find("reason");
+  char text[64] = "estop command";
+  if (reason != nullptr && reason->type == JsonType::kString &&
+      reason->str_len > 0) {
+    CopyText(text, sizeof(text), reason->str, reason->str_len);
+  }
+  LatchEstop("estop_command", text, MoveOutcome::kEstop);
+  JsonWriter& w = r.Ok();
+  w.Key("estop");
+  w.Bool(true);
+  w.Key("estop_reason");
+  w.String(estop_reason_);
+}
+
+void Cube::CmdResetEstop(Reply& r) {
+  const bool was = estop_;
+  estop_ = false;
+  estop_reason_[0] = '\0';
+  JsonWriter& w = r.Ok();
+  w.Key("estop");
+  w.Bool(false);
+  w.Key("was_estopped");
+  w.Bool(was);
+}
+
+}  // namespace cube

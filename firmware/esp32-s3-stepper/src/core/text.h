@@ -1,0 +1,36 @@
+// Bounded text helpers for the protocol's messages: no allocation, never
+// past the buffer, never half a UTF-8 sequence.
+#ifndef CUBE_CORE_TEXT_H_
+#define CUBE_CORE_TEXT_H_
+
+#include <cstddef>
+#include <cstdint>
+
+namespace cube {
+
+bool Equals(const char* a, const char* b);
+
+// Copies src[0..len) into dst as a NUL-terminated string, cut to fit `cap`
+// at a UTF-8 character boundary.
+void CopyText(char* dst, size_t cap, const char* src, size_t len);
+
+// Small bounded text builder for error messages; what does not fit is
+// dropped.
+class Text {
+ public:
+  Text& S(const char* s);
+  // `field` in double quotes.
+  Text& Q(const char* field);
+  Text& I(int64_t v);
+  // As the replies write numbers; "?" when `v` cannot be written.
+  Text& N(double v);
+  const char* c_str() const { return buf_; }
+
+ private:
+  char buf_[160] = {};
+  size_t n_ = 0;
+};
+
+}  // namespace cube
+
+#endif  // CUBE_CORE_TEXT_H_
