@@ -1,7 +1,7 @@
 // The browser demo in a real browser: Debian's Chromium driven by playwright-core. Builds the
 // demo, serves it on a free port, and checks that the page loads without console errors, that
-// keyboard teleop moves the robot and that a clicked goal is reached. Saves a screenshot to
-// artifacts/sim-demo.png.
+// keyboard teleop moves the robot, and that clicked goals are reached, by a straight moveTo and
+// by the navigation bridge around an obstacle. Saves a screenshot to artifacts/sim-demo.png.
 import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -85,36 +85,10 @@ describe('apps/sim-demo in Chromium', () => {
     if (profile !== undefined) rmSync(profile, { recursive: true, force: true });
   }, 30_000);
 
-  it('loads without console errors, moves by keyboard and reaches a clicked goal', async () => {
-    const url = server.resolvedUrls?.local[0];
-    expect(url, 'the preview server has a URL').toBeDefined();
-    await page.goto(`${url}?map=empty&speed=20`, { waitUntil: 'load', timeout: 20_000 });
-    await page.waitForFunction(() => window.simDemo !== undefined, undefined, { timeout: 15_000 });
-
-    // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
-    const start = await page.evaluate(() => window.simDemo?.pose());
-    await page.locator('#viewport > canvas').focus();
-    await page.keyboard.down('ArrowUp');
-    await page.waitForFunction((x0) => (window.simDemo?.pose().x ?? 0) > x0 + 0.15, start?.x ?? 0, {
-      timeout: 20_000,
-    });
-    await page.keyboard.up('ArrowUp');
-    await page.waitForFunction(
-      () => document.getElementById('status')?.textContent === 'Stopped',
-      undefined,
-      {
-        timeout: 10_000,
-      },
-    );
-    const afterTeleop = await page.evaluate(() => window.simDemo?.pose());
-    expect(afterTeleop?.x ?? 0).toBeGreaterThan((start?.x ?? 0) + 0.15);
-    expect(Math.abs(afterTeleop?.y ?? 1)).toBeLessThan(0.01);
-
-    // Click the floor at a point left of the robot; the robot turns and drives there.
-    const target = { x: (afterTeleop?.x ?? 0) - 0.2, y: 0.6 };
-    const at = await page.evaluate(([x, y]) => window.simDemo?.worldToClient(x, y), [
-      target.x,
-      target.y,
+  async function clickGoal(x: number, y: number): Promise<void> {
+    const at = await page.evaluate(([gx, gy]) => window.simDemo?.worldToClient(gx, gy), [
+      x,
+      y,
     ] as const);
     expect(at).toBeDefined();
     await page.mouse.click(at?.x ?? 0, at?.y ?? 0);
@@ -124,11 +98,50 @@ describe('apps/sim-demo in Chromium', () => {
     await page.waitForFunction(() => window.simDemo?.goalState() !== 'driving', undefined, {
       timeout: 40_000,
     });
+  }
+
+  it('loads without console errors, moves by keyboard and reaches clicked goals', async () => {
+    const url = server.resolvedUrls?.local[0];
+    expect(url, 'the preview server has a URL').toBeDefined();
+    // The obstacles map: the robot starts at (-1.8, 0) facing +x, a box spans x -1.1..-0.7.
+    await page.goto(`${url}?map=obstacles&speed=20`, { waitUntil: 'load', timeout: 20_000 });
+    await page.waitForFunction(() => window.simDemo !== undefined, undefined, { timeout: 15_000 });
+
+    // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
+    const start = await page.evaluate(() => window.simDemo?.pose());
+    await page.locator('#viewport > canvas').focus();
+    await page.keyboard.down('ArrowUp');
+    await page.waitForFunction((x0) => (window.simDemo?.pose().x ?? 0) > x0 + 0.1, start?.x ?? 0, {
+      timeout: 20_000,
+    });
+    await page.keyboard.up('ArrowUp');
+    await page.waitForFunction(
+      () => document.getElementById('status')?.textContent === 'Stopped',
+      undefined,
+      { timeout: 10_000 },
+    );
+    const afterTeleop = await page.evaluate(() => window.simDemo?.pose());
+    expect(afterTeleop?.x ?? 0).toBeGreaterThan((start?.x ?? 0) + 0.1);
+    expect(Math.abs(afterTeleop?.y ?? 1)).toBeLessThan(0.01);
+
+    // "Plan around obstacles" off: one straight moveTo to a free point on the left.
+    await page.locator('#plan-toggle').uncheck();
+    const straight = { x: -1.5, y: 0.9 };
+    await clickGoal(straight.x, straight.y);
     expect(await page.evaluate(() => window.simDemo?.goalState())).toBe('reached');
-    const end = await page.evaluate(() => window.simDemo?.pose());
+    let pose = await page.evaluate(() => window.simDemo?.pose());
     // The click lands within a few millimetres of the intended point on the floor.
-    expect(Math.hypot((end?.x ?? 0) - target.x, (end?.y ?? 0) - target.y)).toBeLessThan(0.02);
+    expect(Math.hypot((pose?.x ?? 0) - straight.x, (pose?.y ?? 0) - straight.y)).toBeLessThan(0.02);
+
+    // On: the navigation bridge drives round the box to the far side of it, touching nothing.
+    await page.locator('#plan-toggle').check();
+    const behind = { x: -0.4, y: 0 };
+    await clickGoal(behind.x, behind.y);
+    expect(await page.evaluate(() => window.simDemo?.goalState())).toBe('reached');
+    pose = await page.evaluate(() => window.simDemo?.pose());
+    expect(Math.hypot((pose?.x ?? 0) - behind.x, (pose?.y ?? 0) - behind.y)).toBeLessThan(0.12);
     await expect(page.locator('#status').textContent()).resolves.toContain('Goal reached');
+    await expect(page.locator('#log').textContent()).resolves.not.toContain('COLLISION');
 
     mkdirSync(artifacts, { recursive: true });
     await page.screenshot({ path: join(artifacts, 'sim-demo.png') });

@@ -5,6 +5,7 @@ import { createThreeFrameSource, fromThree, toThree, WorldScene } from '@hal/sim
 import type { HALToolResult } from '@hal/types';
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { GoalSeekingProvider, NavigationBridge, OccupancyGrid } from '@hal/navigation';
 import { TrajectoryPlot } from './plot.js';
 import { powersFor, TELEOP_KEYS } from './teleop.js';
 
@@ -111,43 +112,101 @@ hal.events.on('motionFinished', (m) => {
   }
 });
 
-// ---- goals: click the floor ------------------------------------------------------------------------
+// ---- goals: click the floor --------------------------------------------------------------------
+// With "Plan around obstacles" the navigation bridge drives there (A* on an occupancy grid seeded
+// with the map, re-planning from the range sensors); without it, one straight moveTo.
 
 type GoalState = 'none' | 'driving' | 'reached' | 'failed' | 'cancelled';
 let goal: { x: number; y: number } | undefined;
 let goalState: GoalState = 'none';
 let goalSerial = 0;
+let plannedPath: Array<{ x: number; y: number }> | undefined;
 
-function cancelGoal(): void {
+const planToggle = element<HTMLInputElement>('plan-toggle');
+const gridToggle = element<HTMLInputElement>('grid-toggle');
+let grid = OccupancyGrid.fromMap(world.map);
+let bridge = makeBridge();
+
+function makeBridge(): NavigationBridge {
+  const made = new NavigationBridge({ hal, provider: new GoalSeekingProvider(), grid });
+  made.on('path', ({ plan }) => {
+    const robot = hal.robot;
+    plannedPath = [{ x: robot.x, y: robot.y }, ...plan.waypoints.slice(1)];
+    view.setPlannedPath(plannedPath);
+  });
+  made.on('result', ({ call, args, result }) => {
+    const text = Object.values(args)
+      .map((v) => (typeof v === 'number' ? Number(v.toFixed(2)) : String(v)))
+      .join(', ');
+    record(`${call}(${text})`, result);
+  });
+  return made;
+}
+
+/** The occupancy grid as the scene's overlay wants it: occupancy 0..1, negative unknown. */
+function showGrid(): void {
+  if (!gridToggle.checked) {
+    view.setOccupancyGrid(undefined);
+    return;
+  }
+  const { spec, logOdds } = grid;
+  const data = Array.from(logOdds, (l) => (l === 0 ? -1 : 1 / (1 + Math.exp(-l))));
+  view.setOccupancyGrid({
+    width: spec.width,
+    height: spec.height,
+    resolution: spec.resolutionM,
+    origin: { x: spec.originX, y: spec.originY },
+    data,
+  });
+}
+
+/** Stops whatever is driving to a goal (and waits until it has). */
+async function cancelGoal(): Promise<void> {
   if (goalState === 'driving') goalState = 'cancelled';
   goalSerial += 1;
   goal = undefined;
+  plannedPath = undefined;
   view.setGoal(undefined);
   view.setPlannedPath(undefined);
+  await bridge.stop();
 }
 
 async function goTo(x: number, y: number): Promise<void> {
-  cancelGoal();
+  await cancelGoal();
   const serial = goalSerial;
   goal = { x, y };
   goalState = 'driving';
   const robot = hal.robot;
   view.setGoal(goal);
-  view.setPlannedPath([
-    { x: robot.x, y: robot.y },
-    { x, y },
-  ]);
-  setStatus(`Driving to (${x.toFixed(2)}, ${y.toFixed(2)}) m…`);
-  const result = await hal.locomotion.moveTo(x, y, 0);
-  record(`moveTo(${x.toFixed(2)}, ${y.toFixed(2)})`, result);
+  const where = `(${x.toFixed(2)}, ${y.toFixed(2)}) m`;
+  let ok: boolean;
+  let why: string;
+  if (planToggle.checked) {
+    setStatus(`Planning a route to ${where}…`);
+    const outcome = await bridge.run({ x, y });
+    ok = outcome.status === 'reached';
+    why = `${outcome.reason}: ${outcome.message}`;
+  } else {
+    plannedPath = [
+      { x: robot.x, y: robot.y },
+      { x, y },
+    ];
+    view.setPlannedPath(plannedPath);
+    setStatus(`Driving straight to ${where}…`);
+    const result = await hal.locomotion.moveTo(x, y, 0);
+    record(`moveTo(${x.toFixed(2)}, ${y.toFixed(2)})`, result);
+    ok = result.success;
+    why = `${result.code ?? ''}: ${result.error ?? ''}`;
+  }
   if (serial !== goalSerial) return;
   view.setPlannedPath(undefined);
-  if (result.success) {
+  plannedPath = undefined;
+  if (ok) {
     goalState = 'reached';
     setStatus('Goal reached ✓', 'ok');
   } else {
     goalState = 'failed';
-    setStatus(`Stopped: ${result.code} – ${result.error ?? ''}`, 'bad');
+    setStatus(`Stopped: ${why}`, 'bad');
   }
 }
 
@@ -184,7 +243,14 @@ renderer.domElement.addEventListener('pointerup', (e) => {
 const held = new Set<string>();
 let lastDrive = '';
 
-async function applyTeleop(): Promise<void> {
+// Teleop actions run one after another, each for the keys held when it runs, so a quick release
+// can never be overtaken by the drive it ends.
+let teleopChain: Promise<void> = Promise.resolve();
+function applyTeleop(): void {
+  teleopChain = teleopChain.then(teleopNow).catch(() => undefined);
+}
+
+async function teleopNow(): Promise<void> {
   const powers = powersFor(held);
   const signature = JSON.stringify(powers ?? null);
   if (signature === lastDrive) return;
@@ -194,7 +260,7 @@ async function applyTeleop(): Promise<void> {
     setStatus('Stopped');
     return;
   }
-  cancelGoal();
+  if (goalState === 'driving') await cancelGoal();
   setStatus(`Driving: left ${powers.left}, right ${powers.right}`);
   const result = await hal.locomotion.drive(powers.left, powers.right);
   if (!result.success) {
@@ -217,9 +283,9 @@ window.addEventListener('keydown', (e) => {
   if (key === ' ') {
     e.preventDefault();
     held.clear();
-    cancelGoal();
     lastDrive = 'null';
     void hal.locomotion.stop().then((r) => record('stop()', r));
+    void cancelGoal();
     setStatus('Stopped');
     return;
   }
@@ -227,24 +293,23 @@ window.addEventListener('keydown', (e) => {
   e.preventDefault();
   if (!held.has(key)) {
     held.add(key);
-    void applyTeleop();
+    applyTeleop();
   }
 });
 window.addEventListener('keyup', (e) => {
   const key = keyName(e);
-  if (held.delete(key)) void applyTeleop();
+  if (held.delete(key)) applyTeleop();
 });
 window.addEventListener('blur', () => {
   if (held.size === 0) return;
   held.clear();
-  void applyTeleop();
+  applyTeleop();
 });
 
 // ---- buttons and menus ---------------------------------------------------------------------------
 
 const estopButton = element<HTMLButtonElement>('estop-button');
 async function emergencyStop(): Promise<void> {
-  cancelGoal();
   held.clear();
   if (hal.safety.isEmergencyStopped()) {
     record('resetEmergencyStop()', await hal.safety.resetEmergencyStop());
@@ -252,6 +317,7 @@ async function emergencyStop(): Promise<void> {
   } else {
     record('emergencyStop()', await hal.safety.emergencyStop('stop button in the demo'));
     setStatus('EMERGENCY STOP latched: motion is refused until you reset it', 'bad');
+    await cancelGoal();
   }
   lastDrive = '';
 }
@@ -264,13 +330,16 @@ plotCanvas.addEventListener('click', (e) => {
   const { width, height } = world.map.arena;
   if (Math.abs(p.x) <= width / 2 && Math.abs(p.y) <= height / 2) void goTo(p.x, p.y);
 });
-function resetWorld(name: BuiltinMapName): void {
-  cancelGoal();
+async function resetWorld(name: BuiltinMapName): Promise<void> {
+  await cancelGoal();
   goalState = 'none';
   held.clear();
   lastDrive = '';
   mapName = name;
   world.setMap(name);
+  grid = OccupancyGrid.fromMap(world.map);
+  bridge = makeBridge();
+  showGrid();
   plot.clear();
   if (followToggle.checked) startFollowing();
   else frameArena();
@@ -286,16 +355,25 @@ for (const name of mapNames) {
 }
 mapSelect.value = mapName;
 mapSelect.addEventListener('change', () => {
-  resetWorld(mapSelect.value as BuiltinMapName);
+  void resetWorld(mapSelect.value as BuiltinMapName);
   mapSelect.blur();
 });
-element<HTMLButtonElement>('reset-button').addEventListener('click', () => resetWorld(mapName));
+element<HTMLButtonElement>('reset-button').addEventListener(
+  'click',
+  () => void resetWorld(mapName),
+);
 
 const speedSelect = element<HTMLSelectElement>('speed-select');
 speedSelect.value = String(speed);
 speedSelect.addEventListener('change', () => {
   world.startRealtime({ speed: Number(speedSelect.value) });
   speedSelect.blur();
+});
+
+planToggle.addEventListener('change', () => planToggle.blur());
+gridToggle.addEventListener('change', () => {
+  gridToggle.blur();
+  showGrid();
 });
 
 const followToggle = element<HTMLInputElement>('follow-toggle');
@@ -399,6 +477,7 @@ function showTelemetry(): void {
 // ---- the frame loop ------------------------------------------------------------------------------
 
 let lastTelemetry = 0;
+let shownGridVersion = -1;
 function frame(now: number): void {
   follow();
   controls.update();
@@ -407,7 +486,11 @@ function frame(now: number): void {
   robotCamera.render(robotId);
   const robot = hal.robot;
   plot.record(robot.x, robot.y);
-  plot.draw(world, robotId, goal);
+  plot.draw(world, robotId, goal, plannedPath);
+  if (gridToggle.checked && grid.version !== shownGridVersion) {
+    shownGridVersion = grid.version;
+    showGrid();
+  }
   if (now - lastTelemetry > 100) {
     lastTelemetry = now;
     showTelemetry();

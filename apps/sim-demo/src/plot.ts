@@ -42,7 +42,12 @@ export class TrajectoryPlot {
     return this.#trail;
   }
 
-  draw(world: World, robotId: string, goal: { x: number; y: number } | undefined): void {
+  draw(
+    world: World,
+    robotId: string,
+    goal: { x: number; y: number } | undefined,
+    path?: ReadonlyArray<{ x: number; y: number }>,
+  ): void {
     const ctx = this.#ctx;
     const { width: w, height: h } = this.#canvas;
     const { arena } = world.map;
@@ -93,6 +98,17 @@ export class TrajectoryPlot {
         i === 0 ? ctx.moveTo(px(p.x), py(p.y)) : ctx.lineTo(px(p.x), py(p.y)),
       );
       ctx.stroke();
+    }
+    if (path !== undefined && path.length > 1) {
+      ctx.strokeStyle = '#1565c0';
+      ctx.lineWidth = 1.2 * k;
+      ctx.setLineDash([4 * k, 3 * k]);
+      ctx.beginPath();
+      path.forEach((p, i) =>
+        i === 0 ? ctx.moveTo(px(p.x), py(p.y)) : ctx.lineTo(px(p.x), py(p.y)),
+      );
+      ctx.stroke();
+      ctx.setLineDash([]);
     }
     if (goal !== undefined) {
       ctx.strokeStyle = '#d81b60';

@@ -22,7 +22,7 @@ export interface OccupancyGridView {
   resolution: number;
   /** World position of the corner of cell (0, 0), metres. */
   origin: { x: number; y: number };
-  /** Occupancy per cell, 0 (free) .. 1 (occupied); negative: unknown. */
+  /** Occupancy per cell, 0 (free) .. 1 (occupied); negative: unknown. Drawn: above 0.5 red, unknown blue haze, free clear. */
   data: ArrayLike<number>;
 }
 
@@ -217,10 +217,11 @@ export class WorldScene {
       const v = grid.data[i] ?? -1;
       const o = i * 4;
       if (v < 0) {
-        pixels.set([120, 120, 140, 70], o);
+        pixels.set([90, 110, 150, 40], o); // unknown: a faint blue haze
+      } else if (v > 0.5) {
+        pixels.set([150, 30, 50, Math.round(60 + (v - 0.5) * 2 * 140)], o); // occupied
       } else {
-        const k = Math.min(1, v);
-        pixels.set([30, 30, 40, Math.round(k * 200)], o);
+        pixels.set([0, 0, 0, 0], o); // free
       }
     }
     const texture = new THREE.DataTexture(pixels, grid.width, grid.height);
