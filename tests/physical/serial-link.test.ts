@@ -118,13 +118,15 @@ describe('the serial link to the emulator', () => {
           port.write(Buffer.concat([noise(), bytes]), callback);
           return true;
         },
-        on: ((event: 'data' | 'error', listener: (value: never) => void) => {
+        on: ((event: 'data' | 'error' | 'close', listener: (value: never) => void) => {
           if (event === 'data') {
             port.on('data', (chunk) =>
               (listener as (c: Uint8Array) => void)(Buffer.concat([noise(), chunk])),
             );
-          } else {
+          } else if (event === 'error') {
             port.on('error', listener as (e: Error) => void);
+          } else {
+            port.on('close', listener as () => void);
           }
           return undefined;
         }) as SerialPortLike['on'],

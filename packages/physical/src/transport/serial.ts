@@ -20,6 +20,7 @@ export interface SerialPortLike {
   write(data: Uint8Array, callback?: (error?: Error | null) => void): unknown;
   on(event: 'data', listener: (chunk: Uint8Array) => void): unknown;
   on(event: 'error', listener: (error: Error) => void): unknown;
+  on(event: 'close', listener: () => void): unknown;
   close(callback?: (error?: Error | null) => void): unknown;
   readonly isOpen: boolean;
 }
@@ -111,14 +112,42 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
       let partialTimer: ReturnType<typeof setTimeout> | undefined;
       let chain: Promise<unknown> = Promise.resolve();
 
-      const write = (bytes: Uint8Array) =>
-        new Promise<void>((resolve, reject) => {
+      let reopening: Promise<void> | undefined;
+      /** Opens the port again after it went away (a USB cable pulled, the board reset). */
+      const reopen = async (): Promise<void> => {
+        reopening ??= (async () => {
+          try {
+            const fresh = await open(options.path, baudRate);
+            if (closed) {
+              fresh.close();
+              return;
+            }
+            port = fresh;
+            attach(fresh);
+            log.info('serial port reopened', { path: options.path });
+          } finally {
+            reopening = undefined;
+          }
+        })();
+        return reopening;
+      };
+
+      const write = async (bytes: Uint8Array): Promise<void> => {
+        if (!closed && !port.isOpen) {
+          await reopen().catch((cause: unknown) => {
+            throw new HalError('NOT_CONNECTED', `cannot reopen serial port ${options.path}`, {
+              cause,
+            });
+          });
+        }
+        return new Promise<void>((resolve, reject) => {
           if (closed || !port.isOpen) {
             reject(new HalError('NOT_CONNECTED', 'the serial port is closed'));
             return;
           }
           port.write(bytes, (error) => (error ? reject(error) : resolve()));
         });
+      };
 
       const handle = (events: FrameEvent[]) => {
         for (const event of events) {
@@ -156,17 +185,24 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
         }
       };
 
-      port.on('data', (chunk) => {
-        clearTimeout(partialTimer);
-        handle(decoder.push(new Uint8Array(chunk)));
-        if (decoder.pending > 0) {
-          partialTimer = setTimeout(function abandon() {
-            handle(decoder.abandon());
-            if (decoder.pending > 0) partialTimer = setTimeout(abandon, PARTIAL_FRAME_TIMEOUT_MS);
-          }, PARTIAL_FRAME_TIMEOUT_MS);
-        }
-      });
-      port.on('error', (error) => log.warn('serial port error', { error: error.message }));
+      const attach = (target: SerialPortLike): void => {
+        target.on('data', (chunk) => {
+          if (target !== port) return;
+          clearTimeout(partialTimer);
+          handle(decoder.push(new Uint8Array(chunk)));
+          if (decoder.pending > 0) {
+            partialTimer = setTimeout(function abandon() {
+              handle(decoder.abandon());
+              if (decoder.pending > 0) partialTimer = setTimeout(abandon, PARTIAL_FRAME_TIMEOUT_MS);
+            }, PARTIAL_FRAME_TIMEOUT_MS);
+          }
+        });
+        target.on('error', (error) => log.warn('serial port error', { error: error.message }));
+        target.on('close', () => {
+          if (!closed) log.warn('serial port closed; it is reopened on the next send');
+        });
+      };
+      attach(port);
 
       /** Sends one DATA frame and waits for its ACK, resending the same frame up to `attempts` times. */
       const sendFrame = async (payload: Uint8Array): Promise<void> => {

@@ -1,0 +1,127 @@
+import { describe, expect, it } from 'vitest';
+import { MockRobot } from '../mock/mock-robot.js';
+import { PhysicalHAL } from '../physical-hal.js';
+import { encodeFrame, FrameDecoder } from '../serial/frame.js';
+import type { SerialPortLike } from './serial.js';
+import { serialTransport } from './serial.js';
+
+/**
+ * A serial port whose other end is a mock robot behind the frame layer: it ACKs every DATA frame,
+ * delivers a repeated link seq once, and answers in DATA frames (corrupting every `corruptEvery`th
+ * one, if asked).
+ */
+class FramedMockPort implements SerialPortLike {
+  isOpen = true;
+  readonly #robot: MockRobot;
+  readonly #decoder = new FrameDecoder();
+  readonly #listeners = {
+    data: [] as Array<(c: Uint8Array) => void>,
+    close: [] as Array<() => void>,
+  };
+  readonly #corruptEvery: number;
+  #txSeq = 500;
+  #sent = 0;
+  #lastDelivered: number | undefined;
+
+  constructor(robot: MockRobot, corruptEvery = 0) {
+    this.#robot = robot;
+    this.#corruptEvery = corruptEvery;
+  }
+
+  write(data: Uint8Array, callback?: (error?: Error | null) => void): boolean {
+    const bytes = data.slice();
+    setTimeout(() => {
+      for (const event of this.#decoder.push(bytes)) {
+        if (event.kind !== 'frame' || event.frame.type !== 'data') continue;
+        const { seq, payload } = event.frame;
+        this.#emit(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) }));
+        if (seq === this.#lastDelivered) continue;
+        this.#lastDelivered = seq;
+        const reply = this.#robot.receive(payload);
+        if (reply === undefined) continue;
+        const frame = encodeFrame({ type: 'data', seq: this.#txSeq++ & 0xffff, payload: reply });
+        this.#sent += 1;
+        if (this.#corruptEvery > 0 && this.#sent % this.#corruptEvery === 0) frame[12]! ^= 0x04;
+        this.#emit(frame);
+      }
+    }, 0);
+    callback?.(null);
+    return true;
+  }
+
+  on(event: 'data' | 'error' | 'close', listener: (value: never) => void): this {
+    if (event === 'data') this.#listeners.data.push(listener as (c: Uint8Array) => void);
+    if (event === 'close') this.#listeners.close.push(listener as () => void);
+    return this;
+  }
+
+  close(callback?: (error?: Error | null) => void): void {
+    this.unplug();
+    callback?.(null);
+  }
+
+  /** The cable is pulled. */
+  unplug(): void {
+    if (!this.isOpen) return;
+    this.isOpen = false;
+    for (const listener of this.#listeners.close) listener();
+  }
+
+  #emit(bytes: Uint8Array): void {
+    if (!this.isOpen) return;
+    for (const listener of this.#listeners.data) listener(bytes);
+  }
+}
+
+function halOver(robot: MockRobot, ports: FramedMockPort[], corruptEvery = 0): PhysicalHAL {
+  const open = async () => {
+    const port = new FramedMockPort(robot, corruptEvery);
+    ports.push(port);
+    return port;
+  };
+  return new PhysicalHAL(
+    { mode: 'physical', deviceId: 'cube-serial' },
+    { transport: serialTransport({ path: 'mock', open, timeoutMs: 50 }), timeScale: 50 },
+  );
+}
+
+describe('serialTransport', () => {
+  it('carries PhysicalHAL to the robot in acknowledged frames', async () => {
+    const robot = new MockRobot({ timeScale: 50, hostTimeoutMs: 10_000 });
+    const hal = halOver(robot, []);
+    await hal.initialize();
+    expect((await hal.locomotion.moveForward(5)).success).toBe(true);
+    expect(robot.position).toEqual({ left: 1086, right: 1086 });
+    const link = hal.linkStats()!;
+    expect(link.framesSent).toBeGreaterThan(2);
+    expect(link.acksReceived).toBe(link.framesSent);
+    expect(link.acksSent).toBe(link.framesReceived);
+    await hal.cleanup();
+  });
+
+  it('drops corrupted reply frames by their CRC and recovers each reply exactly once', async () => {
+    const robot = new MockRobot({ timeScale: 50, hostTimeoutMs: 10_000 });
+    const hal = halOver(robot, [], 3);
+    await hal.initialize();
+    for (let i = 0; i < 5; i++) expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+    expect(robot.motionsStarted).toBe(5);
+    expect(hal.linkStats()!.checksumErrors).toBeGreaterThan(0);
+    expect(hal.transportStats()!.retries).toBeGreaterThan(0);
+    await hal.cleanup();
+  });
+
+  it('reopens the port after it goes away', async () => {
+    const robot = new MockRobot({ timeScale: 50, hostTimeoutMs: 10_000 });
+    const ports: FramedMockPort[] = [];
+    const hal = halOver(robot, ports);
+    await hal.initialize();
+    ports[0]!.unplug();
+    expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+    expect(ports).toHaveLength(2);
+    await hal.cleanup();
+  });
+
+  it('refuses a bad baud rate with a message that quotes the argument', () => {
+    expect(() => serialTransport({ path: '/dev/ttyUSB0', baudRate: -1 })).toThrow('"baudRate"');
+  });
+});
