@@ -337,6 +337,7 @@ async function resetWorld(name: BuiltinMapName): Promise<void> {
   lastDrive = '';
   mapName = name;
   world.setMap(name);
+  hal.simulateHostSilence(silentToggle.checked);
   grid = OccupancyGrid.fromMap(world.map);
   bridge = makeBridge();
   showGrid();
@@ -374,6 +375,17 @@ planToggle.addEventListener('change', () => planToggle.blur());
 gridToggle.addEventListener('change', () => {
   gridToggle.blur();
   showGrid();
+});
+
+const silentToggle = element<HTMLInputElement>('silent-toggle');
+silentToggle.addEventListener('change', () => {
+  silentToggle.blur();
+  hal.simulateHostSilence(silentToggle.checked);
+  note(
+    silentToggle.checked
+      ? `host silent: a motion stops ${hal.robot.config.hostTimeoutMs} ms after the last command`
+      : 'host talking again',
+  );
 });
 
 const followToggle = element<HTMLInputElement>('follow-toggle');
