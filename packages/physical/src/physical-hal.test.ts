@@ -29,6 +29,13 @@ describe('PhysicalHAL', () => {
       expect(result.success, JSON.stringify(result)).toBe(true);
       expect(robot.position).toEqual({ left: 2172, right: 2172 });
       expect(robot.requests.filter((r) => r['cmd'] === 'move_cm')).toHaveLength(1);
+      expect(robot.requests.find((r) => r['cmd'] === 'move_cm')).toMatchObject({
+        left_cm: 10,
+        right_cm: 10,
+        sid: expect.any(Number),
+        seq: expect.any(Number),
+      });
+      expect(robot.lastRequest?.['cmd']).toBe('get_status');
       expect(result.data).toMatchObject({ leftSteps: 2172, rightSteps: 2172 });
       await hal.cleanup();
     });

@@ -130,6 +130,11 @@ export class MockRobot {
     return { left: this.#left, right: this.#right };
   }
 
+  /** The last request received, decoded (undefined before the first). */
+  get lastRequest(): Json | undefined {
+    return this.requests[this.requests.length - 1];
+  }
+
   /** Whether the emergency stop is latched. */
   get estopped(): boolean {
     return this.#estop;
