@@ -251,9 +251,13 @@ export class MockRobot {
     const cmd = typeof request['cmd'] === 'string' ? request['cmd'] : undefined;
     const seq = typeof request['seq'] === 'number' ? request['seq'] : undefined;
     const sid = typeof request['sid'] === 'number' ? request['sid'] : undefined;
-    this.#lastHostUs = this.#robotUs();
-    if (cmd === 'hello') return this.#hello(request, seq);
-    const safety = cmd === 'stop' || cmd === 'estop' || cmd === 'reset_estop';
+    if (cmd === 'hello') {
+      this.#contact();
+      return this.#hello(request, seq);
+    }
+    // with a key, a replayed reset must not clear an e-stop: reset_estop then needs the session
+    const safety =
+      cmd === 'stop' || cmd === 'estop' || (cmd === 'reset_estop' && this.#auth === undefined);
     const seedStyle = seq === undefined && sid === undefined;
     if (seedStyle && this.#auth !== undefined) {
       return this.#error(seq, sid, cmd, new Refusal('AUTH_FAILED', 'requests must carry "seq"'));
@@ -281,7 +285,10 @@ export class MockRobot {
         );
       }
       const remembered = this.#memory.get(seq!);
-      if (remembered !== undefined) return remembered;
+      if (remembered !== undefined) {
+        this.#contact();
+        return remembered;
+      }
       if (seq! <= this.#lastSeq) {
         return this.#error(
           seq,
@@ -291,6 +298,8 @@ export class MockRobot {
         );
       }
     }
+    // only requests that pass the session rules, and seed-style ones, count as contact
+    if (session || seedStyle || sid === this.#sid) this.#contact();
     let reply: Uint8Array;
     try {
       reply = this.#reply({ seq, sid, ok: true, cmd, ...this.#execute(cmd, request) });
@@ -523,7 +532,7 @@ export class MockRobot {
         trips: this.#trips,
         last_trip: this.#lastTrip,
         host_timeout_ms: this.#config.host_timeout_ms,
-        ms_since_host: 0,
+        ms_since_host: Math.max(0, Math.floor((this.#robotUs() - this.#lastHostUs) / 1000)),
         coils_on: this.#motion !== undefined,
       },
       led: { ...this.#led },
@@ -603,6 +612,10 @@ export class MockRobot {
     this.#motion = undefined;
     this.#outcome = outcome;
     return true;
+  }
+
+  #contact(): void {
+    this.#lastHostUs = this.#robotUs();
   }
 
   #trip(reason: string, detail: string): void {
