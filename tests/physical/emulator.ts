@@ -4,12 +4,15 @@
 import { spawn } from 'node:child_process';
 import type { ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
+import { join } from 'node:path';
 import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
 
-export const EMULATOR_PATH = fileURLToPath(
-  new URL('../../firmware/build/cube-emulator', import.meta.url),
-);
+/** The emulator binary: `$CUBE_BUILD_DIR/cube-emulator` when that is set (as for test.sh). */
+export const EMULATOR_PATH =
+  process.env['CUBE_BUILD_DIR'] !== undefined
+    ? join(process.env['CUBE_BUILD_DIR'], 'cube-emulator')
+    : fileURLToPath(new URL('../../firmware/build/cube-emulator', import.meta.url));
 
 /** One line the emulator printed. */
 export type EmulatorEvent = Record<string, unknown> & { event: string };
