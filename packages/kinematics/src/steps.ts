@@ -104,7 +104,7 @@ export function calculateArcSpeeds(
 
 /**
  * Turns distances into whole steps without drift: it carries what each conversion truncated into
- * the next, so 100 moves of 10 cm make 217298 steps, within one step of 1000 cm, not 100 x 2172.
+ * the next, so 100 moves of 10 cm make 217299 steps, within one step of 1000 cm, not 100 x 2172.
  * The firmware keeps one per wheel for `move_cm` and `rotate_deg` and resets them on `set_config`
  * and on a new session.
  */
