@@ -110,6 +110,50 @@ describe('NavigationBridge', () => {
       expect(bridge.grid.stateAt(0.42, 0)).toBe('occupied');
     });
 
+    it('takes short legs into unknown space when it has range sensors, long ones through known space', async () => {
+      const legs: number[] = [];
+      const run = async (grid: OccupancyGrid) => {
+        // Short-sighted sensors: what lies ahead stays unknown until the robot is nearly there.
+        const hal = await ready(new FakeHAL({ start: { x: -1.5, y: 0, yaw: 0 }, maxRange: 0.1 }));
+        const bridge = new NavigationBridge({
+          hal,
+          grid,
+          provider: new GoalSeekingProvider(),
+          rangeSensors: { maxRangeM: 0.1 },
+        });
+        legs.length = 0;
+        let from = { x: -1.5, y: 0 };
+        bridge.on('path', (e) => legs.push(Math.hypot(e.leg.x - from.x, e.leg.y - from.y)));
+        bridge.on('cycle', (e) => {
+          from = e.pose;
+        });
+        return bridge.run({ x: 1.5, y: 0 });
+      };
+      const unknown = new OccupancyGrid();
+      unknown.seedFromMap({ arena: { width: 5, height: 5 } }, { freeSpace: false });
+      expect((await run(unknown)).status).toBe('reached');
+      expect(Math.max(...legs)).toBeLessThanOrEqual(0.15 + 1e-9);
+      const known = OccupancyGrid.fromMap({ arena: { width: 5, height: 5 } });
+      expect((await run(known)).status).toBe('reached');
+      expect(Math.max(...legs)).toBeCloseTo(0.5, 9);
+    });
+
+    it('forgets obstacles seen only once when they close every route, and gets through', async () => {
+      const hal = await ready(new FakeHAL({ start: { x: -1, y: 0, yaw: 0 } }));
+      const grid = OccupancyGrid.fromMap({ arena: { width: 5, height: 5 } });
+      // A stray reading's worth of wall across the whole arena.
+      for (let cy = 0; cy < 100; cy += 1) grid.addEvidence(50, cy, 0.85);
+      const bridge = new NavigationBridge({
+        hal,
+        grid,
+        provider: new GoalSeekingProvider(),
+        rangeSensors: false,
+      });
+      const outcome = await bridge.run({ x: 1, y: 0 });
+      expect(outcome.status).toBe('reached');
+      expect(hal.calls.some((c) => c.name === 'moveForward')).toBe(false);
+    });
+
     it('fails with COLLISION when it hits an obstacle it could not know about, and stops the wheels', async () => {
       const box = { minX: 0.4, minY: -0.5, maxX: 0.8, maxY: 0.5 };
       const hal = await ready(

@@ -116,6 +116,11 @@ export interface NavigationBridgeOptions {
   motionTimeoutMarginMs?: number;
   /** Longest straight leg driven in one cycle, metres (then the bridge senses and re-plans). Default 0.5. */
   maxLegM?: number;
+  /**
+   * Longest leg, metres, when the robot's footprint along it touches unknown cells and range
+   * sensors are in use: short steps map what the robot passes. Default 0.15.
+   */
+  unknownLegM?: number;
   /** Cruise speed for moveTo, m/s. Default the robot's top speed. */
   speed?: number;
   /** Range sensor model for the world model, or false to ignore range sensors. */
@@ -183,6 +188,7 @@ export class NavigationBridge {
   readonly #sensorTimeoutMs: number;
   readonly #motionMarginMs: number;
   readonly #maxLegM: number;
+  readonly #unknownLegM: number;
   readonly #speed: number | undefined;
   readonly #sensorModel: Partial<RangeSensorModel> | false;
   readonly #maxNoPath: number;
@@ -214,6 +220,7 @@ export class NavigationBridge {
       options.motionTimeoutMarginMs ?? 10_000,
     );
     this.#maxLegM = positive('maxLegM', options.maxLegM ?? 0.5);
+    this.#unknownLegM = positive('unknownLegM', options.unknownLegM ?? 0.15);
     this.#speed = options.speed === undefined ? undefined : positive('speed', options.speed);
     this.#sensorModel = options.rangeSensors ?? {};
     this.#maxNoPath = positive('maxNoPathCycles', options.maxNoPathCycles ?? 4, true);
@@ -601,6 +608,12 @@ export class NavigationBridge {
         return this.#motion(state, action, 'moveTo', { x: leg.x, y: leg.y });
       }
     }
+    if (plan.status === 'unreachable' && this.grid.forgetWeakObstacles() > 0) {
+      // Stray readings may have closed the way: forget the obstacles only one or two readings
+      // saw, and try once more (the sensors will put back whatever is really there).
+      this.#logger.info('navigation: no route; forgot weak obstacles and planned again');
+      plan = this.grid.plan(pose, goalPoint);
+    }
     if (plan.status !== 'found') {
       return this.#noRoute(
         state,
@@ -622,12 +635,18 @@ export class NavigationBridge {
       return { report: { action, success: true }, moved: false };
     }
     const span = distance(pose, next);
+    // Into unknown space, with range sensors, take short steps: each cycle's readings then map
+    // what the robot passes (a thin wall seen side-on from far apart poses comes out as dashes).
+    const limit =
+      this.#sensorsInUse() && this.#entersUnknown(pose, next)
+        ? Math.min(this.#maxLegM, this.#unknownLegM)
+        : this.#maxLegM;
     const leg =
-      span <= this.#maxLegM
+      span <= limit
         ? next
         : {
-            x: pose.x + ((next.x - pose.x) * this.#maxLegM) / span,
-            y: pose.y + ((next.y - pose.y) * this.#maxLegM) / span,
+            x: pose.x + ((next.x - pose.x) * limit) / span,
+            y: pose.y + ((next.y - pose.y) * limit) / span,
           };
     this.#events.emit('path', { cycle: state.cycle, target, plan: { ...plan, waypoints }, leg });
     // Look before driving: with range sensors, first turn to face the leg, so the front sensor
@@ -891,6 +910,29 @@ export class NavigationBridge {
         if (cell !== undefined) this.grid.addEvidence(cell.cx, cell.cy, 2 * this.grid.model.hit);
       }
     }
+  }
+
+  /** Whether the robot's footprint, swept from `from` to `to`, touches an unknown cell. */
+  #entersUnknown(from: Point, to: Point): boolean {
+    const { resolutionM } = this.grid.spec;
+    const reach = this.grid.robotRadiusM + resolutionM / 2;
+    const length = distance(from, to);
+    const steps = Math.max(1, Math.ceil(length / (resolutionM / 2)));
+    const ring = Math.ceil(reach / resolutionM);
+    for (let k = 1; k <= steps; k += 1) {
+      const x = from.x + ((to.x - from.x) * k) / steps;
+      const y = from.y + ((to.y - from.y) * k) / steps;
+      const centre = worldToCell(this.grid.spec, x, y);
+      if (centre === undefined) continue;
+      for (let dy = -ring; dy <= ring; dy += 1) {
+        for (let dx = -ring; dx <= ring; dx += 1) {
+          const c = cellCentre(this.grid.spec, centre.cx + dx, centre.cy + dy);
+          if (Math.hypot(c.x - x, c.y - y) > reach) continue;
+          if (this.grid.stateOf(centre.cx + dx, centre.cy + dy) === 'unknown') return true;
+        }
+      }
+    }
+    return false;
   }
 
   #sensorsInUse(): boolean {

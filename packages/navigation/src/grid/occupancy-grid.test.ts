@@ -128,6 +128,22 @@ describe('OccupancyGrid', () => {
       expect(grid.stateAt(-1, 0.01)).toBe('free'); // left of a robot facing +y is -x
     });
 
+    it('marks only the unknown cells of the arc when the grid already explains the reading', () => {
+      const grid = new OccupancyGrid();
+      // A known obstacle ahead (0.57, 0) and, beside it on the arc, one free and one unknown cell.
+      grid.setLogOdds(61, 50, 4);
+      grid.setLogOdds(61, 51, -2);
+      const sensors = { maxRangeM: 2, originOffsetM: 0.07, rays: 5, fieldOfViewDeg: 20 };
+      grid.integrateRangeReadings(
+        { x: 0.01, y: 0.01, yaw: 0 },
+        { front: 0.5, left: 2, right: 2 },
+        sensors,
+      );
+      expect(grid.stateOf(61, 50)).toBe('occupied');
+      expect(grid.stateOf(61, 51)).toBe('free'); // known free stays free
+      expect(grid.stateAt(0.57, -0.07)).toBe('occupied'); // unknown on the arc: suspect
+    });
+
     it('ignores readings that are not finite numbers', () => {
       const grid = new OccupancyGrid();
       grid.integrateRangeReadings(
@@ -135,6 +151,24 @@ describe('OccupancyGrid', () => {
         { front: Number.NaN, left: Infinity, right: -1 },
       );
       expect(grid.counts().unknown).toBe(10_000);
+    });
+  });
+
+  describe('#forgetWeakObstacles', () => {
+    it('turns obstacles seen once or twice back to unknown, and keeps the well-seen and the mapped', () => {
+      const grid = new OccupancyGrid();
+      grid.seedFromMap({
+        arena: { width: 5, height: 5 },
+        obstacles: [{ kind: 'box', x: 1, y: 1, width: 0.1, depth: 0.1 }],
+      });
+      grid.addEvidence(10, 10, 0.85 + 0.2); // one hit on a seeded free cell: weak
+      for (let k = 0; k < 5; k += 1) grid.addEvidence(20, 20, 0.85); // many hits: strong
+      expect(grid.stateOf(10, 10)).toBe('occupied');
+      expect(grid.forgetWeakObstacles()).toBe(1);
+      expect(grid.stateOf(10, 10)).toBe('unknown');
+      expect(grid.obstacles.isObstacle(10, 10)).toBe(false);
+      expect(grid.stateOf(20, 20)).toBe('occupied');
+      expect(grid.stateAt(1, 1)).toBe('occupied');
     });
   });
 

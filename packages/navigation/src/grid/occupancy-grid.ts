@@ -220,6 +220,23 @@ export class OccupancyGrid {
     this.setLogOdds(cx, cy, (this.logOdds[cy * this.spec.width + cx] as number) + delta);
   }
 
+  /**
+   * Forgets weak obstacles: occupied cells whose log-odds is below `below` (default two hits'
+   * worth) become unknown. Cells a known map marked, or that many readings agree on, stay. For
+   * recovering when stray readings have closed every route. Returns how many cells it cleared.
+   */
+  forgetWeakObstacles(below = 2 * this.model.hit): number {
+    let cleared = 0;
+    for (let i = 0; i < this.logOdds.length; i += 1) {
+      const l = this.logOdds[i] as number;
+      if (l >= this.model.occupiedAt && l < below) {
+        this.setLogOdds(i % this.spec.width, Math.floor(i / this.spec.width), 0);
+        cleared += 1;
+      }
+    }
+    return cleared;
+  }
+
   /** Forgets everything: every cell unknown. */
   reset(): void {
     this.logOdds.fill(0);
@@ -309,9 +326,10 @@ export class OccupancyGrid {
   /**
    * Lays the front, left and right (and, when present, front-left and front-right) readings
    * taken at `pose` into the grid. Each sensor adds free evidence across its field of view up to
-   * its reading. A reading short of the maximum range that the grid does not already explain (no
-   * occupied cell in the cone at about that distance) adds occupied evidence on the arc of the
-   * field of view at that distance. Non-finite readings are ignored.
+   * its reading. A reading short of the maximum range adds occupied evidence on the arc of the
+   * field of view at that distance: on the whole arc when the grid does not already explain the
+   * reading (no occupied cell in the cone at about that distance), else on the arc's unknown
+   * cells only. Non-finite readings are ignored.
    */
   integrateRangeReadings(
     pose: Pose2D,
@@ -344,10 +362,12 @@ export class OccupancyGrid {
       const unexpected = hit && range < expected - 2 * this.spec.resolutionM;
       // Free evidence across the cone: nothing in it is nearer than the reading.
       for (const angle of angles) this.integrateRay(pose.x, pose.y, angle, range, false);
-      if (!unexpected) continue;
+      if (!hit) continue;
       // Occupied evidence on the arc at the reading's distance: a cone's reading does not say
       // where across the cone the obstacle is, so the whole arc is suspect (free evidence from
-      // other views clears the parts that are not).
+      // other views clears the parts that are not). When the grid already explains the reading,
+      // only the arc's unknown cells are marked: they may hide more of the same obstacle (the
+      // rest of a wall seen in dashes), while cells known free stay free.
       const arc = new Set<number>();
       const steps = Math.max(1, Math.ceil((range * fov) / (this.spec.resolutionM / 2)));
       for (let k = 0; k <= steps; k += 1) {
@@ -357,7 +377,9 @@ export class OccupancyGrid {
           pose.x + range * Math.cos(angle),
           pose.y + range * Math.sin(angle),
         );
-        if (end !== undefined) arc.add(end.cy * this.spec.width + end.cx);
+        if (end === undefined) continue;
+        if (!unexpected && this.stateOf(end.cx, end.cy) !== 'unknown') continue;
+        arc.add(end.cy * this.spec.width + end.cx);
       }
       for (const index of arc) {
         this.addEvidence(
