@@ -196,6 +196,41 @@ describe('PhysicalHAL', () => {
     });
   });
 
+  describe('#emergencyStop', () => {
+    it('stays latched on the host when the stop cannot reach the robot, and stops it on reconnection', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
+      const hal = halOn(robot, { requestTimeoutMs: 20, attempts: 2, reconnectIntervalMs: 20 });
+      await hal.initialize();
+      robot.unresponsive = true;
+      const stop = await hal.safety.emergencyStop('link test');
+      expect(stop.code).toBe('NOT_CONNECTED');
+      expect(hal.safety.isEmergencyStopped()).toBe(true);
+      expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe('link test');
+      robot.restart();
+      robot.unresponsive = false;
+      await expect.poll(() => robot.estopped, { timeout: 5000 }).toBe(true);
+      expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+      expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+      expect(hal.safety.isEmergencyStopped()).toBe(false);
+      expect(robot.estopped).toBe(false);
+      expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+      await hal.cleanup();
+    });
+
+    it('learns of a latch the robot set by itself from its refusal', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
+      const hal = halOn(robot);
+      await hal.initialize();
+      // another host trips the robot's step limit
+      robot.handle(new TextEncoder().encode('{"cmd":"move_steps","left":50000,"right":0}'));
+      expect(hal.safety.isEmergencyStopped()).toBe(false);
+      expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+      expect(hal.safety.isEmergencyStopped()).toBe(true);
+      expect(hal.safety.getSafetyStatus().emergencyStopReason).toContain('step limit');
+      await hal.cleanup();
+    });
+  });
+
   describe('#getDistanceSensors', () => {
     it('rejects with NOT_IMPLEMENTED: the V1 robot has no range sensors', async () => {
       const hal = halOn(new MockRobot());

@@ -3,6 +3,7 @@ import {
   HalBoundary,
   HALConfigSchema,
   HalError,
+  isHalError,
   robotConfig,
   stepsPerCm,
   V1_ROBOT,
@@ -163,8 +164,15 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   #session: Session | undefined;
   #identity: RobotIdentity | undefined;
   #initialized = false;
-  #estop = false;
-  #estopReason: string | undefined;
+  /** The robot's own latch, as its last reply said. */
+  #robotEstop = false;
+  #robotEstopReason: string | undefined;
+  /**
+   * The host's latch: set by emergencyStop() before anything is sent, cleared only by an accepted
+   * reset. It keeps motion refused even if the stop never reached the robot, or the robot restarted
+   * (which clears its own latch); on reconnection the HAL e-stops the robot again.
+   */
+  #hostEstop: string | undefined;
   #lastStatus: StatusReply | undefined;
   #linkError: string | undefined;
   #initializing: Promise<void> | undefined;
@@ -203,7 +211,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#boundary = new HalBoundary({
       mode: this.mode,
       config: () => this.#robot,
-      isEmergencyStopped: () => this.#estop,
+      isEmergencyStopped: () => this.#isEstopped(),
       // initialised is enough here: a lost link is reported by the call itself, as NOT_CONNECTED
       isReady: () => this.#initialized,
       now: this.#now,
@@ -342,7 +350,15 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     if (session === undefined) {
       return Promise.reject(new HalError('NOT_READY', 'the HAL is not initialised'));
     }
-    return session.command(cmd, params);
+    return session.command(cmd, params).catch((error: unknown) => {
+      if (isHalError(error) && error.code === 'EMERGENCY_STOPPED') {
+        // the robot latched on its own (a step-limit trip, another host): cache what it says
+        this.#robotEstop = true;
+        const robotDetails = error.details?.['robotDetails'] as Record<string, unknown> | undefined;
+        this.#robotEstopReason = String(robotDetails?.['reason'] ?? 'emergency stop');
+      }
+      throw error;
+    });
   }
 
   #learn(hello: HelloReply): void {
@@ -358,10 +374,18 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#tracker.setConfig(this.#robot);
   }
 
+  #isEstopped(): boolean {
+    return this.#robotEstop || this.#hostEstop !== undefined;
+  }
+
   async #resync(hello: HelloReply): Promise<void> {
     this.#learn(hello);
     try {
       const status = await this.#command('get_status', {});
+      if (this.#hostEstop !== undefined && !status.safety.estop) {
+        // the stop never arrived, or the robot restarted and forgot it: stop it again
+        await this.#command('estop', { reason: this.#hostEstop });
+      }
       this.#log.info('reconnected', { sid: hello.sid, uptimeMs: status.uptime_ms });
     } catch (error) {
       this.#log.warn('status after reconnect failed', { error: String(error) });
@@ -380,22 +404,23 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
         const status = data as unknown as StatusReply;
         this.#lastStatus = status;
         this.#tracker.update(status);
-        this.#estop = status.safety.estop;
-        this.#estopReason = status.safety.estop ? status.safety.estop_reason : undefined;
+        this.#robotEstop = status.safety.estop;
+        this.#robotEstopReason = status.safety.estop ? status.safety.estop_reason : undefined;
         break;
       }
       case 'heartbeat':
-        this.#estop = data['estop'] === true;
-        if (!this.#estop) this.#estopReason = undefined;
+        this.#robotEstop = data['estop'] === true;
+        if (!this.#robotEstop) this.#robotEstopReason = undefined;
         break;
       case 'estop':
-        this.#estop = true;
-        this.#estopReason = String(data['estop_reason'] ?? '');
+        this.#robotEstop = true;
+        this.#robotEstopReason = String(data['estop_reason'] ?? '');
         this.#tracker.motionStopped();
         break;
       case 'reset_estop':
-        this.#estop = false;
-        this.#estopReason = undefined;
+        this.#robotEstop = false;
+        this.#robotEstopReason = undefined;
+        this.#hostEstop = undefined;
         break;
       case 'stop':
         this.#tracker.updateCounters(Number(data['left_steps']), Number(data['right_steps']));
@@ -672,12 +697,12 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     return {
       emergencyStop: (reason) =>
         b.call('emergencyStop', { reason }, async (p) => {
-          this.#estop = true; // refuse motion at once, whatever the link does
-          this.#estopReason = p.reason ?? 'emergency stop';
-          const reply = await this.#command('estop', { reason: this.#estopReason });
+          const reason = p.reason ?? 'emergency stop';
+          this.#hostEstop = reason; // refuse motion at once, whatever the link does
+          const reply = await this.#command('estop', { reason });
           return { estop: reply.estop, reason: reply.estop_reason };
         }),
-      isEmergencyStopped: () => this.#estop,
+      isEmergencyStopped: () => this.#isEstopped(),
       resetEmergencyStop: () =>
         b.call('resetEmergencyStop', {}, async () => {
           const reply = await this.#command('reset_estop', {});
@@ -689,11 +714,12 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
         const trip = this.#lastStatus?.safety.last_trip;
         if (trip !== undefined) errors.push(`last trip: ${trip.reason} (${trip.detail})`);
         const status: SafetyStatus = {
-          emergencyStopped: this.#estop,
+          emergencyStopped: this.#isEstopped(),
           batteryLevel: 100,
           errors,
         };
-        if (this.#estopReason !== undefined) status.emergencyStopReason = this.#estopReason;
+        const reason = this.#robotEstopReason ?? this.#hostEstop;
+        if (this.#isEstopped() && reason !== undefined) status.emergencyStopReason = reason;
         return status;
       },
     };
