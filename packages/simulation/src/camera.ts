@@ -1,4 +1,4 @@
-import type { SimRobot } from './robot.js';
+import type { SimRobot } from './robot/sim-robot.js';
 import { hitsXFace, rayEnter } from './shapes.js';
 import type { CylinderSolid, Rgb, Solid } from './shapes.js';
 import type { World } from './world.js';

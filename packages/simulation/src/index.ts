@@ -1,28 +1,21 @@
-export { SimulationHAL } from './hal.js';
+export { SimulationHAL } from './hal/simulation-hal.js';
+export type { CommunicationEvent, SimulationHALEvents } from './hal/events.js';
 export type {
-  CommunicationEvent,
   FrameSource,
   SimLogger,
   SimulatedFeatures,
   SimulationClock,
-  SimulationHALEvents,
   SimulationHALOptions,
-} from './hal.js';
+} from './hal/options.js';
 
 export { Emitter, World } from './world.js';
 export type { AddRobotOptions, RealtimeOptions, WorldEvents, WorldOptions } from './world.js';
 
-export { SimRobot } from './robot.js';
-export type {
-  Contact,
-  ContactTest,
-  LedState,
-  MotionHandle,
-  MotionReport,
-  MoveOutcome,
-  SafetyTrip,
-  SimRobotOptions,
-} from './robot.js';
+export { SimRobot } from './robot/sim-robot.js';
+export type { LedState, SimRobotOptions } from './robot/sim-robot.js';
+export type { Contact, ContactTest } from './robot/contact.js';
+export type { MotionHandle, MotionReport, MoveOutcome } from './robot/motion-report.js';
+export type { SafetyTrip } from './robot/robot-safety.js';
 
 export {
   BoxObstacleSchema,

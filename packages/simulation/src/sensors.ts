@@ -1,5 +1,5 @@
 import type { DistanceSensors, IMUReading, ScanResult } from '@hal/types';
-import type { SimRobot } from './robot.js';
+import type { SimRobot } from './robot/sim-robot.js';
 import { rayEnter } from './shapes.js';
 import type { Solid } from './shapes.js';
 import type { World } from './world.js';

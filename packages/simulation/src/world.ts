@@ -5,8 +5,8 @@ import type { WorldMap, WorldMapInput } from './map.js';
 import { BUILTIN_MAPS } from './maps/index.js';
 import type { BuiltinMapName } from './maps/index.js';
 import { SeededRandom } from './rng.js';
-import { SimRobot } from './robot.js';
-import type { Contact } from './robot.js';
+import { SimRobot } from './robot/sim-robot.js';
+import type { Contact } from './robot/contact.js';
 import { discContact, solidsOf } from './shapes.js';
 import type { Solid } from './shapes.js';
 

@@ -1,6 +1,6 @@
 import * as THREE from 'three';
 import type { CameraOptions } from '../camera.js';
-import type { FrameSource } from '../hal.js';
+import type { FrameSource } from '../hal/options.js';
 import type { WorldScene } from './scene.js';
 
 export interface ThreeFrameSourceOptions extends CameraOptions {

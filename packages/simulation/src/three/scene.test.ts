@@ -1,7 +1,8 @@
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
 import { World } from '../world.js';
-import { fromThree, toThree, WorldScene } from './scene.js';
+import { fromThree, toThree } from './coordinates.js';
+import { WorldScene } from './scene.js';
 
 function meshes(scene: THREE.Object3D): THREE.Mesh[] {
   const found: THREE.Mesh[] = [];

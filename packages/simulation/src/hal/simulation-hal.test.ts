@@ -1,8 +1,8 @@
 import { isHalError } from '@hal/types';
 import { afterEach, describe, expect, it } from 'vitest';
-import { SimulationHAL } from './hal.js';
-import type { CommunicationEvent } from './hal.js';
-import { World } from './world.js';
+import { SimulationHAL } from './simulation-hal.js';
+import type { CommunicationEvent } from './events.js';
+import { World } from '../world.js';
 
 const hals: SimulationHAL[] = [];
 async function ready(hal: SimulationHAL): Promise<SimulationHAL> {

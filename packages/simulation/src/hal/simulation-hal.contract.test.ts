@@ -1,5 +1,5 @@
 import { describeHalContract } from '@hal/types/testing';
-import { SimulationHAL } from './hal.js';
+import { SimulationHAL } from './simulation-hal.js';
 
 // The HAL advances the clock itself until each motion ends.
 describeHalContract('SimulationHAL (fast clock)', {

@@ -1,7 +1,7 @@
 import { distanceToSteps, MovePlan, VelocityPlan } from '@hal/kinematics';
 import { isHalError, robotConfig } from '@hal/types';
 import { describe, expect, it } from 'vitest';
-import { SimRobot } from './robot.js';
+import { SimRobot } from './sim-robot.js';
 
 function runToEnd(robot: SimRobot, stepUs = 1000): void {
   let t = robot.nowUs;

@@ -1,0 +1,20 @@
+import { BUILTIN_MAPS } from '@hal/simulation';
+import type { BuiltinMapName } from '@hal/simulation';
+
+/** The built-in maps, in the order the map menu lists them. */
+export const MAP_NAMES = Object.keys(BUILTIN_MAPS) as BuiltinMapName[];
+
+/** The simulation speeds the speed menu offers. */
+const SPEEDS = [1, 2, 5, 10, 20];
+
+/** What the page's URL asks for (`?map=maze&speed=10`), with defaults for anything else. */
+export function readUrlSettings(search: string): { mapName: BuiltinMapName; speed: number } {
+  const params = new URLSearchParams(search);
+  const requestedMap = params.get('map');
+  const mapName: BuiltinMapName = MAP_NAMES.includes(requestedMap as BuiltinMapName)
+    ? (requestedMap as BuiltinMapName)
+    : 'obstacles';
+  const requestedSpeed = Number(params.get('speed') ?? '5');
+  const speed = SPEEDS.includes(requestedSpeed) ? requestedSpeed : 5;
+  return { mapName, speed };
+}

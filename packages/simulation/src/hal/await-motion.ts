@@ -1,0 +1,83 @@
+import { HalError } from '@hal/types';
+import type { MotionHandle, MotionReport } from '../robot/motion-report.js';
+import type { SimRobot } from '../robot/sim-robot.js';
+import type { HalContext } from './context.js';
+
+/** The robot's pose as results carry it: metres and radians, world frame. */
+export function poseData(robot: SimRobot): Record<string, number> {
+  return { x: robot.x, y: robot.y, yaw: robot.yaw };
+}
+
+/**
+ * Waits for a motion to end and returns its report, or throws: COLLISION (with the contact),
+ * INTERRUPTED (with the outcome), or TIMEOUT (the robot is then stopped). In the fast clock the
+ * HAL advances the world itself; otherwise it waits for whoever drives the clock.
+ */
+export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promise<MotionReport> {
+  const report = handle.report;
+  ctx.events.emit('motionStarted', { ...report });
+  const planned = Number.isFinite(report.durationUs) ? report.durationUs : 0;
+  const robot = ctx.robot();
+  if (ctx.clock === 'fast') {
+    // The motion's own plan bounds the wait; the margin covers one tick and rounding.
+    const limit = planned + 1_000_000;
+    ctx.world.advanceUntil(() => report.outcome !== 'running', limit);
+  } else {
+    await waitForClock(ctx, report, handle.finished, planned);
+  }
+  if (report.outcome === 'running') {
+    robot.stop();
+    throw new HalError(
+      'TIMEOUT',
+      `motion ${report.moveId} did not finish within its planned ${Math.ceil(planned / 1000)} ms (simulated time at ${Math.round(ctx.world.nowUs / 1000)} ms)`,
+      { details: { moveId: report.moveId, plannedMs: Math.ceil(planned / 1000) } },
+    );
+  }
+  ctx.events.emit('motionFinished', { ...report });
+  if (report.outcome === 'done') return report;
+  if (report.outcome === 'collision' && report.contact !== undefined) {
+    const c = report.contact;
+    throw new HalError(
+      'COLLISION',
+      `the robot touched ${c.robotId === undefined ? `a ${c.role}` : `robot "${c.robotId}"`} at (${c.point.x.toFixed(3)}, ${c.point.y.toFixed(3)}) m and stopped`,
+      { details: { contact: c, pose: poseData(ctx.robot()), moveId: report.moveId } },
+    );
+  }
+  throw new HalError('INTERRUPTED', `motion ${report.moveId} ended early: ${report.outcome}`, {
+    details: { outcome: report.outcome, moveId: report.moveId, pose: poseData(ctx.robot()) },
+  });
+}
+
+/**
+ * Waits for a motion that someone else's clock drives. Gives up when simulated time passes the
+ * planned end by a second, or when the clock has not moved for the stall timeout (wall time).
+ */
+async function waitForClock(
+  ctx: HalContext,
+  report: MotionReport,
+  finished: Promise<MotionReport>,
+  plannedUs: number,
+): Promise<void> {
+  const stallMs =
+    ctx.clock === 'manual'
+      ? (ctx.options.manualTimeoutMs ?? 60_000)
+      : (ctx.options.stallTimeoutMs ?? 5000);
+  const deadlineUs = report.startedUs + plannedUs + 1_000_000;
+  let seenUs = ctx.world.nowUs;
+  let seenAt = Date.now();
+  let timer: ReturnType<typeof setInterval> | undefined;
+  await Promise.race([
+    finished,
+    new Promise<void>((resolve) => {
+      timer = setInterval(() => {
+        const now = ctx.world.nowUs;
+        if (now !== seenUs) {
+          seenUs = now;
+          seenAt = Date.now();
+        }
+        if (now > deadlineUs || Date.now() - seenAt > stallMs) resolve();
+      }, 10);
+    }),
+  ]);
+  clearInterval(timer);
+}

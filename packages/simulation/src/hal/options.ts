@@ -1,0 +1,85 @@
+import type { RobotConfig } from '@hal/types';
+import type { CameraOptions } from '../camera.js';
+import type { SimRobot } from '../robot/sim-robot.js';
+import type { RangeSensorOptions } from '../sensors.js';
+import type { World } from '../world.js';
+
+/** Renders a robot's camera frame as a `data:image/jpeg;base64,...` URL. */
+export type FrameSource = (world: World, robot: SimRobot) => Promise<string>;
+
+/** How the HAL waits for a motion to end. */
+export type SimulationClock =
+  /** The HAL advances the world's clock itself until the motion ends: faster than real time. */
+  | 'fast'
+  /** A real-time ticker advances the clock (`world.startRealtime`, started by the HAL if off). */
+  | 'realtime'
+  /** Someone else steps the world (`world.step()`); the HAL only waits. */
+  | 'manual';
+
+/** What the simulated robot has besides wheels, an LED and an e-stop. */
+export interface SimulatedFeatures {
+  /** A camera (`captureFrame`). Default true. */
+  camera?: boolean;
+  /** Range sensors front/left/right (`getDistanceSensors`, `scan`). Default true. */
+  rangeSensors?: boolean;
+  /** An IMU (`getIMU` with source 'simulation'; without one, heading from odometry). Default true. */
+  imu?: boolean;
+  /** A speaker (`speak`, `playSound` emit events). Default false, like the V1 robot. */
+  speaker?: boolean;
+}
+
+/** A logger the HAL writes to (never the console). */
+export interface SimLogger {
+  debug(message: string): void;
+  info(message: string): void;
+  warn(message: string): void;
+  error(message: string): void;
+}
+
+export interface SimulationHALOptions {
+  /** The world to live in; default a new world on the `empty` map. */
+  world?: World;
+  /** The id of an existing robot in `world` to drive; default a new robot is added. */
+  robotId?: string;
+  /** Geometry and limits of a newly added robot; default the V1 robot. */
+  robot?: Partial<RobotConfig>;
+  /** Start pose of a newly added robot; default the map's start. */
+  start?: { x: number; y: number; yaw: number };
+  /** How motions are waited for. Default 'fast'. */
+  clock?: SimulationClock;
+  /** Speed of the ticker the HAL starts in 'realtime' mode. Default 1. */
+  realtimeSpeed?: number;
+  /** 'manual' mode: fail a motion with TIMEOUT when the clock has not moved for this long, ms. Default 60000. */
+  manualTimeoutMs?: number;
+  /** 'realtime' mode: fail a motion with TIMEOUT when the ticker has stalled this long, ms. Default 5000. */
+  stallTimeoutMs?: number;
+  /** Extra features of the simulated robot. */
+  features?: SimulatedFeatures;
+  /** Range sensor model. */
+  rangeSensors?: RangeSensorOptions;
+  /** Camera model of the built-in software renderer. */
+  camera?: CameraOptions;
+  /** Renders frames another way (the browser demo uses Three.js). */
+  frameSource?: FrameSource;
+  /** Device id reported by `getDeviceInfo`. Default `sim-` + the robot id. */
+  deviceId?: string;
+  logger?: SimLogger;
+}
+
+/** The logger used when none is given: says nothing. */
+export const SILENT_LOGGER: SimLogger = {
+  debug: () => undefined,
+  info: () => undefined,
+  warn: () => undefined,
+  error: () => undefined,
+};
+
+/** The features a robot has: those asked for, the rest by default (all but the speaker). */
+export function resolveFeatures(features: SimulatedFeatures = {}): Required<SimulatedFeatures> {
+  return {
+    camera: features.camera ?? true,
+    rangeSensors: features.rangeSensors ?? true,
+    imu: features.imu ?? true,
+    speaker: features.speaker ?? false,
+  };
+}

@@ -1,0 +1,64 @@
+import { CAPABILITIES, HalError } from '@hal/types';
+import type { VisionInterface } from '@hal/types';
+import { renderRobotView } from '../camera.js';
+import type { CameraOptions } from '../camera.js';
+import { encodeJpeg, jpegDataUrl } from '../jpeg.js';
+import { readDistanceSensors, readImu, scanAround } from '../sensors.js';
+import type { HalContext } from './context.js';
+import type { FrameSource } from './options.js';
+
+/** Frames from the built-in software renderer, encoded with jpeg-js (works in Node). */
+export const softwareFrameSource =
+  (options: CameraOptions): FrameSource =>
+  async (world, robot) =>
+    jpegDataUrl(await encodeJpeg(renderRobotView(world, robot, options)));
+
+/**
+ * The simulated robot's vision: camera frames from `frameSource`, ray-cast range sensors and an
+ * IMU, each present only when the robot has the feature (else NOT_IMPLEMENTED); no line sensors.
+ */
+export function createVision(ctx: HalContext, frameSource: FrameSource): VisionInterface {
+  const lacks = (what: string, capability: string) =>
+    new HalError('NOT_IMPLEMENTED', `the simulated robot has no ${what}`, {
+      details: { capability },
+    });
+  const requireReady = (call: string) => {
+    if (!ctx.isReady()) {
+      throw new HalError(
+        'NOT_READY',
+        `${call}: the HAL is not initialised; call initialize() first`,
+      );
+    }
+  };
+  const { features, options } = ctx;
+  return {
+    captureFrame: async () => {
+      requireReady('captureFrame');
+      if (!features.camera) throw lacks('camera', CAPABILITIES.camera);
+      return frameSource(ctx.world, ctx.robot());
+    },
+    scan: async (mode = 'quick') => {
+      requireReady('scan');
+      if (!features.rangeSensors) throw lacks('range sensors', CAPABILITIES.rangeSensors);
+      return scanAround(ctx.world, ctx.robot(), mode, options.rangeSensors);
+    },
+    getDistanceSensors: async () => {
+      requireReady('getDistanceSensors');
+      if (!features.rangeSensors) throw lacks('range sensors', CAPABILITIES.rangeSensors);
+      return readDistanceSensors(ctx.world, ctx.robot(), options.rangeSensors);
+    },
+    getLineSensors: async () => {
+      throw lacks('line sensors', CAPABILITIES.lineSensors);
+    },
+    getIMU: async () => {
+      requireReady('getIMU');
+      if (features.imu) return readImu(ctx.robot());
+      return {
+        acceleration: { x: 0, y: 0, z: 0 },
+        gyroscope: { x: 0, y: 0, z: ctx.robot().velocity().angular },
+        heading: ctx.robot().yaw,
+        source: 'odometry',
+      };
+    },
+  };
+}

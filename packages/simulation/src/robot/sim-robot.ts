@@ -1,0 +1,297 @@
+import { normalizeAngle, rotationArcCm } from '@hal/kinematics';
+import { HalError, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
+import type { RobotConfig } from '@hal/types';
+import type { ContactTest } from './contact.js';
+import { MotionExecutor } from './motion-executor.js';
+import type { MotionHandle, MotionReport } from './motion-report.js';
+import { RobotSafety } from './robot-safety.js';
+import type { SafetyTrip } from './robot-safety.js';
+import { clampDriveSpeeds, clampSpeed } from './speed-limits.js';
+import { WheelAccumulator } from './wheel-accumulator.js';
+
+/*
+ * The simulated V1 stepper cube, as its firmware moves it (docs/protocol.md section 5): the same
+ * commands (move_steps, move_cm, rotate_deg, drive, stop, estop, reset_estop, set_config), the
+ * same per-wheel step accumulators, the same discrete step planner (@hal/kinematics MovePlan and
+ * VelocityPlan: master on the trapezoidal profile, slave by Bresenham), the same limits (speed
+ * clamp, 40960 steps per command with an e-stop trip), the same host timeout, and odometry by
+ * the firmware's formula. The world advances it on its clock and tells it what it touches.
+ *
+ * This file is the command layer; the motion state and step execution are a MotionExecutor, the
+ * e-stop, step limit and host timeout a RobotSafety.
+ */
+
+/** The status LED. */
+export interface LedState {
+  r: number;
+  g: number;
+  b: number;
+  pattern: 'solid' | 'blink' | 'pulse' | 'off';
+}
+
+export interface SimRobotOptions {
+  id: string;
+  /** Geometry and limits; default the V1 robot. */
+  config?: RobotConfig;
+  /** Start pose, metres and radians, world frame. */
+  start?: { x: number; y: number; yaw: number };
+  /** Radius of the robot's footprint for collisions, metres. Default 0.07 (a 10 cm cube). */
+  radius?: number;
+}
+
+/** The simulated robot. Commands act at the robot's current simulated time. */
+export class SimRobot {
+  readonly id: string;
+  /** Footprint radius, metres. */
+  readonly radius: number;
+  #config: RobotConfig;
+  #perCm: number;
+  #nowUs = 0;
+  #led: LedState = { r: 0, g: 0, b: 0, pattern: 'off' };
+  readonly #motions: MotionExecutor;
+  readonly #safety: RobotSafety;
+  readonly #accLeft: WheelAccumulator;
+  readonly #accRight: WheelAccumulator;
+
+  constructor(options: SimRobotOptions) {
+    this.id = options.id;
+    this.radius = options.radius ?? 0.07;
+    this.#config = options.config ?? V1_ROBOT;
+    this.#perCm = stepsPerCm(this.#config);
+    const start = options.start ?? { x: 0, y: 0, yaw: 0 };
+    const pose = { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) };
+    this.#motions = new MotionExecutor(pose, this.radius);
+    this.#safety = new RobotSafety({
+      nowUs: () => this.#nowUs,
+      stopMotion: (outcome) => this.#motions.finish(outcome, this.#nowUs),
+    });
+    this.#accLeft = new WheelAccumulator(() => this.#config);
+    this.#accRight = new WheelAccumulator(() => this.#config);
+  }
+
+  /** The world sets how the robot learns what it touches. */
+  setContactTest(test: ContactTest): void {
+    this.#motions.setContactTest(test);
+  }
+
+  get config(): RobotConfig {
+    return this.#config;
+  }
+  /** The robot's simulated time, µs. */
+  get nowUs(): number {
+    return this.#nowUs;
+  }
+  /** Pose, metres and radians (REP-103). */
+  get x(): number {
+    return this.#motions.pose.xCm / 100;
+  }
+  get y(): number {
+    return this.#motions.pose.yCm / 100;
+  }
+  get yaw(): number {
+    return this.#motions.pose.headingRad;
+  }
+  /** Absolute wheel positions since the start, steps. */
+  get leftSteps(): number {
+    return this.#motions.leftSteps;
+  }
+  get rightSteps(): number {
+    return this.#motions.rightSteps;
+  }
+  get running(): boolean {
+    return this.#motions.running;
+  }
+  /** The running motion, or the last one. */
+  get motion(): MotionReport | undefined {
+    return this.#motions.motion;
+  }
+  get emergencyStopped(): boolean {
+    return this.#safety.emergencyStopped;
+  }
+  get emergencyStopReason(): string {
+    return this.#safety.emergencyStopReason;
+  }
+  get trips(): number {
+    return this.#safety.trips;
+  }
+  get lastTrip(): SafetyTrip | undefined {
+    return this.#safety.lastTrip;
+  }
+  get led(): LedState {
+    return { ...this.#led };
+  }
+  /** Whether the host is (simulated as) silent: no heartbeats between commands. */
+  get hostSilent(): boolean {
+    return this.#safety.hostSilent;
+  }
+
+  /** Current signed wheel speeds, steps/s (0 at rest). */
+  wheelSpeeds(atUs = this.#nowUs): { left: number; right: number } {
+    return this.#motions.wheelSpeeds(atUs);
+  }
+
+  /** Linear (m/s) and angular (rad/s) velocity of the robot's centre. */
+  velocity(atUs = this.#nowUs): { linear: number; angular: number } {
+    if (!this.#motions.running) return { linear: 0, angular: 0 };
+    const w = this.wheelSpeeds(atUs);
+    const l = w.left / this.#perCm;
+    const r = w.right / this.#perCm;
+    return { linear: (l + r) / 200, angular: (r - l) / this.#config.wheelBaseCm };
+  }
+
+  // ---- host link -------------------------------------------------------------------------
+
+  /** A valid request from the host arrived now (every command counts; so do heartbeats). */
+  touchHost(): void {
+    this.#safety.touchHost();
+  }
+
+  /**
+   * Simulates a host that goes silent (true: no heartbeats; a running motion stops after the
+   * host timeout) or speaks again (false).
+   */
+  setHostSilent(silent: boolean): void {
+    this.#safety.setHostSilent(silent);
+  }
+
+  // ---- firmware commands -------------------------------------------------------------------
+
+  /** `move_steps`: whole signed steps per wheel. Does not touch the accumulators. */
+  moveSteps(left: number, right: number, speed?: number): MotionHandle {
+    this.touchHost();
+    this.#safety.refuseWhileLatched();
+    for (const [field, value] of [
+      ['left', left],
+      ['right', right],
+    ] as const) {
+      if (!Number.isInteger(value)) {
+        throw new HalError('INVALID_PARAMETER', `"${field}" must be an integer`, {
+          details: { field, value },
+        });
+      }
+    }
+    const used = clampSpeed(speed, this.#config.maxSpeedStepsPerS);
+    this.#safety.checkStepLimit(left, right, this.#config.maxStepsPerCommand);
+    return this.#motions.startMove(
+      left,
+      right,
+      used.speed,
+      used.clamped,
+      this.#nowUs,
+      this.#config,
+    );
+  }
+
+  /** `move_cm`: a distance per wheel through the accumulators (equal: straight; else an arc). */
+  moveCm(leftCm: number, rightCm: number, speed?: number): MotionHandle {
+    this.touchHost();
+    this.#safety.refuseWhileLatched();
+    const used = clampSpeed(speed, this.#config.maxSpeedStepsPerS);
+    const left = this.#accLeft.add(leftCm);
+    const right = this.#accRight.add(rightCm);
+    try {
+      this.#safety.checkStepLimit(left, right, this.#config.maxStepsPerCommand);
+    } catch (error) {
+      this.#accLeft.undo();
+      this.#accRight.undo();
+      throw error;
+    }
+    return this.#motions.startMove(
+      left,
+      right,
+      used.speed,
+      used.clamped,
+      this.#nowUs,
+      this.#config,
+    );
+  }
+
+  /** `rotate_deg`: turn in place; positive degrees counter-clockwise (left wheel backwards). */
+  rotateDeg(degrees: number, speed?: number): MotionHandle {
+    const arc = rotationArcCm(degrees, this.#config);
+    return this.moveCm(-arc, arc, speed);
+  }
+
+  /**
+   * `drive`: velocity mode at signed whole steps/s per wheel, from rest; both scaled together
+   * (truncated toward zero) when the faster exceeds the top speed. Runs until `durationMs`,
+   * a stop, a new motion, an e-stop or the host timeout. Both 0: stops and returns undefined.
+   */
+  drive(leftSps: number, rightSps: number, durationMs?: number): MotionHandle | undefined {
+    this.touchHost();
+    this.#safety.refuseWhileLatched();
+    const { left, right, clamped } = clampDriveSpeeds(
+      leftSps,
+      rightSps,
+      this.#config.maxSpeedStepsPerS,
+    );
+    if (left === 0 && right === 0) {
+      this.#motions.finish('stopped', this.#nowUs);
+      return undefined;
+    }
+    return this.#motions.startDrive(left, right, durationMs, clamped, this.#nowUs, this.#config);
+  }
+
+  /** `stop`: stops any motion at once. Returns whether one was running. Always accepted. */
+  stop(): boolean {
+    this.touchHost();
+    return this.#motions.finish('stopped', this.#nowUs);
+  }
+
+  /** `estop`: stops at once and latches until {@link resetEmergencyStop}. */
+  emergencyStop(reason = 'estop command'): void {
+    this.touchHost();
+    this.#safety.emergencyStop(reason);
+  }
+
+  /** `reset_estop`: clears the latch. Returns whether it was latched. */
+  resetEmergencyStop(): boolean {
+    this.touchHost();
+    return this.#safety.reset();
+  }
+
+  /** `set_config`: applies to the next motion; resets the distance accumulators. */
+  setConfig(overrides: Partial<RobotConfig>): RobotConfig {
+    this.touchHost();
+    this.#config = robotConfig({ ...this.#config, ...overrides });
+    this.#perCm = stepsPerCm(this.#config);
+    this.#accLeft.reset();
+    this.#accRight.reset();
+    return this.#config;
+  }
+
+  /** `hello`: a host opens a session; the distance accumulators are reset (nothing else changes). */
+  hello(): void {
+    this.touchHost();
+    this.#accLeft.reset();
+    this.#accRight.reset();
+  }
+
+  /** `set_led`. */
+  setLed(led: LedState): void {
+    this.touchHost();
+    this.#led = { ...led };
+  }
+
+  // ---- time ------------------------------------------------------------------------------
+
+  /**
+   * Advances the robot to `nowUs`: executes the steps due by then (stopping at a duration limit,
+   * the host timeout or a contact, whichever comes first) and integrates odometry.
+   */
+  advanceTo(nowUs: number): void {
+    const config = this.#config;
+    const timeoutUs = this.#safety.hostTimeoutBy(nowUs, config.hostTimeoutMs);
+    const outcome = this.#motions.stepTo(timeoutUs ?? nowUs, config);
+    if (outcome === 'running' && timeoutUs !== undefined) {
+      this.#nowUs = Math.min(this.#motions.endUs, timeoutUs);
+      this.#safety.hostTimedOut(config.hostTimeoutMs);
+    }
+    this.#nowUs = nowUs;
+  }
+
+  /** When the running motion's next event (its end) is due, µs, or Infinity. */
+  get motionEndUs(): number {
+    return this.#motions.endUs;
+  }
+}

@@ -1,0 +1,37 @@
+import { HalError } from '@hal/types';
+
+/** Wheel speed limits the firmware applies to a requested cruise speed, steps/s. */
+export function clampSpeed(
+  requested: number | undefined,
+  max: number,
+): { speed: number; clamped: boolean } {
+  if (requested === undefined) return { speed: max, clamped: false };
+  if (!Number.isFinite(requested) || requested <= 0) {
+    throw new HalError('RANGE_EXCEEDED', `"speed" must be 1..${max} steps/s, got ${requested}`, {
+      details: { field: 'speed', min: 1, max, value: requested },
+    });
+  }
+  if (requested > max) return { speed: max, clamped: true };
+  if (requested < 1) return { speed: 1, clamped: true };
+  return { speed: requested, clamped: false };
+}
+
+/**
+ * Drive speeds as the firmware applies them: whole signed steps/s (truncated toward zero), both
+ * scaled by the same factor (truncated again) when the faster exceeds `max`.
+ */
+export function clampDriveSpeeds(
+  leftSps: number,
+  rightSps: number,
+  max: number,
+): { left: number; right: number; clamped: boolean } {
+  let left = Math.trunc(leftSps);
+  let right = Math.trunc(rightSps);
+  const fastest = Math.max(Math.abs(left), Math.abs(right));
+  if (fastest > max) {
+    left = Math.trunc((left * max) / fastest);
+    right = Math.trunc((right * max) / fastest);
+    return { left, right, clamped: true };
+  }
+  return { left, right, clamped: false };
+}
