@@ -28,6 +28,22 @@ export class NavigationError extends Error {
   }
 }
 
+/** `value` when it is a positive number (an integer when `integer`), else a CONFIG error naming it. */
+export function positiveOption(name: string, value: number, integer = false): number {
+  if (!Number.isFinite(value) || value <= 0 || (integer && !Number.isInteger(value))) {
+    throw new NavigationError(
+      'CONFIG',
+      `"${name}" must be a positive ${integer ? 'integer' : 'number'}, got ${value}`,
+    );
+  }
+  return value;
+}
+
+/** The message of anything thrown: an Error's message, else its string form. */
+export function errorMessage(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
+
 /** A logger the package writes through (it never uses the console). */
 export interface NavigationLogger {
   debug(message: string, fields?: Record<string, unknown>): void;

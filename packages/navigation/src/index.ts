@@ -1,19 +1,15 @@
 export { cellCentre, checkGridSpec, worldToCell } from './grid/geometry.js';
-export type { Cell, GridSpec, Point } from './grid/geometry.js';
+export type { Cell, GridSpec, Point, Pose2D } from './grid/geometry.js';
 export { gridImageDataUrl, renderGridImage } from './grid/image.js';
 export type { GridImageOptions, RgbaImage } from './grid/image.js';
 export { mapSolids } from './grid/known-map.js';
 export type { KnownMap, MapSolid } from './grid/known-map.js';
-export { DEFAULT_LOG_ODDS, DEFAULT_RANGE_SENSORS, OccupancyGrid } from './grid/occupancy-grid.js';
-export type {
-  CellCounts,
-  CellState,
-  LogOddsModel,
-  OccupancyGridOptions,
-  Pose2D,
-  RangeReadings,
-  RangeSensorModel,
-} from './grid/occupancy-grid.js';
+export { DEFAULT_LOG_ODDS } from './grid/log-odds.js';
+export type { CellState, LogOddsModel } from './grid/log-odds.js';
+export { OccupancyGrid } from './grid/occupancy-grid.js';
+export type { CellCounts, OccupancyGridOptions } from './grid/occupancy-grid.js';
+export { DEFAULT_RANGE_SENSORS } from './grid/range-sensor-update.js';
+export type { RangeReadings, RangeSensorModel } from './grid/range-sensor-update.js';
 export { traverseCells } from './grid/raycast.js';
 export { describeWorld } from './grid/summary.js';
 export type { WorldSummaryOptions } from './grid/summary.js';
@@ -45,15 +41,15 @@ export type { ActionReport, DecisionContext, DecisionProvider } from './decision
 export { FrontierExplorationProvider, GoalSeekingProvider } from './decision/deterministic.js';
 export type { FrontierExplorationOptions } from './decision/deterministic.js';
 export { OpenAICompatibleProvider } from './decision/llm-provider.js';
-export type { OpenAICompatibleOptions, ResponseFormatMode } from './decision/llm-provider.js';
+export type { OpenAICompatibleOptions, ResponseFormatMode } from './decision/llm-options.js';
 export { findFrontier } from './grid/frontier.js';
 export type { Frontier, FrontierOptions } from './grid/frontier.js';
 
 export { NavigationBridge } from './bridge/navigation-bridge.js';
+export type { NavigationBridgeOptions } from './bridge/bridge-options.js';
+export type { NavigationEvents } from './bridge/navigation-events.js';
 export type {
-  NavigationBridgeOptions,
-  NavigationEvents,
   NavigationOutcome,
   NavigationOutcomeReason,
   NavigationStatus,
-} from './bridge/navigation-bridge.js';
+} from './bridge/navigation-outcome.js';

@@ -1,3 +1,4 @@
+import { errorMessage } from '../errors.js';
 import type { NavigationLogger } from '../errors.js';
 
 /**
@@ -34,7 +35,7 @@ export class TypedEmitter<Events extends { [K in keyof Events]: unknown }> {
       } catch (error) {
         this.#logger.error('navigation event listener threw', {
           event: String(event),
-          error: error instanceof Error ? error.message : String(error),
+          error: errorMessage(error),
         });
       }
     }

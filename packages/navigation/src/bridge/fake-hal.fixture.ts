@@ -239,3 +239,17 @@ export class FakeHAL implements HardwareAbstractionLayer {
     return { success: false, code, error, timestamp: Date.now(), mode: this.mode };
   }
 }
+
+/** Initialises a fake HAL and answers it, ready to drive. */
+export async function ready(hal: FakeHAL): Promise<FakeHAL> {
+  await hal.initialize();
+  return hal;
+}
+
+/** A wall across the middle of the arena with a gap at the top: x in [-0.1, 0.1], y < 1.2. */
+export const wall: Box = { minX: -0.1, minY: -2.5, maxX: 0.1, maxY: 1.2 };
+/** The same wall as a known map. */
+export const wallMap = {
+  arena: { width: 5, height: 5 },
+  obstacles: [{ kind: 'box' as const, x: 0, y: -0.65, width: 0.2, depth: 3.7 }],
+};

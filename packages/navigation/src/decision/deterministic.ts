@@ -1,4 +1,5 @@
 import { findFrontier } from '../grid/frontier.js';
+import { distance } from '../grid/geometry.js';
 import type { Point } from '../grid/geometry.js';
 import type { DecisionContext, DecisionProvider } from './provider.js';
 import type { NavigationDecision } from './schema.js';
@@ -7,7 +8,7 @@ const f2 = (v: number) => v.toFixed(2);
 
 function atGoal(context: DecisionContext): boolean {
   const { goal, pose, goalToleranceM } = context;
-  return goal !== null && Math.hypot(goal.x - pose.x, goal.y - pose.y) <= goalToleranceM;
+  return goal !== null && distance(goal, pose) <= goalToleranceM;
 }
 
 /**
@@ -34,9 +35,9 @@ export class GoalSeekingProvider implements DecisionProvider {
         goal_reached: true,
       };
     }
-    const distance = Math.hypot(goal.x - pose.x, goal.y - pose.y);
+    const away = distance(goal, pose);
     return {
-      reasoning: `Goal ${f2(distance)} m away: following the A* route to (${f2(goal.x)}, ${f2(goal.y)}).`,
+      reasoning: `Goal ${f2(away)} m away: following the A* route to (${f2(goal.x)}, ${f2(goal.y)}).`,
       action: { type: 'MOVE_TO', x: goal.x, y: goal.y },
       goal_reached: false,
     };

@@ -1,5 +1,6 @@
-import type { Point } from '../grid/geometry.js';
-import type { OccupancyGrid, Pose2D, RangeReadings } from '../grid/occupancy-grid.js';
+import type { Point, Pose2D } from '../grid/geometry.js';
+import type { OccupancyGrid } from '../grid/occupancy-grid.js';
+import type { RangeReadings } from '../grid/range-sensor-update.js';
 import type { NavigationDecision } from './schema.js';
 
 /** What happened to the previous action, as the bridge saw it. */

@@ -28,6 +28,36 @@ export interface Point {
   y: number;
 }
 
+/** A robot pose in the plane: metres, and yaw in radians counter-clockwise from +x (REP-103). */
+export interface Pose2D {
+  x: number;
+  y: number;
+  yaw: number;
+}
+
+/** The world rectangle a grid covers, metres. */
+export interface GridExtent {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+/** Straight-line distance between two points, metres. */
+export function distance(a: Point, b: Point): number {
+  return Math.hypot(a.x - b.x, a.y - b.y);
+}
+
+/** The world rectangle the grid covers, from its lower-left corner to its upper-right one. */
+export function gridExtent(spec: GridSpec): GridExtent {
+  return {
+    minX: spec.originX,
+    minY: spec.originY,
+    maxX: spec.originX + spec.width * spec.resolutionM,
+    maxY: spec.originY + spec.height * spec.resolutionM,
+  };
+}
+
 /** The cell holding world point (x, y), or undefined when it lies outside the grid. */
 export function worldToCell(spec: GridSpec, x: number, y: number): Cell | undefined {
   if (!Number.isFinite(x) || !Number.isFinite(y)) return undefined;
@@ -43,6 +73,30 @@ export function cellCentre(spec: GridSpec, cx: number, cy: number): Point {
     x: spec.originX + (cx + 0.5) * spec.resolutionM,
     y: spec.originY + (cy + 0.5) * spec.resolutionM,
   };
+}
+
+/**
+ * Visits the cells whose centres lie within `radiusM` of world point (x, y), around the cell
+ * holding it; nothing when the point is off the grid. Cells beyond the grid's edge are visited
+ * too (the visitor decides what they mean). The visitor returns false to stop early.
+ */
+export function forEachCellInDisc(
+  spec: GridSpec,
+  x: number,
+  y: number,
+  radiusM: number,
+  visit: (cx: number, cy: number) => boolean | void,
+): void {
+  const centre = worldToCell(spec, x, y);
+  if (centre === undefined) return;
+  const ring = Math.ceil(radiusM / spec.resolutionM) + 1;
+  for (let dy = -ring; dy <= ring; dy += 1) {
+    for (let dx = -ring; dx <= ring; dx += 1) {
+      const c = cellCentre(spec, centre.cx + dx, centre.cy + dy);
+      if (Math.hypot(c.x - x, c.y - y) > radiusM) continue;
+      if (visit(centre.cx + dx, centre.cy + dy) === false) return;
+    }
+  }
 }
 
 /** Checks a grid spec, throwing a RangeError that names the bad field. */

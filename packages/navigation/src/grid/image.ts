@@ -1,7 +1,7 @@
 import jpeg from 'jpeg-js';
 import { worldToCell } from './geometry.js';
-import type { Point } from './geometry.js';
-import type { OccupancyGrid, Pose2D } from './occupancy-grid.js';
+import type { Point, Pose2D } from './geometry.js';
+import type { OccupancyGrid } from './occupancy-grid.js';
 
 /** An RGBA image, row 0 at the top. */
 export interface RgbaImage {

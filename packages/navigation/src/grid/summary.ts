@@ -1,6 +1,7 @@
-import { cellCentre, worldToCell } from './geometry.js';
-import type { Point } from './geometry.js';
-import type { OccupancyGrid, Pose2D, RangeReadings } from './occupancy-grid.js';
+import { cellCentre, gridExtent, worldToCell } from './geometry.js';
+import type { Point, Pose2D } from './geometry.js';
+import type { OccupancyGrid } from './occupancy-grid.js';
+import type { RangeReadings } from './range-sensor-update.js';
 
 /** What to put in a world summary besides the grid itself. */
 export interface WorldSummaryOptions {
@@ -30,10 +31,7 @@ export function describeWorld(grid: OccupancyGrid, options: WorldSummaryOptions 
   const total = spec.width * spec.height;
   const pct = (n: number) => `${Math.round((100 * n) / total)}%`;
   const lines: string[] = [];
-  const x0 = spec.originX;
-  const y0 = spec.originY;
-  const x1 = x0 + spec.width * spec.resolutionM;
-  const y1 = y0 + spec.height * spec.resolutionM;
+  const { minX: x0, minY: y0, maxX: x1, maxY: y1 } = gridExtent(spec);
   lines.push(
     `World: x ${fmt(x0)}..${fmt(x1)} m, y ${fmt(y0)}..${fmt(y1)} m, cells ${Math.round(
       spec.resolutionM * 100,
