@@ -1,10 +1,11 @@
-export { PhysicalHAL } from './physical-hal.js';
-export type { PhysicalHALOptions, RobotIdentity } from './physical-hal.js';
+export { PhysicalHAL } from './hal/physical-hal.js';
+export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 
 export type { SessionState } from './session.js';
 
 export { MockRobot } from './mock/mock-robot.js';
-export type { MockRobotOptions, MockTransportOptions } from './mock/mock-robot.js';
+export type { MockRobotOptions } from './mock/mock-robot.js';
+export type { MockTransportOptions } from './mock/mock-transport.js';
 
 export type { Logger, LogLevel, ScopedLogger } from './logger.js';
 export { scoped, silentLogger } from './logger.js';

@@ -1,7 +1,7 @@
 import { MovePlan, normalizeAngle, OdometryIntegrator, VelocityPlan } from '@hal/kinematics';
 import type { StepPlan } from '@hal/kinematics';
 import type { Pose, RobotConfig } from '@hal/types';
-import type { MotionReply, StatusReply } from './protocol/schemas.js';
+import type { Command, MotionReply, StatusReply } from './protocol/schemas.js';
 
 interface Prediction {
   plan: StepPlan;
@@ -67,6 +67,27 @@ export class PoseTracker {
       this.#odometry.update(status.left_steps, status.right_steps);
     }
     this.#absorb(status);
+  }
+
+  /** Keeps the pose in step with a successful reply. */
+  observe(cmd: Command, data: Record<string, unknown>): void {
+    switch (cmd) {
+      case 'get_status':
+        this.update(data as unknown as StatusReply);
+        break;
+      case 'estop':
+        this.motionStopped();
+        break;
+      case 'stop':
+        this.updateCounters(Number(data['left_steps']), Number(data['right_steps']));
+        break;
+      case 'move_cm':
+      case 'move_steps':
+      case 'rotate_deg':
+      case 'drive':
+        this.motionStarted(data as unknown as MotionReply);
+        break;
+    }
   }
 
   /** Counters reported by a `stop` reply. */

@@ -1,6 +1,6 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { MockRobot } from './mock/mock-robot.js';
-import { PhysicalHAL } from './physical-hal.js';
+import { PhysicalHAL } from './hal/physical-hal.js';
 
 const heartbeats = (robot: MockRobot) => robot.requests.filter((r) => r['cmd'] === 'heartbeat');
 

@@ -12,6 +12,40 @@ export interface MessageAuthenticator {
 /** Length of the `#` + 32 hex digits suffix. */
 export const MAC_SUFFIX_LENGTH = 33;
 
+const HASH = 0x23;
+const encoder = new TextEncoder();
+const ascii = new TextDecoder();
+
+function isLowerHex(bytes: Uint8Array): boolean {
+  for (const b of bytes) {
+    const digit = b >= 0x30 && b <= 0x39;
+    const lower = b >= 0x61 && b <= 0x66;
+    if (!digit && !lower) return false;
+  }
+  return true;
+}
+
+/**
+ * Splits a message that ends in a MAC suffix (`#` and 32 lowercase hex digits, which JSON never
+ * ends with) into its JSON bytes and the MAC; undefined when it carries none.
+ */
+export function splitMac(bytes: Uint8Array): { json: Uint8Array; mac: string } | undefined {
+  const at = bytes.length - MAC_SUFFIX_LENGTH;
+  if (at < 0 || bytes[at] !== HASH) return undefined;
+  const mac = bytes.subarray(at + 1);
+  if (!isLowerHex(mac)) return undefined;
+  return { json: bytes.subarray(0, at), mac: ascii.decode(mac) };
+}
+
+/** The JSON bytes followed by `#` and their MAC. */
+export function appendMac(json: Uint8Array, auth: MessageAuthenticator): Uint8Array {
+  const suffix = encoder.encode(`#${auth.mac(json)}`);
+  const bytes = new Uint8Array(json.length + suffix.length);
+  bytes.set(json, 0);
+  bytes.set(suffix, json.length);
+  return bytes;
+}
+
 /**
  * Builds the authenticator for a pre-shared key given as hex (1..64 bytes). `node:crypto` is
  * loaded here, on first use, so importing the package pulls nothing Node-only into a bundle.

@@ -1,6 +1,6 @@
 import { HalError } from '@hal/types';
 import type { MessageAuthenticator } from './auth.js';
-import { MAC_SUFFIX_LENGTH } from './auth.js';
+import { appendMac, splitMac } from './auth.js';
 import { ReplyEnvelopeSchema } from './schemas.js';
 import type { ReplyEnvelope } from './schemas.js';
 
@@ -9,22 +9,12 @@ export const MAX_MESSAGE_BYTES = 1024;
 
 const encoder = new TextEncoder();
 const decoder = new TextDecoder('utf-8', { fatal: true });
-const HASH = 0x23;
 
 /** A decoded reply: the envelope fields plus every other field the device sent. */
 export type WireReply = ReplyEnvelope & Record<string, unknown>;
 
 /** The outcome of decoding an inbound message: never throws. */
 export type DecodeResult = { ok: true; reply: WireReply } | { ok: false; error: HalError };
-
-function hex(bytes: Uint8Array): boolean {
-  for (const b of bytes) {
-    const digit = b >= 0x30 && b <= 0x39;
-    const lower = b >= 0x61 && b <= 0x66;
-    if (!digit && !lower) return false;
-  }
-  return true;
-}
 
 /** Encodes and (when a key is configured) authenticates requests, and decodes replies. */
 export class MessageCodec {
@@ -45,13 +35,7 @@ export class MessageCodec {
    */
   encode(message: Record<string, unknown>): Uint8Array {
     const json = encoder.encode(JSON.stringify(message));
-    let bytes = json;
-    if (this.#auth !== undefined) {
-      const suffix = encoder.encode(`#${this.#auth.mac(json)}`);
-      bytes = new Uint8Array(json.length + suffix.length);
-      bytes.set(json, 0);
-      bytes.set(suffix, json.length);
-    }
+    const bytes = this.#auth === undefined ? json : appendMac(json, this.#auth);
     if (bytes.length > MAX_MESSAGE_BYTES) {
       throw new HalError(
         'RANGE_EXCEEDED',
@@ -68,20 +52,17 @@ export class MessageCodec {
    * or wrong MAC), never an exception.
    */
   decode(bytes: Uint8Array): DecodeResult {
+    const signed = splitMac(bytes);
     let json = bytes;
     if (this.#auth === undefined) {
       // a device with a key MACs even its AUTH_FAILED reply: read it, to say why
-      const at = bytes.length - MAC_SUFFIX_LENGTH;
-      if (at > 0 && bytes[at] === HASH && hex(bytes.subarray(at + 1))) json = bytes.subarray(0, at);
+      if (signed !== undefined) json = signed.json;
     } else {
-      const at = bytes.length - MAC_SUFFIX_LENGTH;
-      const mac = bytes.subarray(at + 1);
-      if (at < 0 || bytes[at] !== HASH || !hex(mac)) {
+      if (signed === undefined) {
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply has no MAC suffix') };
       }
-      json = bytes.subarray(0, at);
-      const expected = this.#auth.mac(json);
-      if (decoder.decode(mac) !== expected) {
+      json = signed.json;
+      if (signed.mac !== this.#auth.mac(json)) {
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply MAC does not match') };
       }
     }

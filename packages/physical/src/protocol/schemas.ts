@@ -84,6 +84,10 @@ export const StopReplySchema = z.object({
 });
 export type StopReply = z.infer<typeof StopReplySchema>;
 
+/** The LED patterns of `set_led`. */
+export const LED_PATTERNS = ['solid', 'blink', 'pulse', 'off'] as const;
+export type LedPattern = (typeof LED_PATTERNS)[number];
+
 export const LedStateSchema = z.object({
   r: int.min(0).max(255),
   g: int.min(0).max(255),
@@ -174,6 +178,8 @@ export const REPLY_SCHEMAS = {
 export type Command = keyof typeof REPLY_SCHEMAS;
 /** The reply data of a command. */
 export type ReplyOf<C extends Command> = z.output<(typeof REPLY_SCHEMAS)[C]>;
+/** The reply data of a command as a device writes it (`null` allowed for absent fields). */
+export type ReplyDataOf<C extends Command> = z.input<(typeof REPLY_SCHEMAS)[C]>;
 
 /** Request parameters per command (H->D), beside `cmd`, `seq` and `sid`. */
 export interface RequestParams {
@@ -186,7 +192,7 @@ export interface RequestParams {
   stop: Record<string, never>;
   get_status: Record<string, never>;
   set_config: Partial<Omit<DeviceConfig, 'max_steps_per_command'>>;
-  set_led: { r?: number; g?: number; b?: number; pattern?: 'solid' | 'blink' | 'pulse' | 'off' };
+  set_led: { r?: number; g?: number; b?: number; pattern?: LedPattern };
   estop: { reason?: string };
   reset_estop: Record<string, never>;
 }

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { MockRobot } from '../mock/mock-robot.js';
-import { PhysicalHAL } from '../physical-hal.js';
+import { PhysicalHAL } from '../hal/physical-hal.js';
 import { encodeFrame, FrameDecoder } from '../serial/frame.js';
 import type { SerialPortLike } from './serial.js';
 import { serialTransport } from './serial.js';

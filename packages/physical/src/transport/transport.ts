@@ -15,6 +15,14 @@ export interface RequestOptions {
   attempts?: number;
 }
 
+/** The request defaults a transport's own options set (only the fields given). */
+export function requestDefaults(options: RequestOptions): RequestOptions {
+  const defaults: RequestOptions = {};
+  if (options.timeoutMs !== undefined) defaults.timeoutMs = options.timeoutMs;
+  if (options.attempts !== undefined) defaults.attempts = options.attempts;
+  return defaults;
+}
+
 /** Round-trip statistics every transport keeps. */
 export interface TransportStats {
   /** Requests sent, retries included. */

@@ -1,13 +1,7 @@
 import { HalError } from '@hal/types';
 import { scoped } from '../logger.js';
-import type {
-  RequestOptions,
-  Transport,
-  TransportContext,
-  TransportFactory,
-  TransportStats,
-} from './transport.js';
-import { ReplyMatcher } from './transport.js';
+import type { Transport, TransportContext, TransportFactory, TransportStats } from './transport.js';
+import { ReplyMatcher, requestDefaults } from './transport.js';
 
 /** The robot's UDP port. */
 export const DEFAULT_UDP_PORT = 4210;
@@ -52,9 +46,7 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
       const log = scoped(context.logger, 'hal:physical:udp');
       const socket = dgram.createSocket(isIPv6(options.host) ? 'udp6' : 'udp4');
       const matcher = new ReplyMatcher();
-      const defaults: RequestOptions = {};
-      if (options.timeoutMs !== undefined) defaults.timeoutMs = options.timeoutMs;
-      if (options.attempts !== undefined) defaults.attempts = options.attempts;
+      const defaults = requestDefaults(options);
       let closed = false;
 
       socket.on('message', (message, remote) => {

@@ -1,8 +1,8 @@
 import { describeHalContract } from '@hal/types/testing';
 import { describe, expect, it } from 'vitest';
-import { MockRobot } from './mock/mock-robot.js';
+import { MockRobot } from '../mock/mock-robot.js';
 import { PhysicalHAL } from './physical-hal.js';
-import type { PhysicalHALOptions } from './physical-hal.js';
+import type { PhysicalHALOptions } from './options.js';
 
 // the mock robots get a 10 s host timeout: at 50x that is 200 ms of real time, room for a busy machine
 const TIME_SCALE = 50;

@@ -1,0 +1,20 @@
+import type { HalBoundary, RobotConfig } from '@hal/types';
+import type { PoseTracker } from '../pose-tracker.js';
+import type { Command, ReplyOf, RequestParams } from '../protocol/schemas.js';
+import type { LinkTiming } from './link-timing.js';
+import type { SafetyCache } from './safety-cache.js';
+
+/** What a PhysicalHAL shares with its subsystems (locomotion, vision, communication, safety). */
+export interface HalContext {
+  /** Readiness, e-stop gating, validation, timing and error-to-result conversion of each call. */
+  readonly boundary: HalBoundary;
+  /** The robot configuration, as the robot last reported it. */
+  robot(): RobotConfig;
+  /** The host's dead reckoning of the pose. */
+  readonly tracker: PoseTracker;
+  readonly timing: LinkTiming;
+  /** The e-stop latches and the last safety report. */
+  readonly safety: SafetyCache;
+  /** Sends one command in the current session; rejects with a HalError. */
+  command<C extends Command>(cmd: C, params: RequestParams[C]): Promise<ReplyOf<C>>;
+}

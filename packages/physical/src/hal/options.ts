@@ -1,0 +1,49 @@
+import type { Logger } from '../logger.js';
+import type { DeviceConfig } from '../protocol/schemas.js';
+import type { TransportFactory } from '../transport/transport.js';
+
+/** Options of {@link PhysicalHAL}, beside its {@link HALConfig}. */
+export interface PhysicalHALOptions {
+  /** The link to the robot; default built from `config.connection` (wifi: UDP, serial: serial). */
+  transport?: TransportFactory;
+  /** Where the HAL logs (namespaces `hal:physical:*`). Default: nowhere. */
+  logger?: Logger;
+  /** The clock results are stamped with, ms. Default `Date.now`. */
+  now?: () => number;
+  /**
+   * How much faster than real time the robot's clock runs (1 for a real robot; the emulator's
+   * `--time-scale`). Scales the heartbeat, polling and motion timeouts.
+   */
+  timeScale?: number;
+  /** Heartbeat period, robot ms. Default a quarter of the robot's host timeout, at most 500. */
+  heartbeatIntervalMs?: number;
+  /** Period of `get_status` polls while a motion runs, robot ms. Default 100. */
+  pollIntervalMs?: number;
+  /** While the link is lost, say `hello` again this often, real ms. Default 1000. */
+  reconnectIntervalMs?: number;
+  /**
+   * Resend an unanswered request after this long, real ms. Default a quarter of the robot's host
+   * timeout (500 ms), scaled by `timeScale`, so that one lost datagram can never let the host
+   * timeout fire; resending the same bytes keeps every request exactly-once.
+   */
+  requestTimeoutMs?: number;
+  /**
+   * Give a request up after this many sends. Default: as many as fit in the protocol's
+   * 3 x 2000 ms budget.
+   */
+  attempts?: number;
+  /** Extra time a motion may take beyond its planned duration, real ms. Default 2000. */
+  motionTimeoutMarginMs?: number;
+  /** Names the host software in `hello`. */
+  client?: string;
+}
+
+/** What the robot said about itself when the session opened. */
+export interface RobotIdentity {
+  deviceId: string;
+  firmwareVersion: string;
+  protocolVersion: string;
+  auth: boolean;
+  capabilities: string[];
+  config: DeviceConfig;
+}

@@ -1,0 +1,268 @@
+import { CAPABILITIES, HalBoundary, HalError } from '@hal/types';
+import type {
+  CommunicationInterface,
+  DeviceInfo,
+  HALConfig,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  RobotConfig,
+  SafetyInterface,
+  VisionInterface,
+} from '@hal/types';
+import { MjpegCamera } from '../camera/mjpeg.js';
+import { scoped, silentLogger } from '../logger.js';
+import type { ScopedLogger } from '../logger.js';
+import { PoseTracker } from '../pose-tracker.js';
+import { createAuthenticator } from '../protocol/auth.js';
+import { MessageCodec } from '../protocol/codec.js';
+import { robotConfigFromDevice } from '../protocol/device-config.js';
+import type {
+  Command,
+  HelloReply,
+  ReplyOf,
+  RequestParams,
+  StatusReply,
+} from '../protocol/schemas.js';
+import { Session } from '../session.js';
+import type { SessionState } from '../session.js';
+import type { SerialLinkStats, Transport, TransportStats } from '../transport/transport.js';
+import { createCommunication } from './communication.js';
+import type { HalContext } from './context.js';
+import { defaultTransport, initialRobotConfig, parsePhysicalConfig } from './from-config.js';
+import { LinkTiming } from './link-timing.js';
+import { createLocomotion } from './locomotion.js';
+import type { PhysicalHALOptions, RobotIdentity } from './options.js';
+import { SafetyCache } from './safety-cache.js';
+import { createSafety } from './safety.js';
+import { createVision } from './vision.js';
+
+/**
+ * The HAL of the physical V1 stepper cube, spoken to over protocol 1.0 (docs/protocol.md) through
+ * a UDP or serial transport. Every public call goes through the shared {@link HalBoundary}; a
+ * motion resolves when the robot reports it finished; the pose is dead-reckoned on the host from
+ * the robot's step counters, in a frame anchored where the robot stood at `initialize()`.
+ */
+export class PhysicalHAL implements HardwareAbstractionLayer {
+  readonly mode = 'physical' as const;
+  readonly locomotion: LocomotionInterface;
+  readonly vision: VisionInterface;
+  readonly communication: CommunicationInterface;
+  readonly safety: SafetyInterface;
+
+  readonly #config: HALConfig;
+  readonly #options: PhysicalHALOptions;
+  readonly #log: ScopedLogger;
+  readonly #timing: LinkTiming;
+  readonly #camera: MjpegCamera | undefined;
+  readonly #tracker: PoseTracker;
+  readonly #safety = new SafetyCache();
+  #robot: RobotConfig;
+  #transport: Transport | undefined;
+  #session: Session | undefined;
+  #identity: RobotIdentity | undefined;
+  #initialized = false;
+  #initializing: Promise<void> | undefined;
+
+  constructor(config: HALConfig, options: PhysicalHALOptions = {}) {
+    const parsed = parsePhysicalConfig(config);
+    const timeScale = options.timeScale ?? 1;
+    if (!(timeScale > 0) || !Number.isFinite(timeScale)) {
+      throw new HalError('INVALID_PARAMETER', `"timeScale" must be a finite number > 0`);
+    }
+    this.#config = parsed;
+    this.#options = options;
+    this.#timing = new LinkTiming(options, timeScale, () => this.#robot);
+    const logger = options.logger ?? silentLogger;
+    this.#log = scoped(logger, 'hal:physical');
+    this.#robot = initialRobotConfig(parsed);
+    this.#tracker = new PoseTracker(this.#robot, () => performance.now(), timeScale);
+    const cameraUrl = parsed.connection?.cameraUrl;
+    this.#camera =
+      cameraUrl === undefined ? undefined : new MjpegCamera({ url: cameraUrl, logger });
+    const boundary = new HalBoundary({
+      mode: this.mode,
+      config: () => this.#robot,
+      isEmergencyStopped: () => this.#safety.isEstopped(),
+      // initialised is enough here: a lost link is reported by the call itself, as NOT_CONNECTED
+      isReady: () => this.#initialized,
+      now: options.now ?? Date.now,
+    });
+    const ctx: HalContext = {
+      boundary,
+      robot: () => this.#robot,
+      tracker: this.#tracker,
+      timing: this.#timing,
+      safety: this.#safety,
+      command: (cmd, params) => this.#command(cmd, params),
+    };
+    this.locomotion = createLocomotion(ctx);
+    this.vision = createVision(ctx, this.#camera);
+    const robotLog = scoped(logger, 'hal:physical:log');
+    this.communication = createCommunication(ctx, robotLog, parsed.deviceId);
+    this.safety = createSafety(ctx);
+  }
+
+  /** Opens the link and the session, learns who the robot is and anchors the pose. */
+  async initialize(): Promise<void> {
+    if (this.#initialized) return;
+    this.#initializing ??= this.#open().finally(() => {
+      this.#initializing = undefined;
+    });
+    return this.#initializing;
+  }
+
+  async #open(): Promise<void> {
+    const logger = this.#options.logger ?? silentLogger;
+    const factory =
+      this.#options.transport ?? defaultTransport(this.#config, this.#timing.request().timeoutMs!);
+    const key = this.#config.connection?.key;
+    const codec = new MessageCodec(key === undefined ? undefined : await createAuthenticator(key));
+    const transport = await factory.connect({ decode: (bytes) => codec.decode(bytes), logger });
+    const session = new Session({
+      transport,
+      codec,
+      logger,
+      client: this.#options.client ?? '@hal/physical',
+      heartbeatIntervalMs: () => this.#timing.heartbeatMs(),
+      reconnectIntervalMs: this.#options.reconnectIntervalMs ?? 1000,
+      request: () => this.#timing.request(),
+      onReply: (cmd, data) => {
+        this.#tracker.observe(cmd, data);
+        this.#safety.observe(cmd, data);
+      },
+      onStateChange: (state, reason) => this.#linkChanged(state, reason),
+      onConnected: (hello, reconnect) => (reconnect ? this.#resync(hello) : undefined),
+    });
+    this.#transport = transport;
+    this.#session = session;
+    try {
+      const hello = await session.open();
+      this.#learn(hello);
+      const status = await session.command('get_status', {});
+      this.#tracker.anchor(status);
+      this.#initialized = true;
+      this.#camera?.start();
+      this.#log.info('connected', { deviceId: hello.device_id, transport: transport.type });
+    } catch (error) {
+      session.close();
+      await transport.close();
+      this.#session = undefined;
+      this.#transport = undefined;
+      throw error;
+    }
+  }
+
+  /** Stops the motors, closes the session and the link. Safe to call twice. */
+  async cleanup(): Promise<void> {
+    await this.#initializing?.catch(() => undefined);
+    const session = this.#session;
+    const transport = this.#transport;
+    this.#initialized = false;
+    this.#session = undefined;
+    this.#transport = undefined;
+    if (session !== undefined && session.state === 'connected') {
+      await session.command('stop', {}, { attempts: 1 }).catch(() => undefined);
+    }
+    session?.close();
+    await transport?.close();
+    await this.#camera?.stop();
+  }
+
+  isReady(): boolean {
+    return this.#initialized && this.#session?.state === 'connected';
+  }
+
+  getDeviceInfo(): DeviceInfo {
+    const capabilities = [...(this.#identity?.capabilities ?? [])];
+    if (this.#camera !== undefined) capabilities.push(CAPABILITIES.camera);
+    return { id: this.#config.deviceId, type: 'v1-stepper-cube', mode: this.mode, capabilities };
+  }
+
+  /** What the robot reported in `hello` (undefined before `initialize()`). */
+  get identity(): RobotIdentity | undefined {
+    return this.#identity;
+  }
+
+  /** The robot configuration the HAL validates against (learned from the robot). */
+  get robotConfig(): RobotConfig {
+    return this.#robot;
+  }
+
+  /** The link's round-trip statistics. */
+  transportStats(): TransportStats | undefined {
+    return this.#transport?.stats();
+  }
+
+  /** The serial link's frame statistics (undefined on other links). */
+  linkStats(): SerialLinkStats | undefined {
+    const transport = this.#transport as
+      (Transport & { linkStats?: () => SerialLinkStats }) | undefined;
+    return transport?.linkStats?.();
+  }
+
+  /** The link state: `connected`, `lost` (reconnecting), `closed`, or `idle` before initialize. */
+  get linkState(): SessionState {
+    return this.#session?.state ?? 'idle';
+  }
+
+  /** Stops sending heartbeats, so the robot's host timeout can be seen to fire (for tests). */
+  pauseHeartbeat(): void {
+    this.#session?.pauseHeartbeat();
+  }
+
+  /** Sends heartbeats again. */
+  resumeHeartbeat(): void {
+    this.#session?.resumeHeartbeat();
+  }
+
+  /** Asks the robot for its status now (and updates the pose and safety state from it). */
+  async refreshStatus(): Promise<StatusReply> {
+    return await this.#command('get_status', {});
+  }
+
+  // -- internals -----------------------------------------------------------------------------
+
+  #command<C extends Command>(cmd: C, params: RequestParams[C]): Promise<ReplyOf<C>> {
+    const session = this.#session;
+    if (session === undefined) {
+      return Promise.reject(new HalError('NOT_READY', 'the HAL is not initialised'));
+    }
+    return session.command(cmd, params).catch((error: unknown) => {
+      this.#safety.refused(error);
+      throw error;
+    });
+  }
+
+  #learn(hello: HelloReply): void {
+    this.#identity = {
+      deviceId: hello.device_id,
+      firmwareVersion: hello.firmware_version,
+      protocolVersion: hello.protocol_version,
+      auth: hello.auth,
+      capabilities: hello.capabilities,
+      config: hello.config,
+    };
+    this.#robot = robotConfigFromDevice(this.#robot, hello.config);
+    this.#tracker.setConfig(this.#robot);
+  }
+
+  async #resync(hello: HelloReply): Promise<void> {
+    this.#learn(hello);
+    try {
+      const status = await this.#command('get_status', {});
+      const hostLatch = this.#safety.hostLatch;
+      if (hostLatch !== undefined && !status.safety.estop) {
+        // the stop never arrived, or the robot restarted and forgot it: stop it again
+        await this.#command('estop', { reason: hostLatch });
+      }
+      this.#log.info('reconnected', { sid: hello.sid, uptimeMs: status.uptime_ms });
+    } catch (error) {
+      this.#log.warn('status after reconnect failed', { error: String(error) });
+    }
+  }
+
+  #linkChanged(state: SessionState, reason: string): void {
+    this.#safety.linkChanged(state, reason);
+    if (state === 'lost') this.#log.warn('link lost', { reason });
+  }
+}

@@ -1,0 +1,50 @@
+import { robotConfig } from '@hal/types';
+import type { RobotConfig } from '@hal/types';
+import type { DeviceConfig } from './schemas.js';
+
+/** The most steps one wheel may make in one command: fixed by protocol 1.0 (section 5.1). */
+export const MAX_STEPS_PER_COMMAND = 40_960;
+
+/** The configuration `set_config` may change: every {@link DeviceConfig} field but the fixed limit. */
+export type DeviceSettings = Omit<DeviceConfig, 'max_steps_per_command'>;
+
+/** The wheel geometry of a device configuration, as the step math (`@hal/kinematics`) takes it. */
+export function deviceGeometry(
+  c: DeviceSettings,
+): Pick<RobotConfig, 'stepsPerRevolution' | 'wheelDiameterCm' | 'wheelBaseCm'> {
+  return {
+    stepsPerRevolution: c.steps_per_revolution,
+    wheelDiameterCm: c.wheel_diameter_cm,
+    wheelBaseCm: c.wheel_base_cm,
+  };
+}
+
+/**
+ * The robot configuration a device reports (`hello`, `set_config`), over `base` for the fields
+ * the protocol does not carry.
+ */
+export function robotConfigFromDevice(base: RobotConfig, c: DeviceConfig): RobotConfig {
+  return robotConfig({
+    ...base,
+    ...deviceGeometry(c),
+    maxSpeedStepsPerS: c.max_speed_steps_per_s,
+    accelerationStepsPerS2: c.acceleration_steps_per_s2,
+    hostTimeoutMs: c.host_timeout_ms,
+    maxStepsPerCommand: Math.min(
+      base.maxStepsPerCommand,
+      c.max_steps_per_command ?? MAX_STEPS_PER_COMMAND,
+    ),
+  });
+}
+
+/** The device settings of a robot configuration, in the order the device writes them. */
+export function deviceSettingsOf(robot: RobotConfig): DeviceSettings {
+  return {
+    wheel_diameter_cm: robot.wheelDiameterCm,
+    wheel_base_cm: robot.wheelBaseCm,
+    steps_per_revolution: robot.stepsPerRevolution,
+    max_speed_steps_per_s: robot.maxSpeedStepsPerS,
+    acceleration_steps_per_s2: robot.accelerationStepsPerS2,
+    host_timeout_ms: robot.hostTimeoutMs,
+  };
+}
