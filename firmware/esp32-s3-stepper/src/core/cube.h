@@ -142,6 +142,8 @@ class Cube : private MotionListener {
   void LatchEstop(const char* reason, const char* detail, MoveOutcome why);
   void RecordTrip(const char* reason, const char* detail);
   void WriteConfig(JsonWriter& w) const;
+  // Writes `"led":{r,g,b,pattern}` (get_status and set_led replies).
+  void WriteLed(JsonWriter& w) const;
   void IntegratePending();
   void UpdateLed(uint64_t now_us);
   size_t AppendMac(uint8_t* buf, size_t len, size_t cap);

@@ -29,6 +29,20 @@ void Cube::WriteConfig(JsonWriter& w) const {
   w.EndObject();
 }
 
+void Cube::WriteLed(JsonWriter& w) const {
+  w.Key("led");
+  w.BeginObject();
+  w.Key("r");
+  w.Uint(led_.r);
+  w.Key("g");
+  w.Uint(led_.g);
+  w.Key("b");
+  w.Uint(led_.b);
+  w.Key("pattern");
+  w.String(LedPatternName(led_.pattern));
+  w.EndObject();
+}
+
 void Cube::CmdHello(Reply& r) {
   const JsonField* nonce = nullptr;
   const Got gn = GetString(r, "nonce", &nonce);
@@ -170,17 +184,7 @@ void Cube::CmdGetStatus(Reply& r) {
   w.Key("coils_on");
   w.Bool(executor_.coils_wanted());
   w.EndObject();
-  w.Key("led");
-  w.BeginObject();
-  w.Key("r");
-  w.Uint(led_.r);
-  w.Key("g");
-  w.Uint(led_.g);
-  w.Key("b");
-  w.Uint(led_.b);
-  w.Key("pattern");
-  w.String(LedPatternName(led_.pattern));
-  w.EndObject();
+  WriteLed(w);
 }
 
 void Cube::CmdSetConfig(Reply& r) {
@@ -250,17 +254,7 @@ void Cube::CmdSetLed(Reply& r) {
   }
   led_ = next;
   JsonWriter& w = r.Ok();
-  w.Key("led");
-  w.BeginObject();
-  w.Key("r");
-  w.Uint(led_.r);
-  w.Key("g");
-  w.Uint(led_.g);
-  w.Key("b");
-  w.Uint(led_.b);
-  w.Key("pattern");
-  w.String(LedPatternName(led_.pattern));
-  w.EndObject();
+  WriteLed(w);
 }
 
 void Cube::CmdEstop(Reply& r) {
