@@ -1,0 +1,339 @@
+import { failureResult, HalBoundary, HalError, toHalError, V1_ROBOT } from '@hal/types';
+import type {
+  CallName,
+  CallParams,
+  CommunicationInterface,
+  DeviceInfo,
+  HALMode,
+  HALToolResult,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  Pose,
+  RobotConfig,
+  SafetyInterface,
+  VisionInterface,
+} from '@hal/types';
+import type { HybridContext } from './context.js';
+import {
+  composePose,
+  DEFAULT_DIVERGENCE_TOLERANCE,
+  divergenceBetween,
+  planar,
+  relativeTo,
+} from './divergence.js';
+import type { Divergence, DivergenceTolerance, PlanarPose } from './divergence.js';
+import type { HybridHALOptions, HybridLogLevel, HybridLogger } from './options.js';
+import { createSafety } from './safety.js';
+import { createCommunication, createLocomotion, createVision } from './subsystems.js';
+
+/** What a divergence listener is told after a call left the twin beyond its tolerance. */
+export interface DivergenceEvent {
+  /** The call after which it was measured (`measure` for {@link HybridHAL.measureDivergence}). */
+  call: CallName | 'measure';
+  divergence: Divergence;
+  /** The physical robot's pose, relative to where it stood at `initialize()`. */
+  physical: PlanarPose;
+  /** The twin's pose, relative to where it stood at `initialize()`. */
+  twin: PlanarPose;
+}
+
+/** The twin's side of a hybrid result. */
+export interface TwinSummary {
+  success: boolean;
+  code?: HALToolResult['code'];
+}
+
+type Side = 'physical' | 'twin';
+
+/** The configuration a HAL validates against, when it exposes one (PhysicalHAL does). */
+function exposedConfig(hal: HardwareAbstractionLayer): RobotConfig | undefined {
+  const config: unknown = (hal as { robotConfig?: unknown }).robotConfig;
+  if (typeof config !== 'object' || config === null) return undefined;
+  return typeof (config as { wheelDiameterCm?: unknown }).wheelDiameterCm === 'number'
+    ? (config as RobotConfig)
+    : undefined;
+}
+
+/**
+ * The physical robot and its simulated twin as one HAL (mode 'hybrid'). Every call is validated
+ * and gated once, then runs on both at the same time. The physical result is the truth: it is
+ * what the call returns (a twin failure never fails a call), with `data.twin` (the twin's
+ * success and code) and `data.divergence` (how far the twin is from the robot after the call).
+ */
+export class HybridHAL implements HardwareAbstractionLayer {
+  readonly mode = 'hybrid' as const;
+  readonly locomotion: LocomotionInterface;
+  readonly vision: VisionInterface;
+  readonly communication: CommunicationInterface;
+  readonly safety: SafetyInterface;
+  /** The physical robot's HAL. */
+  readonly physical: HardwareAbstractionLayer;
+  /** The simulated twin's HAL. */
+  readonly twin: HardwareAbstractionLayer;
+
+  readonly #options: HybridHALOptions;
+  readonly #tolerance: DivergenceTolerance;
+  readonly #boundary: HalBoundary;
+  readonly #now: () => number;
+  readonly #listeners = new Set<(event: DivergenceEvent) => void>();
+  #ready = false;
+  #initializing: Promise<void> | undefined;
+  #starts: { physical: PlanarPose; twin: PlanarPose } | undefined;
+  #latest: Divergence | undefined;
+
+  constructor(options: HybridHALOptions) {
+    this.#options = options;
+    this.physical = options.physical;
+    this.twin = options.twin;
+    this.#now = options.now ?? Date.now;
+    this.#tolerance = { ...DEFAULT_DIVERGENCE_TOLERANCE, ...options.divergence };
+    for (const [name, value] of Object.entries(this.#tolerance)) {
+      if (!(Number.isFinite(value) && value >= 0)) {
+        throw new HalError('INVALID_PARAMETER', `"${name}" must be a finite number >= 0`, {
+          details: { parameter: name, received: value },
+        });
+      }
+    }
+    this.#boundary = new HalBoundary({
+      mode: this.mode,
+      config: options.robotConfig ?? (() => exposedConfig(this.physical) ?? V1_ROBOT),
+      isEmergencyStopped: () => this.safety.isEmergencyStopped(),
+      isReady: () => this.#ready,
+      now: this.#now,
+    });
+    const context: HybridContext = {
+      physical: this.physical,
+      twin: this.twin,
+      run: (call, args, onPhysical, onTwin) => this.#run(call, args, onPhysical, onTwin),
+      twinPoint: (x, y) => {
+        const starts = this.#starts;
+        if (starts === undefined) return { x, y };
+        const relative = relativeTo(starts.physical, { x, y, yaw: 0 });
+        const point = composePose(starts.twin, relative);
+        return { x: point.x, y: point.y };
+      },
+      ensureReady: (what) => {
+        if (!this.#ready) {
+          throw new HalError(
+            'NOT_READY',
+            `${what}: the HAL is not initialised; call initialize() first`,
+          );
+        }
+      },
+    };
+    this.locomotion = createLocomotion(context);
+    this.vision = createVision(context);
+    this.communication = createCommunication(context);
+    this.safety = createSafety(context);
+  }
+
+  /**
+   * Initialises both robots at once and anchors the divergence at where each stands. Rejects
+   * with the failing side's code and a message that names the side; a side that did come up is
+   * cleaned up again.
+   */
+  async initialize(): Promise<void> {
+    if (this.#ready) return;
+    this.#initializing ??= this.#open().finally(() => {
+      this.#initializing = undefined;
+    });
+    return this.#initializing;
+  }
+
+  async #open(): Promise<void> {
+    const [physical, twin] = await Promise.allSettled([
+      this.physical.initialize(),
+      this.twin.initialize(),
+    ]);
+    const failures: Array<[Side, unknown]> = [];
+    if (physical.status === 'rejected') failures.push(['physical', physical.reason]);
+    if (twin.status === 'rejected') failures.push(['twin', twin.reason]);
+    if (failures.length > 0) {
+      await Promise.allSettled([
+        physical.status === 'fulfilled' ? this.physical.cleanup() : undefined,
+        twin.status === 'fulfilled' ? this.twin.cleanup() : undefined,
+      ]);
+      const [side, reason] = failures[0]!;
+      const error = toHalError(reason);
+      const sides = failures
+        .map(
+          ([s, r]) =>
+            `the ${s === 'physical' ? 'physical robot' : 'twin'} failed to initialise: ${toHalError(r).message}`,
+        )
+        .join('; ');
+      this.#log('error', 'initialize failed', { sides: failures.map(([s]) => s) });
+      throw new HalError(error.code, `hybrid: ${sides}`, {
+        details: { side, sides: failures.map(([s]) => s) },
+        cause: reason,
+      });
+    }
+    let physicalPose: Pose;
+    let twinPose: Pose;
+    try {
+      [physicalPose, twinPose] = await Promise.all([
+        this.physical.locomotion.getPose(),
+        this.twin.locomotion.getPose(),
+      ]);
+    } catch (thrown) {
+      await Promise.allSettled([this.physical.cleanup(), this.twin.cleanup()]);
+      const error = toHalError(thrown);
+      throw new HalError(error.code, `hybrid: could not read the start poses: ${error.message}`, {
+        cause: thrown,
+      });
+    }
+    this.#starts = { physical: planar(physicalPose), twin: planar(twinPose) };
+    this.#latest = { positionM: 0, yawRad: 0, exceeded: false };
+    this.#ready = true;
+    this.#log('info', 'initialized', { physical: this.physical.mode, twin: this.twin.mode });
+  }
+
+  /** Cleans up both robots. Safe to call twice; rejects, naming the side, if either cleanup did. */
+  async cleanup(): Promise<void> {
+    await this.#initializing?.catch(() => undefined);
+    this.#ready = false;
+    const results = await Promise.allSettled([this.physical.cleanup(), this.twin.cleanup()]);
+    const sides: Side[] = ['physical', 'twin'];
+    for (const [index, result] of results.entries()) {
+      if (result.status === 'rejected') {
+        const error = toHalError(result.reason);
+        throw new HalError(
+          error.code,
+          `hybrid: the ${sides[index]} cleanup failed: ${error.message}`,
+          {
+            details: { side: sides[index] },
+            cause: result.reason,
+          },
+        );
+      }
+    }
+  }
+
+  /** True while the hybrid HAL is initialised and both robots are ready. */
+  isReady(): boolean {
+    return this.#ready && this.physical.isReady() && this.twin.isReady();
+  }
+
+  /** The physical robot's identity and capabilities (the truth), in mode 'hybrid'. */
+  getDeviceInfo(): DeviceInfo {
+    const info = this.physical.getDeviceInfo();
+    return {
+      id: this.#options.deviceId ?? info.id,
+      type: info.type,
+      mode: this.mode,
+      capabilities: [...info.capabilities],
+    };
+  }
+
+  /** The divergence measured after the latest call (zero right after `initialize()`). */
+  getDivergence(): Divergence | undefined {
+    return this.#latest === undefined ? undefined : { ...this.#latest };
+  }
+
+  /** Measures the divergence now (e.g. while a drive without a duration runs). */
+  async measureDivergence(): Promise<Divergence | undefined> {
+    return this.#measure('measure');
+  }
+
+  /**
+   * Calls `listener` after every call (or measurement) that leaves the twin beyond the tolerance.
+   * Returns a function that removes it. A listener that throws is logged and ignored.
+   */
+  onDivergence(listener: (event: DivergenceEvent) => void): () => void {
+    this.#listeners.add(listener);
+    return () => {
+      this.#listeners.delete(listener);
+    };
+  }
+
+  async #run<N extends CallName>(
+    call: N,
+    args: unknown,
+    onPhysical: (params: CallParams<N>) => Promise<HALToolResult>,
+    onTwin?: (params: CallParams<N>) => Promise<HALToolResult>,
+  ): Promise<HALToolResult> {
+    const started = this.#now();
+    let params: CallParams<N>;
+    try {
+      this.#boundary.checkAllowed(call);
+      params = this.#boundary.validate(call, args);
+    } catch (thrown) {
+      const finished = this.#now();
+      return failureResult(this.mode, finished, thrown, finished - started);
+    }
+    const [physical, twin] = await Promise.all([
+      this.#settle(this.physical.mode, () => onPhysical(params)),
+      onTwin === undefined ? undefined : this.#settle(this.twin.mode, () => onTwin(params)),
+    ]);
+    if (twin !== undefined && !twin.success) {
+      this.#log('warn', `${call}: the twin failed`, { code: twin.code, error: twin.error });
+    }
+    const divergence = await this.#measure(call);
+    const finished = this.#now();
+    const data: Record<string, unknown> = { ...physical.data };
+    if (twin !== undefined) {
+      const summary: TwinSummary = { success: twin.success };
+      if (twin.code !== undefined) summary.code = twin.code;
+      data['twin'] = summary;
+    }
+    if (divergence !== undefined) data['divergence'] = divergence;
+    const result: HALToolResult = {
+      ...physical,
+      data,
+      mode: this.mode,
+      timestamp: finished,
+      executionTime: Math.max(0, finished - started),
+    };
+    return result;
+  }
+
+  /** Runs one side's call; anything it throws becomes a failed result (HAL calls should not). */
+  async #settle(mode: HALMode, body: () => Promise<HALToolResult>): Promise<HALToolResult> {
+    try {
+      return await body();
+    } catch (thrown) {
+      return failureResult(mode, this.#now(), thrown);
+    }
+  }
+
+  async #measure(call: DivergenceEvent['call']): Promise<Divergence | undefined> {
+    const starts = this.#starts;
+    if (starts === undefined) return undefined;
+    let physical: PlanarPose;
+    let twin: PlanarPose;
+    try {
+      const [p, t] = await Promise.all([
+        this.physical.locomotion.getPose(),
+        this.twin.locomotion.getPose(),
+      ]);
+      physical = relativeTo(starts.physical, planar(p));
+      twin = relativeTo(starts.twin, planar(t));
+    } catch (thrown) {
+      this.#log('warn', `${call}: could not read a pose to measure the divergence`, {
+        error: toHalError(thrown).message,
+      });
+      return undefined;
+    }
+    const divergence = divergenceBetween(physical, twin, this.#tolerance);
+    this.#latest = divergence;
+    if (divergence.exceeded) {
+      this.#log('warn', `${call}: the twin diverged`, { ...divergence });
+      for (const listener of [...this.#listeners]) {
+        try {
+          listener({ call, divergence: { ...divergence }, physical, twin });
+        } catch (thrown) {
+          this.#log('error', 'a divergence listener threw', { error: toHalError(thrown).message });
+        }
+      }
+    }
+    return { ...divergence };
+  }
+
+  #log(level: HybridLogLevel, message: string, fields?: Record<string, unknown>): void {
+    const logger: HybridLogger | undefined = this.#options.logger;
+    try {
+      logger?.log(level, 'hal:hybrid', message, fields);
+    } catch {
+      // a broken logger must not break a call
+    }
+  }
+}

@@ -1,0 +1,39 @@
+import type { HardwareAbstractionLayer, RobotConfig } from '@hal/types';
+import type { DivergenceTolerance } from './divergence.js';
+
+/** Log levels, least to most severe. */
+export type HybridLogLevel = 'debug' | 'info' | 'warn' | 'error';
+
+/**
+ * Where the hybrid HAL writes what it does (namespace `hal:hybrid`). The same shape as
+ * `@hal/physical`'s `Logger`, so one logger serves both. Default: drop everything.
+ */
+export interface HybridLogger {
+  log(
+    level: HybridLogLevel,
+    namespace: string,
+    message: string,
+    fields?: Record<string, unknown>,
+  ): void;
+}
+
+/** What a {@link HybridHAL} is made of. */
+export interface HybridHALOptions {
+  /** The physical robot's HAL (e.g. a PhysicalHAL): its results and pose are the truth. */
+  physical: HardwareAbstractionLayer;
+  /** The simulated twin (e.g. a SimulationHAL): it runs every motion too, and is compared. */
+  twin: HardwareAbstractionLayer;
+  /** When the twin counts as diverged. Default 5 mm and 1 degree. */
+  divergence?: Partial<DivergenceTolerance>;
+  /** Where to log. Default silent. */
+  logger?: HybridLogger;
+  /** The id `getDeviceInfo()` reports. Default the physical robot's id. */
+  deviceId?: string;
+  /**
+   * The limits calls are validated against before either robot is asked. Default the physical
+   * HAL's `robotConfig` when it has one (PhysicalHAL does: the robot's reported limits), else V1.
+   */
+  robotConfig?: () => RobotConfig;
+  /** The clock results are stamped with, ms. Default `Date.now`. */
+  now?: () => number;
+}
