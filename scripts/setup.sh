@@ -11,7 +11,8 @@ log() { printf '[setup] %s\n' "$*" >&2; }
 apt_packages=(
   cmake ninja-build g++ pkg-config # firmware host build
   libgtest-dev nlohmann-json3-dev libmbedtls-dev # firmware tests, golden vectors, HMAC
-  gcc-arm-none-eabi libnewlib-arm-none-eabi # 32-bit cross build of the firmware core (size check)
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib # 32-bit cross build (size check)
+  clang libclang-rt-14-dev # libFuzzer targets for the firmware's parsers (ASan, UBSan)
   chromium # the browser demo's end-to-end test
   socat # serial link tools used by the docs' smoke checks
 )
