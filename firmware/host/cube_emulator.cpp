@@ -32,6 +32,7 @@ struct Options {
   std::string device_id = "cube-emulator";
   bool exit_on_stdin_eof = false;
   bool pty = true;
+  bool insecure = false;
 };
 
 void Usage(FILE* f) {
@@ -41,10 +42,18 @@ void Usage(FILE* f) {
       "  --udp-port N          UDP port on the bind address (default 4210, "
       "0 = a free port)\n"
       "  --bind ADDR           IPv4 address to listen on (default "
-      "127.0.0.1)\n"
+      "127.0.0.1); an address\n"
+      "                        other than 127.x.x.x needs --key or "
+      "--insecure\n"
       "  --time-scale X        run the robot's clock X times faster (default "
       "1)\n"
       "  --key HEX             pre-shared key: requests must carry a MAC\n"
+      "                        (without it: no authentication, as a board "
+      "built with\n"
+      "                        CUBE_ALLOW_UNAUTHENTICATED)\n"
+      "  --insecure            allow a non-loopback --bind without --key: "
+      "anyone on\n"
+      "                        that network can command the robot\n"
       "  --host-timeout-ms N   host timeout, 500..10000 (default 2000)\n"
       "  --device-id ID        device_id reported by hello (default "
       "cube-emulator)\n"
@@ -108,6 +117,8 @@ bool ParseArgs(int argc, char** argv, Options* o) {
       const char* v = value("--device-id");
       if (v == nullptr) return false;
       o->device_id = v;
+    } else if (a == "--insecure") {
+      o->insecure = true;
     } else if (a == "--no-pty") {
       o->pty = false;
     } else if (a == "--exit-on-stdin-eof") {
@@ -163,6 +174,16 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (key.empty() && !opt.insecure && !cube::IsLoopbackAddress(opt.bind)) {
+    std::fprintf(stderr,
+                 "cube-emulator: refusing to listen on %s without a key: "
+                 "anyone on that network could command the robot. Give "
+                 "--key HEX, bind 127.0.0.1, or pass --insecure to accept "
+                 "that.\n",
+                 opt.bind.c_str());
+    return 2;
+  }
+
   std::signal(SIGTERM, OnSignal);
   std::signal(SIGINT, OnSignal);
   std::signal(SIGPIPE, SIG_IGN);
@@ -181,7 +202,12 @@ int main(int argc, char** argv) {
   cube::CubeConfig config;
   config.host_timeout_ms = opt.host_timeout_ms;
   robot.Configure(config);
-  if (!key.empty()) robot.SetKey(key.data(), key.size());
+  if (key.empty()) {
+    robot.AllowUnauthenticated();
+  } else if (!robot.SetKey(key.data(), key.size())) {
+    std::fprintf(stderr, "cube-emulator: the key could not be set\n");
+    return 1;
+  }
 
   cube::EventLog log(robot, robot_clock);
   robot.set_observer(&log);
@@ -203,7 +229,7 @@ int main(int argc, char** argv) {
   bridge.set_link(&link);
 
   log.Ready(udp.port(), opt.pty ? pty.path() : "", opt.device_id,
-            opt.time_scale, !key.empty());
+            opt.time_scale, cube::AuthModeName(robot.auth_mode()));
 
   static uint8_t buf[4096];
   static uint8_t reply[cube::kMaxMessage];

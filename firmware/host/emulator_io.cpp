@@ -13,6 +13,12 @@
 
 namespace cube {
 
+bool IsLoopbackAddress(const std::string& address) {
+  in_addr a{};
+  if (inet_pton(AF_INET, address.c_str(), &a) != 1) return false;
+  return (ntohl(a.s_addr) >> 24) == 127;
+}
+
 UdpEndpoint::~UdpEndpoint() {
   if (fd_ >= 0) close(fd_);
 }
@@ -117,7 +123,7 @@ void EventLog::Emit(JsonWriter& w, char* buf) {
 
 void EventLog::Ready(uint16_t udp_port, const std::string& pty,
                      const std::string& device_id, double time_scale,
-                     bool auth) {
+                     const char* auth) {
   char buf[512];
   JsonWriter w(buf, sizeof(buf) - 1);
   w.BeginObject();
@@ -132,7 +138,7 @@ void EventLog::Ready(uint16_t udp_port, const std::string& pty,
   w.Key("time_scale");
   w.Double(time_scale);
   w.Key("auth");
-  w.Bool(auth);
+  w.String(auth);
   w.Key("protocol_version");
   w.String(kProtocolVersion);
   Emit(w, buf);

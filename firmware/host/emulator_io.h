@@ -13,6 +13,10 @@
 
 namespace cube {
 
+// Whether `address` (dotted IPv4) is in 127.0.0.0/8. False when it does not
+// parse (0.0.0.0, every interface, is not loopback).
+bool IsLoopbackAddress(const std::string& address);
+
 // A UDP socket bound to 127.0.0.1 (or the given address).
 class UdpEndpoint {
  public:
@@ -51,7 +55,8 @@ class EventLog : public CubeObserver {
  public:
   EventLog(Cube& cube, Clock& clock) : cube_(cube), clock_(clock) {}
   void Ready(uint16_t udp_port, const std::string& pty,
-             const std::string& device_id, double time_scale, bool auth);
+             const std::string& device_id, double time_scale,
+             const char* auth);
   void OnMotionStarted(const MotionReport& r) override;
   void OnMotionFinished(const MotionReport& r) override;
   void OnTrip(const SafetyTrip& trip) override;

@@ -1,7 +1,12 @@
-// Optional authentication (docs/protocol.md section 8).
+// Authentication (docs/protocol.md section 8): a key, the explicit
+// unauthenticated opt-out, and the closed state before either is set.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "harness.h"
+#include "key_hex.h"
 
 namespace cube::testing {
 namespace {
@@ -34,7 +39,7 @@ TEST(Auth, ASignedSessionWorksAndEveryReplyIsSigned) {
   Device d(kKey);
   const json h = d.Hello();  // Send() checks the reply MAC
   EXPECT_TRUE(h["ok"]);
-  EXPECT_EQ(h["auth"], true);
+  EXPECT_EQ(h["auth"], "hmac-sha256");
   EXPECT_TRUE(h.contains("nonce"));
   const json m = d.Call("move_steps", {{"left", 100}, {"right", 100}});
   EXPECT_TRUE(m["ok"]);
@@ -129,6 +134,132 @@ TEST(Auth, ResetEstopNeedsTheCurrentSessionWhenAKeyIsSet) {
   EXPECT_TRUE(d.cube->estopped());
   EXPECT_TRUE(d.Call("reset_estop")["ok"]);
   EXPECT_FALSE(d.cube->estopped());
+}
+
+TEST(Auth, AMacWrongInAnySingleDigitIsRefused) {
+  Device d(kKey);
+  d.Hello();
+  const std::string body = json({{"cmd", "move_steps"},
+                                 {"seq", 2},
+                                 {"sid", d.sid},
+                                 {"left", 100},
+                                 {"right", 100}})
+                               .dump();
+  const std::string good = MacHex(kKey, body);
+  for (size_t i = 0; i < good.size(); ++i) {
+    std::string forged = good;
+    forged[i] = forged[i] == '0' ? '1' : '0';
+    const json r = Unsigned(d.Raw(body + "#" + forged));
+    EXPECT_EQ(Code(r), "AUTH_FAILED") << "digit " << i;
+  }
+  EXPECT_FALSE(d.cube->running());
+  EXPECT_TRUE(Unsigned(d.Raw(body + "#" + good))["ok"]);
+}
+
+TEST(Auth, ResetEstopWithoutTheSessionIsRefusedWhenAKeyIsSet) {
+  Device d(kKey);
+  d.Hello();
+  d.Call("estop");
+  // seed-style, correctly MACed: refused, the latch stays
+  const std::string seed = R"({"cmd":"reset_estop"})";
+  EXPECT_EQ(Code(Unsigned(d.Raw(seed + "#" + MacHex(kKey, seed)))),
+            "AUTH_FAILED");
+  // a session id that was never issued
+  const std::string other =
+      json({{"cmd", "reset_estop"}, {"seq", 9}, {"sid", d.sid + 1}}).dump();
+  EXPECT_EQ(Code(Unsigned(d.Raw(other + "#" + MacHex(kKey, other)))),
+            "SESSION_MISMATCH");
+  EXPECT_TRUE(d.cube->estopped());
+}
+
+TEST(Auth, TheOptOutAcceptsSeedStyleRequestsAndSaysAuthNone) {
+  Device d;
+  EXPECT_EQ(d.cube->auth_mode(), AuthMode::kNone);
+  const json m = d.Send({{"cmd", "move_steps"}, {"left", 50}, {"right", 50}});
+  EXPECT_TRUE(m["ok"]);
+  EXPECT_FALSE(m.contains("seq"));
+  d.RunUntilIdle();
+  EXPECT_EQ(d.cube->left_position(), 50);
+  d.Send({{"cmd", "estop"}});
+  EXPECT_TRUE(d.Send({{"cmd", "reset_estop"}})["ok"]);
+  EXPECT_FALSE(d.cube->estopped());
+  EXPECT_EQ(d.Hello()["auth"], "none");
+}
+
+// A Cube nobody configured (neither SetKey nor AllowUnauthenticated) is
+// closed: only a stop gets through.
+class Unconfigured : public ::testing::Test {
+ protected:
+  Unconfigured() {
+    CubeDeps deps;
+    deps.clock = &clock_;
+    deps.motors = &motors_;
+    deps.random = &random_;
+    deps.mac = &mac_;
+    cube_ = std::make_unique<Cube>(deps, "cube-closed");
+  }
+  json Send(const std::string& text) {
+    uint8_t out[kMaxMessage + 64];
+    const size_t n =
+        cube_->Handle(reinterpret_cast<const uint8_t*>(text.data()),
+                      text.size(), out, sizeof(out));
+    return json::parse(std::string(reinterpret_cast<char*>(out), n));
+  }
+  FakeClock clock_;
+  RecordingMotors motors_{clock_};
+  SequenceRandom random_;
+  MbedtlsMac mac_;
+  std::unique_ptr<Cube> cube_;
+};
+
+TEST_F(Unconfigured, RefusesEverythingButStopAndEstop) {
+  EXPECT_EQ(cube_->auth_mode(), AuthMode::kUnconfigured);
+  for (const char* req :
+       {R"({"cmd":"hello","seq":1,"nonce":"n"})",
+        R"({"cmd":"move_steps","left":100,"right":100})",
+        R"({"cmd":"drive","left_sps":100,"right_sps":100})",
+        R"({"cmd":"set_config","host_timeout_ms":9000})",
+        R"({"cmd":"get_status"})", R"({"cmd":"reset_estop"})"}) {
+    const json r = Send(req);
+    EXPECT_EQ(Code(r), "AUTH_FAILED") << req;
+    EXPECT_NE(r["error"]["message"].get<std::string>().find(
+                  "authentication is not configured"),
+              std::string::npos);
+  }
+  EXPECT_FALSE(cube_->running());
+  EXPECT_EQ(cube_->config().host_timeout_ms, 2000);
+  EXPECT_TRUE(Send(R"({"cmd":"stop"})")["ok"]);
+  EXPECT_TRUE(Send(R"({"cmd":"estop","reason":"closed"})")["ok"]);
+  EXPECT_TRUE(cube_->estopped());
+  EXPECT_EQ(Code(Send(R"({"cmd":"reset_estop"})")), "AUTH_FAILED");
+  EXPECT_TRUE(cube_->estopped());
+}
+
+TEST_F(Unconfigured, ABadKeyLeavesItClosedAndAGoodOneOpensASignedSession) {
+  EXPECT_FALSE(cube_->SetKey(kKey.data(), 0));
+  std::vector<uint8_t> long_key(kMaxKeyLen + 1, 7);
+  EXPECT_FALSE(cube_->SetKey(long_key.data(), long_key.size()));
+  EXPECT_EQ(cube_->auth_mode(), AuthMode::kUnconfigured);
+  ASSERT_TRUE(cube_->SetKey(kKey.data(), kKey.size()));
+  EXPECT_EQ(cube_->auth_mode(), AuthMode::kHmacSha256);
+  cube_->AllowUnauthenticated();
+  EXPECT_EQ(cube_->auth_mode(), AuthMode::kNone);
+  EXPECT_EQ(Send(R"({"cmd":"hello","seq":1})")["auth"], "none");
+}
+
+TEST(KeyHex, ChecksAKeyTheWayTheSketchBuildDoes) {
+  static_assert(CheckKeyHex("00ff") == KeyHexError::kOk, "two bytes");
+  static_assert(ParseKeyHex("a0Fb").bytes[1] == 0xfb, "either case");
+  EXPECT_EQ(CheckKeyHex(""), KeyHexError::kEmpty);
+  EXPECT_EQ(CheckKeyHex("abc"), KeyHexError::kOddLength);
+  EXPECT_EQ(CheckKeyHex("zz"), KeyHexError::kNotHex);
+  EXPECT_EQ(CheckKeyHex("00 11"), KeyHexError::kNotHex);
+  EXPECT_EQ(CheckKeyHex(std::string(128, 'a').c_str()), KeyHexError::kOk);
+  EXPECT_EQ(CheckKeyHex(std::string(130, 'a').c_str()), KeyHexError::kTooLong);
+  const KeyBytes k = ParseKeyHex("00112233445566778899aabbccddeeff");
+  ASSERT_EQ(k.len, kKey.size());
+  EXPECT_TRUE(std::equal(kKey.begin(), kKey.end(), k.bytes));
+  EXPECT_EQ(ParseKeyHex("0g").len, 0u);
 }
 
 TEST(Auth, WithoutAKeyAMacSuffixIsIgnored) {

@@ -64,6 +64,36 @@ TEST(MoveSteps, MissingOrMistypedParametersAreInvalid) {
   EXPECT_FALSE(d.cube->running());
 }
 
+// JSON allows 1e400, a double does not: it reads as infinity, which the
+// protocol's finite numbers exclude.
+TEST(Commands, ANumberBeyondTheDoubleRangeIsAnInvalidParameter) {
+  Device d;
+  json r = json::parse(d.Raw(R"({"cmd":"move_steps","left":10,"right":10,)"
+                             R"("speed":1e400})"));
+  EXPECT_EQ(Code(r), "INVALID_PARAMETER");
+  EXPECT_EQ(r["error"]["message"], "\"speed\" must be a finite number");
+  EXPECT_EQ(r["error"]["details"]["field"], "speed");
+  r = json::parse(d.Raw(R"({"cmd":"move_cm","left_cm":-1e400,"right_cm":1})"));
+  EXPECT_EQ(Code(r), "INVALID_PARAMETER");
+  EXPECT_EQ(r["error"]["message"], "\"left_cm\" must be a finite number");
+  r = json::parse(d.Raw(R"({"cmd":"rotate_deg","degrees":1e400})"));
+  EXPECT_EQ(Code(r), "INVALID_PARAMETER");
+  r = json::parse(d.Raw(R"({"cmd":"move_steps","left":1e400,"right":1})"));
+  EXPECT_EQ(r["error"]["message"], "\"left\" must be an integer");
+  r = json::parse(d.Raw(R"({"cmd":"set_config","wheel_base_cm":12,)"
+                        R"("wheel_diameter_cm":1e400})"));
+  EXPECT_EQ(Code(r), "INVALID_PARAMETER");
+  EXPECT_EQ(r["error"]["message"],
+            "\"wheel_diameter_cm\" must be a finite number");
+  EXPECT_FALSE(d.cube->running());
+  EXPECT_EQ(d.cube->left_position(), 0);
+  EXPECT_EQ(d.cube->config().geometry.wheel_base_cm, 10.0) << "nothing applied";
+  EXPECT_EQ(d.cube->trips(), 0u);
+  // An unknown field may still carry such a number: it is ignored.
+  r = json::parse(d.Raw(R"({"cmd":"heartbeat","later":1e400})"));
+  EXPECT_TRUE(r["ok"]);
+}
+
 TEST(MoveSteps, SpeedAboveTheMaximumIsClampedAndReported) {
   Device d;
   const json r = d.Send(

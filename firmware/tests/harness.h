@@ -79,6 +79,7 @@ class RecordingObserver : public CubeObserver {
 // One robot on a fake clock, with helpers to talk to it.
 class Device {
  public:
+  // Without a key: the unauthenticated opt-out (AllowUnauthenticated).
   Device();
   explicit Device(const std::vector<uint8_t>& key);
 

@@ -7,8 +7,16 @@
 #define CUBE_WIFI_SSID "your-network"
 #define CUBE_WIFI_PASSWORD "your-password"
 
-// Optional pre-shared key for authenticated requests (docs/protocol.md
-// section 8), 1..64 bytes written as hex. Leave empty for no authentication.
+// Pre-shared key for authenticated requests (docs/protocol.md section 8):
+// 1..64 bytes written as hex. Required: generate one with
+//   openssl rand -hex 32
+// and give the same key to the host (PhysicalHAL's `key` option). The build
+// stops while it is empty or malformed.
 #define CUBE_KEY_HEX ""
+
+// Or, instead of a key, the explicit opt-out: no authentication at all, so
+// anyone who can reach the robot's UDP port 4210 can move it, stop it and
+// clear its emergency stop. For a bench on a network you alone use.
+// #define CUBE_ALLOW_UNAUTHENTICATED 1
 
 #endif  // CUBE_SECRETS_H_

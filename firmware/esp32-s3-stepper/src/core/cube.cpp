@@ -52,15 +52,32 @@ void Cube::OnMotionFinished(const MotionReport& r) {
   if (observer_ != nullptr) observer_->OnMotionFinished(r);
 }
 
-bool Cube::SetKey(const uint8_t* key, size_t len) {
-  if (len == 0) {
-    key_len_ = 0;
-    return true;
+const char* AuthModeName(AuthMode m) {
+  switch (m) {
+    case AuthMode::kUnconfigured:
+      return "unconfigured";
+    case AuthMode::kHmacSha256:
+      return "hmac-sha256";
+    case AuthMode::kNone:
+      return "none";
   }
-  if (mac_ == nullptr || len > kMaxKeyLen) return false;
+  return "unconfigured";
+}
+
+bool Cube::SetKey(const uint8_t* key, size_t len) {
+  if (mac_ == nullptr || key == nullptr || len == 0 || len > kMaxKeyLen) {
+    return false;
+  }
   std::memcpy(key_, key, len);
   key_len_ = len;
+  auth_ = AuthMode::kHmacSha256;
   return true;
+}
+
+void Cube::AllowUnauthenticated() {
+  std::memset(key_, 0, sizeof(key_));
+  key_len_ = 0;
+  auth_ = AuthMode::kNone;
 }
 
 uint64_t Cube::uptime_ms() const { return (clock_.NowUs() - boot_us_) / 1000; }

@@ -10,19 +10,30 @@
 #include "hal.h"
 #include "json_reader.h"
 #include "json_writer.h"
+#include "key_hex.h"
 #include "kinematics.h"
 #include "motion.h"
 #include "stepper.h"
 
 namespace cube {
 
-constexpr const char* kFirmwareVersion = "1.0.0";
-constexpr const char* kProtocolVersion = "1.0";
+constexpr const char* kFirmwareVersion = "1.1.0";
+constexpr const char* kProtocolVersion = "1.1";
 constexpr size_t kMaxMessage = 1024;
 constexpr int64_t kMaxStepsPerCommand = 40960;
 constexpr size_t kReplyMemory = 16;
 constexpr size_t kMacHexLen = 32;
-constexpr size_t kMaxKeyLen = 64;
+
+// How the device authenticates requests (docs/protocol.md section 8). A
+// Cube starts closed: until SetKey() or AllowUnauthenticated() it runs only
+// stop and estop and refuses everything else with AUTH_FAILED.
+enum class AuthMode : uint8_t {
+  kUnconfigured,  // neither a key nor the opt-out: closed
+  kHmacSha256,    // a pre-shared key: every message MACed, sessions required
+  kNone,          // the explicit opt-out: anyone who reaches it commands it
+};
+// "unconfigured", "hmac-sha256", "none" (the last two are hello's `auth`).
+const char* AuthModeName(AuthMode m);
 
 struct CubeConfig {
   Geometry geometry;
@@ -77,9 +88,14 @@ class Cube : private MotionListener {
   // Boot-time configuration (the board's defaults, the emulator's flags).
   // Values are used as given; set_config over the wire validates.
   void Configure(const CubeConfig& config);
-  // Configures the pre-shared key (1..64 bytes); false without a
-  // MacProvider or with a bad length. Length 0 switches authentication off.
+  // Configures the pre-shared key (1..64 bytes): authentication on. False
+  // (and nothing changed) without a MacProvider or with a bad length.
   bool SetKey(const uint8_t* key, size_t len);
+  // The explicit opt-out (CUBE_ALLOW_UNAUTHENTICATED, the emulator without
+  // --key): no MAC, and requests without a session are accepted. Forgets a
+  // key set before.
+  void AllowUnauthenticated();
+  AuthMode auth_mode() const { return auth_; }
 
   // Handles one request (a UDP datagram or a frame's payload) and writes
   // exactly one reply into `out` (cap >= kMaxMessage + 33 recommended).
@@ -186,6 +202,7 @@ class Cube : private MotionListener {
   size_t hello_reply_len_ = 0;
 
   // Authentication.
+  AuthMode auth_ = AuthMode::kUnconfigured;
   uint8_t key_[kMaxKeyLen] = {};
   size_t key_len_ = 0;
 

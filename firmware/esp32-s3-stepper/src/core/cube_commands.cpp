@@ -47,7 +47,7 @@ void Cube::CmdHello(Reply& r) {
   const JsonField* nonce = nullptr;
   const Got gn = GetString(r, "nonce", &nonce);
   if (gn == Got::kError) return;
-  if (gn == Got::kAbsent && key_len_ > 0) {
+  if (gn == Got::kAbsent && auth_ == AuthMode::kHmacSha256) {
     Missing(r, "nonce");
     return;
   }
@@ -93,7 +93,7 @@ void Cube::CmdHello(Reply& r) {
   w.Key("protocol_version");
   w.String(kProtocolVersion);
   w.Key("auth");
-  w.Bool(key_len_ > 0);
+  w.String(AuthModeName(auth_));
   w.Key("capabilities");
   w.BeginArray();
   w.String("locomotion.differential:v1.0");

@@ -38,6 +38,8 @@ size_t Cube::AppendMac(uint8_t* buf, size_t len, size_t cap) {
   return len + 1 + kMacHexLen;
 }
 
+// Compares every digit whatever the first difference, so the time taken
+// does not tell an attacker how much of a forged MAC was right.
 bool Cube::VerifyMac(const uint8_t* json, size_t len, const uint8_t* hex) {
   uint8_t digest[32];
   if (!mac_->HmacSha256(key_, key_len_, json, len, digest)) return false;
@@ -147,7 +149,8 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
     }
   }
 
-  if (key_len_ > 0 &&
+  const bool keyed = auth_ == AuthMode::kHmacSha256;
+  if (keyed &&
       (mac_hex == nullptr || !VerifyMac(req, json_len, mac_hex))) {
     reply.Fail(kAuthFailed, mac_hex == nullptr
                                 ? "message has no MAC; a key is configured"
@@ -174,7 +177,17 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
   const char* cmd = cmd_field->str;
   const bool is_hello = Equals(cmd, "hello");
 
-  if (key_len_ > 0) {
+  // Closed until configured: only a stop gets through.
+  if (auth_ == AuthMode::kUnconfigured && !Equals(cmd, "stop") &&
+      !Equals(cmd, "estop")) {
+    reply.Fail(kAuthFailed,
+               "authentication is not configured on this device: it runs "
+               "only stop and estop until it has a key or the explicit "
+               "opt-out");
+    return Finish(reply, out, cap);
+  }
+
+  if (keyed) {
     if (!reply.has_seq) {
       reply.Fail(kAuthFailed, "\"seq\" is required when a key is configured");
       return Finish(reply, out, cap);
@@ -213,7 +226,7 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
   }
 
   const bool safety_cmd = Equals(cmd, "stop") || Equals(cmd, "estop") ||
-                          (Equals(cmd, "reset_estop") && key_len_ == 0);
+                          (Equals(cmd, "reset_estop") && !keyed);
 
   if (reply.has_seq || reply.has_sid) {
     const bool in_session =

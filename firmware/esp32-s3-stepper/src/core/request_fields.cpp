@@ -1,5 +1,7 @@
 #include "request_fields.h"
 
+#include <cmath>
+
 #include "text.h"
 
 namespace cube {
@@ -52,6 +54,12 @@ Got GetNumber(Reply& r, const char* key, double* out) {
   if (f == nullptr) return Got::kAbsent;
   if (f->type != JsonType::kNumber) {
     TypeError(r, key, "a number");
+    return Got::kError;
+  }
+  // A literal beyond the double range (1e400) reads as infinity; the
+  // protocol's numbers are finite.
+  if (!std::isfinite(f->number)) {
+    TypeError(r, key, "a finite number");
     return Got::kError;
   }
   *out = f->number;

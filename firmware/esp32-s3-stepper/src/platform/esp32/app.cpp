@@ -6,7 +6,9 @@
 //     answers requests and keeps the step queue filled (Cube::Poll), and is
 //     watched by the task watchdog;
 //   - WiFi runs on core 0 as usual; loop() only watches the connection.
-// The serial port carries protocol frames only: nothing else may print to it.
+// The serial port carries protocol frames only, but for one text line at
+// boot, before the link starts, that says how the robot authenticates (a
+// receiver drops it as garbage while hunting for a frame).
 
 #if defined(ARDUINO_ARCH_ESP32)
 
@@ -26,8 +28,11 @@
 #include "../../secrets.h"
 #else
 #error \
-    "Copy src/secrets.example.h to src/secrets.h and set your WiFi network (docs/flashing.md)"
+    "Copy src/secrets.example.h to src/secrets.h and set your WiFi network and key (docs/flashing.md)"
 #endif
+// After secrets.h: checks CUBE_KEY_HEX / CUBE_ALLOW_UNAUTHENTICATED at
+// compile time.
+#include "../build_auth.h"
 
 namespace {
 
@@ -65,25 +70,22 @@ SerialBridge bridge;
 
 void ARDUINO_ISR_ATTR OnStepTimer() { robot->Tick(); }
 
-int HexNibble(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-
-void ConfigureKey() {
-  static const char kHex[] = CUBE_KEY_HEX;
-  const size_t n = sizeof(kHex) - 1;
-  if (n == 0 || n % 2 != 0 || n / 2 > cube::kMaxKeyLen) return;
-  uint8_t key[cube::kMaxKeyLen];
-  for (size_t i = 0; i < n / 2; ++i) {
-    const int hi = HexNibble(kHex[2 * i]);
-    const int lo = HexNibble(kHex[2 * i + 1]);
-    if (hi < 0 || lo < 0) return;
-    key[i] = static_cast<uint8_t>((hi << 4) | lo);
+// The key (or the opt-out) was checked when the sketch was compiled
+// (build_auth.h). Says on the serial port, once, which mode the robot runs.
+void ConfigureAuth() {
+  if (cube::build::kUnauthenticated) {
+    robot->AllowUnauthenticated();
+    Serial.println(
+        "cube: WARNING: built with CUBE_ALLOW_UNAUTHENTICATED: no "
+        "authentication, anyone who reaches UDP port 4210 can command this "
+        "robot");
+  } else if (robot->SetKey(cube::build::kKey.bytes, cube::build::kKey.len)) {
+    Serial.printf("cube: authentication hmac-sha256 (%u-byte key)\n",
+                  static_cast<unsigned>(cube::build::kKey.len));
+  } else {
+    // Cannot happen with a checked key; the robot then stays closed.
+    Serial.println("cube: ERROR: key not accepted; only stop and estop run");
   }
-  robot->SetKey(key, n / 2);
 }
 
 void PollUdp() {
@@ -165,7 +167,7 @@ void CubeAppSetup() {
   deps.mac = &mac;
   static cube::Cube cube_instance(deps, device_id);
   robot = &cube_instance;
-  ConfigureKey();
+  ConfigureAuth();
   static cube::SerialLink link_instance(serial_sink, bridge,
                                         static_cast<uint16_t>(esp_random()));
   serial_link = &link_instance;
