@@ -162,7 +162,7 @@ for (const link of ['udp', 'serial'] as const) {
 
     it('authenticates every message when a key is configured', async () => {
       await start({ key: '0123456789abcdef' });
-      expect(hal.identity?.auth).toBe(true);
+      expect(hal.identity).toMatchObject({ auth: true, authScheme: 'hmac-sha256' });
       expect((await hal.locomotion.moveForward(2)).success).toBe(true);
       expect((await hal.communication.setLED(0, 128, 255, 'blink')).success).toBe(true);
       const status = await hal.refreshStatus();

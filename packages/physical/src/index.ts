@@ -34,6 +34,7 @@ export type { DecodeResult, WireReply } from './protocol/codec.js';
 export { createAuthenticator, MAC_SUFFIX_LENGTH } from './protocol/auth.js';
 export type { MessageAuthenticator } from './protocol/auth.js';
 export {
+  AuthSchemeSchema,
   DeviceConfigSchema,
   EstopReplySchema,
   HeartbeatReplySchema,
@@ -51,6 +52,7 @@ export {
   StopReplySchema,
 } from './protocol/schemas.js';
 export type {
+  AuthScheme,
   Command,
   DeviceConfig,
   EstopReply,

@@ -1,5 +1,5 @@
 import type { Logger } from '../logger.js';
-import type { DeviceConfig } from '../protocol/schemas.js';
+import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
 import type { TransportFactory } from '../transport/transport.js';
 
 /** Options of {@link PhysicalHAL}, beside its {@link HALConfig}. */
@@ -43,7 +43,13 @@ export interface RobotIdentity {
   deviceId: string;
   firmwareVersion: string;
   protocolVersion: string;
+  /** Whether messages are MACed with a pre-shared key (`authScheme` is `hmac-sha256`). */
   auth: boolean;
+  /**
+   * How the robot authenticates: `hmac-sha256`, or `none` when it was built with the
+   * unauthenticated opt-out (anyone who reaches it can command it).
+   */
+  authScheme: AuthScheme;
   capabilities: string[];
   config: DeviceConfig;
 }

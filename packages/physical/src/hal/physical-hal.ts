@@ -143,6 +143,14 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#initialized = true;
       this.#camera?.start();
       this.#log.info('connected', { deviceId: hello.device_id, transport: transport.type });
+      if (hello.auth === 'none') {
+        this.#log.warn(
+          'the robot runs without authentication: anyone who reaches it can command it',
+          {
+            deviceId: hello.device_id,
+          },
+        );
+      }
     } catch (error) {
       session.close();
       await transport.close();
@@ -238,7 +246,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       deviceId: hello.device_id,
       firmwareVersion: hello.firmware_version,
       protocolVersion: hello.protocol_version,
-      auth: hello.auth,
+      auth: hello.auth === 'hmac-sha256',
+      authScheme: hello.auth,
       capabilities: hello.capabilities,
       config: hello.config,
     };

@@ -1,7 +1,7 @@
 import { deviceGeometry, MAX_STEPS_PER_COMMAND } from '../protocol/device-config.js';
 import type { DeviceSettings } from '../protocol/device-config.js';
 import { LED_PATTERNS } from '../protocol/schemas.js';
-import type { DeviceConfig, ReplyDataOf } from '../protocol/schemas.js';
+import type { AuthScheme, DeviceConfig, ReplyDataOf } from '../protocol/schemas.js';
 import { drive, moveCm, moveSteps, rotateDeg } from './motion-commands.js';
 import { integerField, isAbsent, numberField, Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
@@ -26,12 +26,12 @@ function configJson(state: RobotState): DeviceConfig {
 export function helloData(
   state: RobotState,
   deviceId: string,
-  auth: boolean,
+  auth: AuthScheme,
 ): Omit<ReplyDataOf<'hello'>, 'sid' | 'nonce'> {
   return {
     device_id: deviceId,
-    firmware_version: '1.0.0-mock',
-    protocol_version: '1.0',
+    firmware_version: '1.1.0-mock',
+    protocol_version: '1.1',
     auth,
     capabilities: [
       'locomotion.differential:v1.0',

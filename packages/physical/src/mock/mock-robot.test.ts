@@ -1,4 +1,6 @@
 import { describe, expect, it } from 'vitest';
+import { createAuthenticator } from '../protocol/auth.js';
+import { MessageCodec } from '../protocol/codec.js';
 import { MockRobot } from './mock-robot.js';
 
 const encode = (value: unknown) => new TextEncoder().encode(JSON.stringify(value));
@@ -13,6 +15,55 @@ function openSession(robot: MockRobot): number {
 }
 
 describe('MockRobot', () => {
+  describe('authentication', () => {
+    it('without a key runs as the unauthenticated opt-out: hello says auth none, seed-style requests run', () => {
+      let now = 0;
+      const robot = new MockRobot({ now: () => now });
+      const hello = decode(robot.handle(encode({ cmd: 'hello', seq: 1, nonce: 'n' })))!;
+      expect(hello).toMatchObject({ ok: true, auth: 'none', protocol_version: '1.1' });
+      const move = decode(robot.handle(encode({ cmd: 'move_steps', left: 40, right: 40 })))!;
+      expect(move).toMatchObject({ ok: true, move_id: 1 });
+      expect(move).not.toHaveProperty('seq');
+      now += 10_000;
+      expect(robot.position).toEqual({ left: 40, right: 40 });
+    });
+
+    it('with a key says auth hmac-sha256 and refuses seed-style requests and an unsessioned reset', async () => {
+      const auth = await createAuthenticator('00112233');
+      const codec = new MessageCodec(auth);
+      const robot = new MockRobot({ auth });
+      const send = (request: Record<string, unknown>) => {
+        const result = codec.decode(robot.handle(codec.encode(request)));
+        if (!result.ok) throw result.error;
+        return result.reply;
+      };
+      const hello = send({ cmd: 'hello', seq: 1, nonce: 'n' });
+      expect(hello).toMatchObject({ ok: true, auth: 'hmac-sha256' });
+      const sid = hello.sid!;
+      expect(send({ cmd: 'move_steps', left: 40, right: 40 }).error?.code).toBe('AUTH_FAILED');
+      expect(robot.motionsStarted).toBe(0);
+      expect(send({ cmd: 'estop', seq: 2, sid }).ok).toBe(true);
+      expect(send({ cmd: 'reset_estop' }).error?.code).toBe('AUTH_FAILED');
+      expect(send({ cmd: 'reset_estop', seq: 3, sid: sid + 1 }).error?.code).toBe(
+        'SESSION_MISMATCH',
+      );
+      expect(robot.estopped).toBe(true);
+      expect(send({ cmd: 'reset_estop', seq: 4, sid }).ok).toBe(true);
+      expect(robot.estopped).toBe(false);
+    });
+
+    it('refuses a request whose MAC differs in one digit', async () => {
+      const auth = await createAuthenticator('00112233');
+      const robot = new MockRobot({ auth });
+      const json = '{"cmd":"hello","seq":1,"nonce":"n"}';
+      const mac = auth.mac(encode(JSON.parse(json)));
+      const forged = `${json}#${mac[0] === '0' ? '1' : '0'}${mac.slice(1)}`;
+      const reply = new TextDecoder().decode(robot.handle(new TextEncoder().encode(forged)));
+      expect(reply).toContain('"AUTH_FAILED"');
+      expect(robot.requests).toEqual([]);
+    });
+  });
+
   describe('#dropReplies', () => {
     it('executes the request but loses its reply; the retry is answered from memory', () => {
       let now = 0;

@@ -24,12 +24,17 @@ export interface MockRobotOptions {
   now?: () => number;
   /** Host timeout, ms. Default 2000. */
   hostTimeoutMs?: number;
-  /** Authenticate messages with this key (see `createAuthenticator`). */
+  /**
+   * Authenticate messages with this key (see `createAuthenticator`): every message MACed, every
+   * request in a session. Without it the robot runs as the firmware's unauthenticated opt-out
+   * (`CUBE_ALLOW_UNAUTHENTICATED`, the emulator on loopback): `hello` says `auth: "none"` and
+   * requests without a session (seed-style) are accepted.
+   */
   auth?: MessageAuthenticator;
 }
 
 /**
- * A fast, in-process robot that speaks protocol 1.0 (sessions, exactly-once retries, step-exact
+ * A fast, in-process robot that speaks protocol 1.1 (sessions, exactly-once retries, step-exact
  * motion from the firmware's own planner, odometry, e-stop, host timeout), for unit tests and for
  * trying the library without hardware. Each instance is its own robot: there is no shared state.
  * Test helpers: `requests` (every request received), `dropReplies(n)`, `unresponsive`,
@@ -174,7 +179,8 @@ export class MockRobot {
     this.#state.motion.resetAccumulators();
     const reply: Json = { seq, sid, ok: true, cmd: 'hello' };
     if (nonce !== undefined) reply['nonce'] = nonce;
-    Object.assign(reply, helloData(this.#state, this.deviceId, this.#wire.authenticated));
+    const scheme = this.#wire.authenticated ? 'hmac-sha256' : 'none';
+    Object.assign(reply, helloData(this.#state, this.deviceId, scheme));
     const bytes = this.#wire.reply(reply);
     this.#session.openedBy(nonce, seq, bytes);
     return bytes;

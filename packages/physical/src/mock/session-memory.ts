@@ -26,7 +26,8 @@ export class SessionMemory {
 
   /**
    * Applies the session rules, in order, to a request other than `hello`. `authenticated`: a key
-   * is set, so every request needs `seq` and `reset_estop` needs the session.
+   * is set, so every request needs `seq` (seed-style requests run only in the unauthenticated
+   * opt-out) and `reset_estop` needs the session.
    */
   admit(envelope: Envelope, authenticated: boolean): Admission {
     const { cmd, seq, sid } = envelope;
@@ -34,7 +35,7 @@ export class SessionMemory {
     const safety = cmd === 'stop' || cmd === 'estop' || (cmd === 'reset_estop' && !authenticated);
     const seedStyle = seq === undefined && sid === undefined;
     if (seedStyle && authenticated) {
-      return refuse('AUTH_FAILED', 'requests must carry "seq"');
+      return refuse('AUTH_FAILED', '"seq" is required when a key is configured');
     }
     // safety commands, and seed-style requests, skip the session rules and are not remembered
     const session = !safety && !seedStyle;

@@ -49,7 +49,7 @@ export class MockWire {
       if (
         signed === undefined ||
         signed.json.length === 0 ||
-        signed.mac !== this.#auth.mac(signed.json)
+        !this.#auth.verify(signed.json, signed.mac)
       )
         return new Refusal('AUTH_FAILED', 'missing or wrong MAC');
       json = signed.json;

@@ -7,6 +7,11 @@ import { HalError } from '@hal/types';
 export interface MessageAuthenticator {
   /** The 32-hex-digit MAC of `json`. */
   mac(json: Uint8Array): string;
+  /**
+   * Whether `mac` (32 lowercase hex digits, as read from a message) is the MAC of `json`, compared
+   * in constant time: how long it takes says nothing about how much of a forged MAC was right.
+   */
+  verify(json: Uint8Array, mac: string): boolean;
 }
 
 /** Length of the `#` + 32 hex digits suffix. */
@@ -46,9 +51,17 @@ export function appendMac(json: Uint8Array, auth: MessageAuthenticator): Uint8Ar
   return bytes;
 }
 
+/** The MAC's length in hex digits. */
+const MAC_HEX_DIGITS = 32;
+
 /**
  * Builds the authenticator for a pre-shared key given as hex (1..64 bytes). `node:crypto` is
  * loaded here, on first use, so importing the package pulls nothing Node-only into a bundle.
+ *
+ * MACs are compared with `crypto.timingSafeEqual` from the same module. The authenticator is
+ * Node-only already (the HMAC is `createHmac`, synchronous, which the codec needs; WebCrypto's
+ * `subtle.verify` is asynchronous), so there is no browser path to keep Node built-ins out of:
+ * in a browser `createAuthenticator` rejects, and the package's import graph stays clean.
  */
 export async function createAuthenticator(keyHex: string): Promise<MessageAuthenticator> {
   if (!/^([0-9a-fA-F]{2}){1,64}$/.test(keyHex)) {
@@ -56,9 +69,17 @@ export async function createAuthenticator(keyHex: string): Promise<MessageAuthen
       details: { parameter: 'key' },
     });
   }
-  const { createHmac } = await import('node:crypto');
+  const { createHmac, timingSafeEqual } = await import('node:crypto');
   const key = Buffer.from(keyHex, 'hex');
+  const mac = (json: Uint8Array) =>
+    createHmac('sha256', key).update(json).digest('hex').slice(0, MAC_HEX_DIGITS);
   return {
-    mac: (json) => createHmac('sha256', key).update(json).digest('hex').slice(0, 32),
+    mac,
+    verify: (json, received) => {
+      // timingSafeEqual needs equal lengths; the length of a MAC is public (always 32 digits)
+      const want = Buffer.from(mac(json), 'latin1');
+      const got = Buffer.from(received, 'latin1');
+      return got.length === want.length && timingSafeEqual(got, want);
+    },
   };
 }

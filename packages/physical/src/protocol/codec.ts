@@ -62,7 +62,7 @@ export class MessageCodec {
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply has no MAC suffix') };
       }
       json = signed.json;
-      if (signed.mac !== this.#auth.mac(json)) {
+      if (!this.#auth.verify(json, signed.mac)) {
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply MAC does not match') };
       }
     }

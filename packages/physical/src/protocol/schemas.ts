@@ -43,13 +43,27 @@ export const DeviceConfigSchema = z.object({
 });
 export type DeviceConfig = z.infer<typeof DeviceConfigSchema>;
 
+/** How a robot authenticates messages: `hmac-sha256` (a pre-shared key) or `none` (its opt-out). */
+export type AuthScheme = 'none' | 'hmac-sha256';
+
+/**
+ * `hello`'s `auth`: protocol 1.1 names the scheme; a 1.0 robot said `true` (keyed) or `false`,
+ * read here as the scheme it meant.
+ */
+export const AuthSchemeSchema = z
+  .union([
+    z.enum(['none', 'hmac-sha256']),
+    z.boolean().transform((keyed): AuthScheme => (keyed ? 'hmac-sha256' : 'none')),
+  ])
+  .describe('How the robot authenticates messages: "hmac-sha256" (a key) or "none" (opt-out)');
+
 export const HelloReplySchema = z.object({
   sid: uint32.refine((v) => v !== 0, 'sid must be non-zero'),
   nonce: opt(z.string()),
   device_id: z.string(),
   firmware_version: z.string(),
   protocol_version: z.string(),
-  auth: z.boolean(),
+  auth: AuthSchemeSchema,
   capabilities: z.array(z.string()),
   config: DeviceConfigSchema,
 });

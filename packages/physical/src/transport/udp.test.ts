@@ -86,6 +86,60 @@ describe('udpTransport', () => {
     await expect(pending).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
   });
 
+  describe('a forged reply', () => {
+    /** A socket that sends forged datagrams, bound to `address:port`. */
+    async function spoofer(address: string, port: number): Promise<Socket> {
+      const socket = createSocket('udp4');
+      cleanups.push(() => void socket.close());
+      await new Promise<void>((resolve) => socket.bind(port, address, resolve));
+      return socket;
+    }
+
+    /**
+     * A robot that answers each request after 100 ms, and a spoofer that answers it at once, from
+     * `from` (address and port): the spoofer's reply always arrives first.
+     */
+    async function race(from: (robotPort: number) => { address: string; port: number }) {
+      const robot = await peer((request, reply) => {
+        setTimeout(() => reply(encode({ seq: request['seq'], ok: true, from: 'robot' })), 100);
+      });
+      cleanups.push(() => void robot.socket.close());
+      const source = from(robot.port);
+      const forger = await spoofer(source.address, source.port);
+      let forged = 0;
+      const forge = (request: Record<string, unknown>, to: number) => {
+        forged += 1;
+        const reply = { seq: request['seq'], ok: true, from: 'spoofer', running: false };
+        forger.send(encode(reply), to, '127.0.0.1');
+      };
+      const transport = await connect(robot.port, 2000);
+      const localPort = (transport as Transport & { localPort: number }).localPort;
+      const request = { cmd: 'get_status', seq: 5, sid: 1 };
+      const replying = transport.request(5, encode(request));
+      forge(request, localPort);
+      forge(request, localPort);
+      const reply = await replying;
+      return { reply, forged, stats: transport.stats() };
+    }
+
+    it("from another address, even from the robot's port number, never reaches the HAL", async () => {
+      const { reply, forged, stats } = await race((robotPort) => ({
+        address: '127.0.0.2',
+        port: robotPort,
+      }));
+      expect(forged).toBe(2);
+      expect(reply['from']).toBe('robot');
+      expect(stats).toMatchObject({ received: 1, dropped: 0 });
+    });
+
+    it("from the robot's address but another port never reaches the HAL", async () => {
+      const { reply, forged, stats } = await race(() => ({ address: '127.0.0.1', port: 0 }));
+      expect(forged).toBe(2);
+      expect(reply['from']).toBe('robot');
+      expect(stats).toMatchObject({ received: 1, dropped: 0 });
+    });
+  });
+
   it('refuses a bad port with a message that quotes the argument', () => {
     expect(() => udpTransport({ host: '127.0.0.1', port: 70000 })).toThrow('"port"');
   });

@@ -27,8 +27,10 @@ export interface UdpTransport extends Transport {
 
 /**
  * WiFi link: one JSON message per datagram to the robot's port 4210, replies matched to requests
- * by their echoed `seq`. `node:dgram` is loaded on connect, so importing the package is safe in a
- * browser bundle.
+ * by their echoed `seq`. The socket is connected to the robot's address and port, so the kernel
+ * delivers nothing else to it: a datagram from any other host or port (a forged "move done"
+ * reply from someone on the LAN) never reaches the HAL. `node:dgram` is loaded on connect, so
+ * importing the package is safe in a browser bundle.
  */
 export function udpTransport(options: UdpTransportOptions): TransportFactory<'udp'> {
   if (typeof options.host !== 'string' || options.host.length === 0) {
@@ -49,12 +51,8 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
       const defaults = requestDefaults(options);
       let closed = false;
 
-      socket.on('message', (message, remote) => {
-        if (remote.port !== port) {
-          matcher.counts.dropped += 1;
-          log.debug('datagram from an unexpected port dropped', { port: remote.port });
-          return;
-        }
+      // the socket is connected: every datagram here comes from the robot's address and port
+      socket.on('message', (message) => {
         const result = context.decode(
           new Uint8Array(message.buffer, message.byteOffset, message.length),
         );
@@ -73,8 +71,22 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
           resolve();
         });
       });
+      try {
+        await new Promise<void>((resolve, reject) => {
+          // connect() reports a failed name lookup through its callback
+          socket.connect(port, options.host, (error?: Error) =>
+            error ? reject(error) : resolve(),
+          );
+        });
+      } catch (cause) {
+        socket.close();
+        throw new HalError('NOT_CONNECTED', `cannot reach the robot at ${options.host}:${port}`, {
+          cause,
+        });
+      }
       const localPort = socket.address().port;
-      log.debug('bound', { localPort, host: options.host, port });
+      const robot = socket.remoteAddress();
+      log.debug('connected', { localPort, host: options.host, address: robot.address, port });
 
       return {
         type: 'udp',
@@ -88,9 +100,16 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
                   reject(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
                   return;
                 }
-                socket.send(bytes, port, options.host, (error) =>
-                  error ? reject(error) : resolve(),
-                );
+                socket.send(bytes, (error) => {
+                  // A connected socket reports the robot's ICMP "port unreachable" (robot
+                  // restarting) on a later send; treat it as a lost datagram, so the attempt
+                  // still waits its timeout as it would without the connection.
+                  if (error && (error as NodeJS.ErrnoException).code === 'ECONNREFUSED') {
+                    log.debug('robot port unreachable; waiting as for a lost datagram');
+                    resolve();
+                  } else if (error) reject(error);
+                  else resolve();
+                });
               }),
             { ...defaults, ...requestOptions },
           ),
