@@ -140,6 +140,27 @@ describe('udpTransport', () => {
     });
   });
 
+  it('waits each attempt out while the robot port is unreachable, as for lost datagrams', async () => {
+    const gone = createSocket('udp4');
+    await new Promise<void>((resolve) => gone.bind(0, '127.0.0.1', resolve));
+    const port = gone.address().port;
+    await new Promise<void>((resolve) => gone.close(resolve));
+    const logged: string[] = [];
+    const transport = await udpTransport({ host: '127.0.0.1', port, timeoutMs: 60 }).connect({
+      ...context,
+      logger: { log: (level, _namespace, message) => logged.push(`${level}: ${message}`) },
+    });
+    cleanups.push(() => transport.close());
+    const started = performance.now();
+    await expect(transport.request(1, encode({ seq: 1 }))).rejects.toMatchObject({
+      code: 'TIMEOUT',
+    });
+    // three attempts, each waited out: the ICMP errors did not cut them short
+    expect(performance.now() - started).toBeGreaterThanOrEqual(3 * 60 - 5);
+    expect(transport.stats()).toMatchObject({ sent: 3, timeouts: 1 });
+    expect(logged.filter((line) => !line.startsWith('debug'))).toEqual([]);
+  });
+
   it('refuses a bad port with a message that quotes the argument', () => {
     expect(() => udpTransport({ host: '127.0.0.1', port: 70000 })).toThrow('"port"');
   });

@@ -18,6 +18,15 @@ export interface UdpTransportOptions {
   attempts?: number;
 }
 
+/**
+ * A connected socket hears the robot's ICMP "port unreachable" (a robot restarting) as
+ * ECONNREFUSED, on a receive (Linux) or on the next send. It is a lost datagram: the attempt still
+ * waits its timeout, as it would without the connection.
+ */
+function isUnreachable(error: Error): boolean {
+  return (error as NodeJS.ErrnoException).code === 'ECONNREFUSED';
+}
+
 /** A connected UDP transport. */
 export interface UdpTransport extends Transport {
   readonly type: 'udp';
@@ -63,7 +72,10 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
           );
         }
       });
-      socket.on('error', (error) => log.warn('socket error', { error: error.message }));
+      socket.on('error', (error) => {
+        if (isUnreachable(error)) log.debug('robot port unreachable; as a lost datagram');
+        else log.warn('socket error', { error: error.message });
+      });
       await new Promise<void>((resolve, reject) => {
         socket.once('error', reject);
         socket.bind(0, () => {
@@ -100,16 +112,9 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
                   reject(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
                   return;
                 }
-                socket.send(bytes, (error) => {
-                  // A connected socket reports the robot's ICMP "port unreachable" (robot
-                  // restarting) on a later send; treat it as a lost datagram, so the attempt
-                  // still waits its timeout as it would without the connection.
-                  if (error && (error as NodeJS.ErrnoException).code === 'ECONNREFUSED') {
-                    log.debug('robot port unreachable; waiting as for a lost datagram');
-                    resolve();
-                  } else if (error) reject(error);
-                  else resolve();
-                });
+                socket.send(bytes, (error) =>
+                  error && !isUnreachable(error) ? reject(error) : resolve(),
+                );
               }),
             { ...defaults, ...requestOptions },
           ),
