@@ -83,6 +83,9 @@ describe('a robot that restarts in the middle of a session', () => {
       second = await restart(first);
       const cut = await running;
       expect(cut.success).toBe(false);
+      // whether the host first heard of the new session or of the new robot's status
+      expect(['NOT_CONNECTED', 'INTERRUPTED']).toContain(cut.code);
+      expect(cut.error).toMatch(/restarted/);
       await expect.poll(() => hal.linkState, { timeout: 10_000 }).toBe('connected');
       expect(moves(second)).toEqual([]);
       const afterCut = await probeStatus(second.udpPort);
