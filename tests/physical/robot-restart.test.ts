@@ -6,6 +6,7 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 import type { Emulator } from './emulator.js';
 import { probeStatus } from './robot-probe.js';
+import { startSerialFaultRelay } from './serial-fault-relay.js';
 
 afterAll(stopAllEmulators);
 
@@ -111,6 +112,55 @@ describe('a robot that restarts in the middle of a session', () => {
     } finally {
       await hal.cleanup();
       await third?.stop();
+      await second?.stop();
+      await first.stop();
+    }
+  });
+
+  it('over serial, behind a port that stays, is e-stopped again and runs none of the old moves', async () => {
+    const first = await startEmulator({ timeScale: TIME_SCALE });
+    const clean = { garbage: 0, bitFlip: 0, duplicate: 0 };
+    const relay = await startSerialFaultRelay({
+      robotPty: first.pty,
+      seed: 1,
+      toRobot: clean,
+      toHost: clean,
+    });
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: 'cube-restarted-serial',
+        connection: { type: 'serial', port: relay.path },
+      },
+      { timeScale: TIME_SCALE, reconnectIntervalMs: 100 },
+    );
+    let second: Emulator | undefined;
+    try {
+      await hal.initialize();
+      const running = hal.locomotion.moveForward(30);
+      await first.waitFor((e) => e.event === 'move_started', 10_000);
+      expect((await hal.safety.emergencyStop('stop before reboot')).success).toBe(true);
+      expect((await running).code).toBe('EMERGENCY_STOPPED');
+
+      await first.kill();
+      second = await startEmulator({ timeScale: TIME_SCALE, pty: true });
+      await relay.replaceRobot(second.pty);
+      await second.waitFor((e) => e.event === 'trip' && e['reason'] === 'estop_command', 15_000);
+      await expect.poll(() => hal.linkState, { timeout: 5000 }).toBe('connected');
+      const status = await hal.refreshStatus();
+      expect(status.safety.estop).toBe(true);
+      expect(status.safety.estop_reason).toBe('stop before reboot');
+      expect(status.move_id).toBe(0);
+      expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+      expect(moves(second)).toEqual([]);
+
+      expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+      expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+      expect(moves(second)).toHaveLength(1);
+      expect((await hal.refreshStatus()).left_steps).toBe(217);
+    } finally {
+      await hal.cleanup();
+      await relay.close();
       await second?.stop();
       await first.stop();
     }

@@ -9,6 +9,7 @@ import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { encodeFrame, FrameDecoder, openSerialPort } from '@hal/physical';
+import type { SerialPortLike } from '@hal/physical';
 import { seededRandom } from './fault-proxy.js';
 
 /** Per-frame probabilities (0..1) of each kind of damage, one direction. */
@@ -33,6 +34,11 @@ export interface SerialFaultRelay {
   path: string;
   toRobot: LineStats;
   toHost: LineStats;
+  /**
+   * Connects the relay to another robot pseudo-terminal (a restarted emulator), keeping the
+   * host's: as a USB serial adapter stays while the board behind it reboots.
+   */
+  replaceRobot(robotPty: string): Promise<void>;
   close(): Promise<void>;
 }
 
@@ -68,7 +74,7 @@ export async function startSerialFaultRelay(options: {
       reject(new Error(`socat exited (${code}): ${stderr}`));
     });
   });
-  const robot = await openSerialPort(options.robotPty, 115200);
+  let robot = await openSerialPort(options.robotPty, 115200);
 
   const stats = (): LineStats => ({ frames: 0, garbage: 0, bitFlips: 0, duplicates: 0 });
   const toRobot = stats();
@@ -110,21 +116,34 @@ export async function startSerialFaultRelay(options: {
 
   socat.stdout.on(
     'data',
-    damager(options.toRobot, toRobot, (bytes) => robot.write(bytes)),
+    damager(options.toRobot, toRobot, (bytes) => {
+      if (robot.isOpen) robot.write(bytes);
+    }),
   );
-  robot.on(
-    'data',
-    damager(options.toHost, toHost, (bytes) => socat.stdin.write(bytes)),
-  );
+  const attach = (port: SerialPortLike) => {
+    const forward = damager(options.toHost, toHost, (bytes) => socat.stdin.write(bytes));
+    port.on('data', (chunk) => {
+      if (port === robot) forward(chunk);
+    });
+    // the robot's end going away (a killed emulator) is what some tests are about
+    port.on('error', () => undefined);
+  };
+  attach(robot);
 
   return {
     path,
     toRobot,
     toHost,
+    replaceRobot: async (robotPty) => {
+      const old = robot;
+      robot = await openSerialPort(robotPty, 115200);
+      attach(robot);
+      if (old.isOpen) await new Promise<void>((resolve) => old.close(() => resolve()));
+    },
     close: async () => {
       if (closed) return;
       closed = true;
-      await new Promise<void>((resolve) => robot.close(() => resolve()));
+      if (robot.isOpen) await new Promise<void>((resolve) => robot.close(() => resolve()));
       socat.kill('SIGTERM');
       await socatExited;
       rmSync(dir, { recursive: true, force: true });
