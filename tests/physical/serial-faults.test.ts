@@ -14,7 +14,9 @@ const ROUNDS = 30;
 
 describe('PhysicalHAL over a serial line with garbage, bit errors and duplicated frames', () => {
   it(`executes every command exactly once through ${ROUNDS} rounds of moves, LED changes and status reads`, async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE });
+    // a long host timeout: a loaded machine must not let the robot stop a move (200 ms real at
+    // the default); the host resends every quarter of it (250 ms real), ample for a bad line
+    const emulator = await startEmulator({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
     const faults = { garbage: 0.05, bitFlip: 0.02, duplicate: 0.05 };
     const relay = await startSerialFaultRelay({
       robotPty: emulator.pty,

@@ -45,6 +45,8 @@ export async function runSoak(options: {
 }): Promise<SoakReport> {
   const emulator = await startEmulator({
     timeScale: options.timeScale,
+    // the longest host timeout: a stall of the (loaded) machine must not stop a move
+    hostTimeoutMs: 10_000,
     pty: options.link === 'serial',
   });
   try {
