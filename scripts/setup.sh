@@ -14,7 +14,7 @@ apt_packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib # 32-bit cross build (size check)
   clang libclang-rt-14-dev # libFuzzer targets for the firmware's parsers (ASan, UBSan)
   chromium # the browser demo's end-to-end test
-  socat # serial link tools used by the docs' smoke checks
+  socat # serial link tools: the docs' smoke checks and the serial fault-injection test
 )
 
 missing=()

@@ -29,6 +29,8 @@ export interface EmulatorOptions {
 }
 
 export interface Emulator {
+  /** The emulator's process id (its memory is in /proc/PID/status). */
+  pid: number;
   udpPort: number;
   /** The pseudo-terminal the serial link listens on ('' with pty: false). */
   pty: string;
@@ -37,6 +39,8 @@ export interface Emulator {
   /** Waits for an event that matches, up to `timeoutMs`. */
   waitFor(match: (e: EmulatorEvent) => boolean, timeoutMs?: number): Promise<EmulatorEvent>;
   stop(): Promise<void>;
+  /** Kills it at once (SIGKILL), as a power cut or a crash would: it prints nothing more. */
+  kill(): Promise<void>;
 }
 
 const running = new Set<ChildProcess>();
@@ -128,6 +132,7 @@ export async function startEmulator(options: EmulatorOptions = {}): Promise<Emul
 
   const ready = await waitFor((e) => e.event === 'ready');
   return {
+    pid: child.pid!,
     udpPort: Number(ready['udp_port']),
     pty: String(ready['pty']),
     events,
@@ -138,6 +143,12 @@ export async function startEmulator(options: EmulatorOptions = {}): Promise<Emul
         const timer = setTimeout(() => child.kill('SIGKILL'), 2000);
         await exited;
         clearTimeout(timer);
+      }
+    },
+    kill: async () => {
+      if (child.exitCode === null && child.signalCode === null) {
+        child.kill('SIGKILL');
+        await exited;
       }
     },
   };

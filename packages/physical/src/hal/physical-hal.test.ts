@@ -131,6 +131,27 @@ describe('PhysicalHAL', () => {
     });
   });
 
+  describe('a restart during a motion', () => {
+    it('fails the motion INTERRUPTED, saying the robot restarted, and does not resume it', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
+      const hal = new PhysicalHAL(
+        { mode: 'physical', deviceId: 'cube-1' },
+        { transport: robot.transport(), timeScale: TIME_SCALE, reconnectIntervalMs: 10 },
+      );
+      await hal.initialize();
+      // about 21 s of robot time, 430 ms here: the host reconnects long before its first poll
+      const running = hal.locomotion.moveForward(100);
+      await expect.poll(() => robot.motionsStarted, { timeout: 5000 }).toBe(1);
+      robot.restart();
+      const result = await running;
+      expect(result.code).toBe('INTERRUPTED');
+      expect(result.error).toMatch(/restarted/);
+      expect(robot.motionsStarted).toBe(1);
+      expect((await hal.refreshStatus()).move_id).toBe(0);
+      await hal.cleanup();
+    });
+  });
+
   describe('#moveTo', () => {
     it('splits a straight leg longer than one command allows into several moves', async () => {
       const robot = new MockRobot({ timeScale: 200, hostTimeoutMs: 10_000 });

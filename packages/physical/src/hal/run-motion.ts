@@ -65,6 +65,16 @@ export async function awaitMotion(
           );
       }
     }
+    if (status.move_id < reply.move_id) {
+      // motion ids only grow while the robot runs: a smaller one means it restarted
+      throw new HalError(
+        'INTERRUPTED',
+        'the robot restarted during the motion; it was not resumed',
+        {
+          details: motionDetails(status),
+        },
+      );
+    }
     if (status.move_id !== reply.move_id) {
       throw new HalError('INTERRUPTED', 'the motion was replaced by another motion', {
         details: motionDetails(status),

@@ -129,6 +129,8 @@ interface Pending {
  */
 export class ReplyMatcher {
   readonly #pending = new Map<number, Pending>();
+  /** Wakes the requests in flight when the transport closes. */
+  readonly #closeListeners = new Set<() => void>();
   readonly #rtt = new RttWindow();
   readonly #now: () => number;
   #closed = false;
@@ -179,6 +181,14 @@ export class ReplyMatcher {
     });
     const entry: Pending = { resolve: resolveReply, sentAt: this.#now() };
     this.#pending.set(seq, entry);
+    // A close signal of this request's own, dropped when it ends: racing every request against
+    // one long-lived promise would add a reaction to it each time, kept until the transport
+    // closes (a leak of about 1 KB per request on a long-running host).
+    let onClose!: () => void;
+    const closedSignal = new Promise<'closed'>((resolve) => {
+      onClose = () => resolve('closed');
+    });
+    this.#closeListeners.add(onClose);
     let lastError: unknown;
     try {
       for (let attempt = 1; attempt <= attempts; attempt++) {
@@ -195,7 +205,7 @@ export class ReplyMatcher {
             },
           ),
           answered,
-          this.#closedSignal,
+          closedSignal,
         ]);
         if (sending === 'closed') throw new HalError('NOT_CONNECTED', 'the transport is closed');
         if (typeof sending === 'object') return sending;
@@ -204,7 +214,7 @@ export class ReplyMatcher {
         try {
           const outcome = await Promise.race([
             answered,
-            this.#closedSignal,
+            closedSignal,
             new Promise<'timeout'>((resolve) => {
               timer = setTimeout(() => resolve('timeout'), timeoutMs);
             }),
@@ -222,19 +232,16 @@ export class ReplyMatcher {
         { details: { seq, attempts, timeoutMs }, cause: lastError },
       );
     } finally {
+      this.#closeListeners.delete(onClose);
       if (this.#pending.get(seq) === entry) this.#pending.delete(seq);
     }
   }
 
-  #closeSignal!: (value: 'closed') => void;
-  readonly #closedSignal = new Promise<'closed'>((resolve) => {
-    this.#closeSignal = resolve;
-  });
-
   /** Rejects every pending and later request with NOT_CONNECTED. */
   close(): void {
     this.#closed = true;
-    this.#closeSignal('closed');
+    for (const wake of this.#closeListeners) wake();
+    this.#closeListeners.clear();
   }
 
   stats(): TransportStats {
