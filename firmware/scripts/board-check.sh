@@ -68,7 +68,7 @@ cp -R "$here/$sketch" "$tmp/$sketch"
 printf '#include <Arduino.h>\n#include "%s.ino"\n' "$sketch" > "$tmp/$sketch/$sketch.ino.cpp"
 
 flags="-std=gnu++2b -fsyntax-only -fno-rtti -Wall -Wextra -Wconversion -Wsign-conversion
-  -Wshadow -Werror -DARDUINO_ARCH_ESP32 -DESP32 -DARDUINO=10607 $board_defs
+  -Wshadow -Werror -DESP_PLATFORM -DARDUINO_ARCH_ESP32 -DESP32 -DARDUINO=10607 $board_defs
   -I$here/board-check/include -I$here/board-check/variants/$variant"
 
 # The core does not depend on secrets.h: one variant per sketch compiles it.
