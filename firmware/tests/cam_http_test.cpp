@@ -81,7 +81,8 @@ TEST(CamRequestReader, TimesOutAcrossTheMillisWrapAround) {
   RequestReader reader;
   reader.Start(0xFFFFFF00u);
   EXPECT_EQ(reader.Poll(0xFFFFFF00u + 1000u), State::kReading);
-  EXPECT_EQ(reader.Poll(0xFFFFFF00u + cam::kRequestTimeoutMs), State::kTimedOut);
+  EXPECT_EQ(reader.Poll(0xFFFFFF00u + cam::kRequestTimeoutMs),
+            State::kTimedOut);
 }
 
 TEST(CamRequestReader, RefusesAHeadLargerThanItsBufferAndKeepsNoMore) {
@@ -108,7 +109,8 @@ TEST(CamRequestReader, AcceptsAHeadThatFillsTheBufferExactly) {
 TEST(CamRoutes, ServesEveryPathWithoutATokenWhenNoneIsConfigured) {
   EXPECT_EQ(RouteOf("GET / HTTP/1.1\r\n\r\n", kOpen), Route::kIndex);
   EXPECT_EQ(RouteOf("GET /status HTTP/1.1\r\n\r\n", kOpen), Route::kStatus);
-  EXPECT_EQ(RouteOf("GET /stream?x=1 HTTP/1.1\r\n\r\n", kOpen), Route::kStream);
+  EXPECT_EQ(RouteOf("GET /stream?x=1 HTTP/1.1\r\n\r\n", kOpen),
+            Route::kStream);
   EXPECT_EQ(RouteOf("GET /nope HTTP/1.1\r\n\r\n", kOpen), Route::kNotFound);
 }
 
@@ -130,8 +132,8 @@ TEST(CamRoutes, AMissingTokenIsRefusedForStatusAndStream) {
 }
 
 TEST(CamRoutes, AWrongTokenIsRefusedWhateverItsLength) {
-  for (const char* token : {"s3cret-Token_2", "s3cret-Token_", "s3cret-Token_12",
-                            "S3CRET-TOKEN_1", ""}) {
+  for (const char* token : {"s3cret-Token_2", "s3cret-Token_",
+                            "s3cret-Token_12", "S3CRET-TOKEN_1", ""}) {
     EXPECT_EQ(RouteOf(std::string("GET /stream?token=") + token +
                           " HTTP/1.1\r\n\r\n",
                       kLocked),
@@ -157,7 +159,8 @@ TEST(CamRoutes, TheRightTokenInTheQueryOrABearerHeaderIsAccepted) {
   EXPECT_EQ(RouteOf("GET /stream?token=s3cret-Token_1 HTTP/1.1\r\n\r\n",
                     kLocked),
             Route::kStream);
-  EXPECT_EQ(RouteOf("GET /status?a=1&token=s3cret-Token_1&b=2 HTTP/1.1\r\n\r\n",
+  EXPECT_EQ(RouteOf("GET /status?a=1&token=s3cret-Token_1&b=2 "
+                    "HTTP/1.1\r\n\r\n",
                     kLocked),
             Route::kStatus);
   EXPECT_EQ(RouteOf("GET /status HTTP/1.1\r\nHost: cam\r\nauthorization:  "
@@ -181,7 +184,8 @@ TEST(CamTokens, OnlyUrlSafeTokensAndHeaderSafeOriginsAreValid) {
   static_assert(!cam::IsValidToken("a&b"), "no query syntax");
   static_assert(cam::IsValidOrigin("http://192.168.1.20:5173"), "an origin");
   static_assert(!cam::IsValidOrigin("http://x\r\nSet-Cookie: a"), "no CRLF");
-  EXPECT_FALSE(cam::IsValidToken(std::string(cam::kMaxTokenLen + 1, 'a').c_str()));
+  EXPECT_FALSE(
+      cam::IsValidToken(std::string(cam::kMaxTokenLen + 1, 'a').c_str()));
   EXPECT_TRUE(cam::IsValidToken(std::string(cam::kMaxTokenLen, 'a').c_str()));
 }
 
@@ -224,8 +228,9 @@ TEST(CamResponses, HeadsAreCompleteAndSayHowToAuthenticate) {
   const std::string close = "Connection: close\r\n\r\n";
   EXPECT_EQ(timeout.substr(timeout.size() - close.size()), close);
   const std::string stream_type = cam::kStreamContentType;
-  EXPECT_EQ(stream_type.substr(stream_type.size() - std::strlen(cam::kBoundary)),
-            cam::kBoundary);
+  EXPECT_EQ(
+      stream_type.substr(stream_type.size() - std::strlen(cam::kBoundary)),
+      cam::kBoundary);
 }
 
 TEST(CamResponses, AHeadThatDoesNotFitIsNotWrittenAtAll) {

@@ -30,6 +30,9 @@
 // esp32-hal.h: ISR functions go to IRAM when CONFIG_ARDUINO_ISR_IRAM is set.
 #define ARDUINO_ISR_ATTR IRAM_ATTR
 
+// The esp32-hal-*.h functions have C linkage.
+extern "C" {
+
 // esp32-hal-gpio.h
 #define LOW 0x0
 #define HIGH 0x1
@@ -64,6 +67,8 @@ void timerAttachInterruptArg(hw_timer_t* timer, void (*userFunc)(void*),
 void timerDetachInterrupt(hw_timer_t* timer);
 void timerAlarm(hw_timer_t* timer, uint64_t alarm_value, bool autoreload,
                 uint64_t reload_count);
+
+}  // extern "C"
 
 #include "Esp.h"
 #include "HardwareSerial.h"

@@ -2,6 +2,14 @@
 // String the board code may meet (Print's overloads, readString*).
 #ifndef BOARD_CHECK_WSTRING_H_
 #define BOARD_CHECK_WSTRING_H_
+// Flash strings: on the ESP32 they live in the same address space, and
+// F("...") is a cast the Print overloads accept.
+class __FlashStringHelper;
+#define PSTR(s) (s)
+#define FPSTR(pstr_pointer) \
+  (reinterpret_cast<const __FlashStringHelper*>(pstr_pointer))
+#define F(string_literal) (FPSTR(PSTR(string_literal)))
+
 class String {
  public:
   String(const char* cstr = "");

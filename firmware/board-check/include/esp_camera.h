@@ -10,7 +10,12 @@
 #include "esp_err.h"
 
 extern "C" {
-typedef enum { LEDC_TIMER_0 = 0, LEDC_TIMER_1, LEDC_TIMER_2, LEDC_TIMER_3 } ledc_timer_t;
+typedef enum {
+  LEDC_TIMER_0 = 0,
+  LEDC_TIMER_1,
+  LEDC_TIMER_2,
+  LEDC_TIMER_3
+} ledc_timer_t;
 typedef enum {
   LEDC_CHANNEL_0 = 0,
   LEDC_CHANNEL_1,

@@ -162,7 +162,8 @@ Request ParseRequest(const char* head, size_t len) {
     i += std::strlen("bearer ");
     while (i < n && line[i] == ' ') ++i;
     size_t value_end = n;
-    while (value_end > i && (line[value_end - 1] == ' ' || line[value_end - 1] == '\t')) {
+    while (value_end > i &&
+           (line[value_end - 1] == ' ' || line[value_end - 1] == '\t')) {
       --value_end;
     }
     r.bearer = line + i;
