@@ -134,7 +134,7 @@ export class MjpegCamera {
         });
         const boundary = boundaryOf(response.headers.get('content-type'));
         if (!response.ok || response.body === null || boundary === undefined) {
-          await response.body?.cancel();
+          await response.body?.cancel().catch(() => undefined);
           throw new Error(
             `GET ${url}: ${response.status} ${response.headers.get('content-type') ?? 'no content type'}`,
           );
