@@ -4,13 +4,21 @@
 //   GET /status   JSON: fps, frames_served, uptime_ms, rssi_dbm, clients
 //   GET /         a page showing the stream
 //
-// Each stream client is served by its own task, so a running stream never
-// blocks /status (answered from loop()). At most kMaxStreams streams at once;
-// more get 503.
+// With CAM_TOKEN set in secrets.h, /stream and /status need it (?token= or
+// "Authorization: Bearer"); with CAM_ALLOW_ORIGIN set, responses carry that
+// Access-Control-Allow-Origin, and none otherwise (docs/security.md).
+//
+// loop() never blocks on a client: it holds up to kMaxPending connections
+// whose request heads arrive at their own pace, each bounded in size and
+// time (src/cam_http.h), and answers /status itself. Each stream is served
+// by its own task, so a running stream never delays /status. At most
+// kMaxStreams streams at once; more get 503.
 
 #include <Arduino.h>
 #include <WiFi.h>
 #include <esp_camera.h>
+
+#include "src/cam_http.h"
 
 #if __has_include("secrets.h")
 #include "secrets.h"
@@ -18,6 +26,18 @@
 #error \
     "Copy secrets.example.h to secrets.h and set your WiFi network (docs/flashing.md)"
 #endif
+
+// Older secrets.h files have neither: no token, no CORS header.
+#ifndef CAM_TOKEN
+#define CAM_TOKEN ""
+#endif
+#ifndef CAM_ALLOW_ORIGIN
+#define CAM_ALLOW_ORIGIN ""
+#endif
+static_assert(cam::IsValidToken(CAM_TOKEN),
+              "CAM_TOKEN: at most 128 of A-Z a-z 0-9 - . _ ~");
+static_assert(cam::IsValidOrigin(CAM_ALLOW_ORIGIN),
+              "CAM_ALLOW_ORIGIN: one origin such as http://192.168.1.20:5173");
 
 namespace cam {
 
@@ -30,15 +50,29 @@ constexpr int kFlashLed = 4;
 constexpr uint16_t kHttpPort = 80;
 constexpr uint32_t kFrameIntervalMs = 100;  // 10 fps
 constexpr int kMaxStreams = 2;
-constexpr char kBoundary[] = "cubeframe";
+constexpr int kMaxPending = 4;
+
+const HttpConfig kHttp = {CAM_TOKEN, CAM_ALLOW_ORIGIN};
 
 WiFiServer server(kHttpPort);
-volatile int stream_clients = 0;
-volatile uint32_t frames_served = 0;
-portMUX_TYPE stats_lock = portMUX_INITIALIZER_UNLOCKED;
-uint32_t fps_window_start_ms = 0;
+// Shared between loop() and the stream tasks, always under stats_lock.
+int stream_clients = 0;
+uint32_t frames_served = 0;
 uint32_t fps_window_frames = 0;
+portMUX_TYPE stats_lock = portMUX_INITIALIZER_UNLOCKED;
+// loop() only.
+uint32_t fps_window_start_ms = 0;
 float fps = 0.0f;
+
+// A connection whose request head is still arriving.
+struct Pending {
+  bool used = false;
+  WiFiClient client;
+  RequestReader reader;
+};
+Pending pending[kMaxPending];
+
+uint32_t NowMs() { return static_cast<uint32_t>(millis()); }
 
 bool InitCamera() {
   camera_config_t c = {};
@@ -64,8 +98,9 @@ bool InitCamera() {
   c.pixel_format = PIXFORMAT_JPEG;
   c.frame_size = FRAMESIZE_QVGA;  // 320x240
   c.jpeg_quality = 12;
-  c.fb_count = psramFound() ? 2 : 1;
-  c.fb_location = psramFound() ? CAMERA_FB_IN_PSRAM : CAMERA_FB_IN_DRAM;
+  const bool psram = psramFound();
+  c.fb_count = psram ? 2u : 1u;
+  c.fb_location = psram ? CAMERA_FB_IN_PSRAM : CAMERA_FB_IN_DRAM;
   c.grab_mode = CAMERA_GRAB_LATEST;
   return esp_camera_init(&c) == ESP_OK;
 }
@@ -77,9 +112,15 @@ void CountFrame() {
   portEXIT_CRITICAL(&stats_lock);
 }
 
+void ChangeStreams(int delta) {
+  portENTER_CRITICAL(&stats_lock);
+  stream_clients += delta;
+  portEXIT_CRITICAL(&stats_lock);
+}
+
 // Updated from loop(): frames served per second over the last window.
 void UpdateFps() {
-  const uint32_t now = millis();
+  const uint32_t now = NowMs();
   const uint32_t span = now - fps_window_start_ms;
   if (span < 1000) return;
   portENTER_CRITICAL(&stats_lock);
@@ -90,38 +131,41 @@ void UpdateFps() {
   fps_window_start_ms = now;
 }
 
+bool SendHead(WiFiClient& client, const ResponseHead& head) {
+  char text[512];
+  const size_t n = FormatHead(head, kHttp, text, sizeof(text));
+  return n > 0 && client.write(reinterpret_cast<const uint8_t*>(text), n) == n;
+}
+
+void SendFixed(WiFiClient& client, Route route) {
+  const FixedReply reply = FixedReplyFor(route);
+  if (SendHead(client, reply.head)) client.print(reply.body);
+}
+
 void StreamTask(void* arg) {
   WiFiClient* client = static_cast<WiFiClient*>(arg);
   client->setNoDelay(true);
-  client->printf(
-      "HTTP/1.1 200 OK\r\n"
-      "Content-Type: multipart/x-mixed-replace; boundary=%s\r\n"
-      "Cache-Control: no-cache\r\n"
-      "Access-Control-Allow-Origin: *\r\n"
-      "Connection: close\r\n\r\n",
-      kBoundary);
   TickType_t last = xTaskGetTickCount();
-  while (client->connected()) {
+  bool ok = SendHead(*client, StreamHead());
+  while (ok && client->connected()) {
     camera_fb_t* fb = esp_camera_fb_get();
     if (fb == nullptr) {
       vTaskDelay(pdMS_TO_TICKS(20));
       continue;
     }
-    const int head = client->printf(
+    const size_t head = client->printf(
         "--%s\r\nContent-Type: image/jpeg\r\nContent-Length: %u\r\n\r\n",
         kBoundary, static_cast<unsigned>(fb->len));
     const size_t body = client->write(fb->buf, fb->len);
     const size_t len = fb->len;
     esp_camera_fb_return(fb);
-    if (head <= 0 || body != len || client->print("\r\n") != 2) break;
-    CountFrame();
+    ok = head > 0 && body == len && client->print("\r\n") == 2;
+    if (ok) CountFrame();
     vTaskDelayUntil(&last, pdMS_TO_TICKS(kFrameIntervalMs));
   }
   client->stop();
   delete client;
-  portENTER_CRITICAL(&stats_lock);
-  --stream_clients;
-  portEXIT_CRITICAL(&stats_lock);
+  ChangeStreams(-1);
   vTaskDelete(nullptr);
 }
 
@@ -139,79 +183,118 @@ void SendStatus(WiFiClient& client) {
                static_cast<double>(fps), static_cast<unsigned long>(served),
                static_cast<unsigned long>(millis()),
                static_cast<int>(WiFi.RSSI()), clients);
-  client.printf(
-      "HTTP/1.1 200 OK\r\nContent-Type: application/json\r\n"
-      "Access-Control-Allow-Origin: *\r\nCache-Control: no-cache\r\n"
-      "Content-Length: %d\r\nConnection: close\r\n\r\n",
-      n);
-  client.write(reinterpret_cast<const uint8_t*>(body), static_cast<size_t>(n));
-}
-
-void SendText(WiFiClient& client, const char* status, const char* type,
-              const char* text) {
-  client.printf(
-      "HTTP/1.1 %s\r\nContent-Type: %s\r\nContent-Length: %u\r\n"
-      "Connection: close\r\n\r\n%s",
-      status, type, static_cast<unsigned>(strlen(text)), text);
-}
-
-// Reads the request line ("GET /path HTTP/1.1") and skips the headers.
-bool ReadRequest(WiFiClient& client, String* path) {
-  client.setTimeout(1000);
-  const String line = client.readStringUntil('\n');
-  if (!line.startsWith("GET ")) return false;
-  const int end = line.indexOf(' ', 4);
-  *path = end > 4 ? line.substring(4, end) : line.substring(4);
-  while (client.connected()) {
-    const String h = client.readStringUntil('\n');
-    if (h.length() <= 1) break;  // blank line ("\r")
+  if (n <= 0 || static_cast<size_t>(n) >= sizeof(body)) return;
+  ResponseHead head;
+  head.content_type = "application/json";
+  head.content_length = n;
+  head.no_cache = true;
+  if (SendHead(client, head)) {
+    client.write(reinterpret_cast<const uint8_t*>(body),
+                 static_cast<size_t>(n));
   }
-  return true;
 }
 
-void HandleClient(WiFiClient client) {
-  String path;
-  if (!ReadRequest(client, &path)) {
-    SendText(client, "400 Bad Request", "text/plain", "bad request\n");
+// Hands the connection to a stream task; false (and 503) when none is free.
+void StartStream(WiFiClient& client) {
+  bool admitted = false;
+  portENTER_CRITICAL(&stats_lock);
+  if (stream_clients < kMaxStreams) {
+    ++stream_clients;
+    admitted = true;
+  }
+  portEXIT_CRITICAL(&stats_lock);
+  if (!admitted) {
+    SendFixed(client, Route::kBusy);
     client.stop();
     return;
   }
-  const int q = path.indexOf('?');
-  if (q >= 0) path = path.substring(0, q);
-  if (path == "/status") {
+  WiFiClient* owned = new WiFiClient(client);
+  if (xTaskCreatePinnedToCore(StreamTask, "stream", 6144, owned, 2, nullptr,
+                              1) != pdPASS) {
+    delete owned;
+    ChangeStreams(-1);
+    SendFixed(client, Route::kBusy);
+    client.stop();
+  }
+  // Otherwise the task owns the connection now.
+}
+
+void Answer(WiFiClient& client, const RequestReader& reader) {
+  const Route route = Decide(ParseRequest(reader.head(), reader.size()), kHttp);
+  if (route == Route::kStream) {
+    StartStream(client);
+    return;
+  }
+  if (route == Route::kStatus) {
     SendStatus(client);
-  } else if (path == "/stream") {
-    bool admitted = false;
-    portENTER_CRITICAL(&stats_lock);
-    if (stream_clients < kMaxStreams) {
-      ++stream_clients;
-      admitted = true;
-    }
-    portEXIT_CRITICAL(&stats_lock);
-    if (!admitted) {
-      SendText(client, "503 Service Unavailable", "text/plain",
-               "too many stream clients\n");
-    } else {
-      WiFiClient* owned = new WiFiClient(client);
-      if (xTaskCreatePinnedToCore(StreamTask, "stream", 6144, owned, 2, nullptr,
-                                  1) != pdPASS) {
-        delete owned;
-        portENTER_CRITICAL(&stats_lock);
-        --stream_clients;
-        portEXIT_CRITICAL(&stats_lock);
-        SendText(client, "503 Service Unavailable", "text/plain",
-                 "no memory for a stream\n");
-      }
-      return;  // the task owns the connection now
-    }
-  } else if (path == "/") {
-    SendText(client, "200 OK", "text/html",
-             "<!doctype html><title>cube camera</title>"
-             "<img src=\"/stream\" width=320 height=240>");
   } else {
-    SendText(client, "404 Not Found", "text/plain", "not found\n");
+    SendFixed(client, route);
   }
   client.stop();
+}
+
+// Takes new connections into free slots; with none free, answers 503.
+void AcceptClients() {
+  for (int i = 0; i < kMaxPending; ++i) {
+    WiFiClient client = server.accept();
+    if (!client) return;
+    Pending* slot = nullptr;
+    for (Pending& p : pending) {
+      if (!p.used) {
+        slot = &p;
+        break;
+      }
+    }
+    if (slot == nullptr) {
+      SendFixed(client, Route::kBusy);
+      client.stop();
+      continue;
+    }
+    slot->used = true;
+    slot->client = client;
+    slot->reader.Start(NowMs());
+  }
+}
+
+// Reads what each pending connection has sent, without waiting for more.
+void ServePending() {
+  for (Pending& p : pending) {
+    if (!p.used) continue;
+    RequestReader::State state = p.reader.Poll(NowMs());
+    const int available = p.client.available();
+    if (state == RequestReader::State::kReading && available > 0) {
+      uint8_t buf[256];
+      size_t want = static_cast<size_t>(available);
+      if (want > sizeof(buf)) want = sizeof(buf);
+      if (want > p.reader.Room()) want = p.reader.Room();
+      const int got = p.client.read(buf, want);
+      if (got > 0) {
+        state = p.reader.Feed(buf, static_cast<size_t>(got), NowMs());
+      }
+    } else if (state == RequestReader::State::kReading &&
+               !p.client.connected()) {
+      p.client.stop();
+      p.used = false;
+      continue;
+    }
+    switch (state) {
+      case RequestReader::State::kReading:
+        continue;
+      case RequestReader::State::kComplete:
+        Answer(p.client, p.reader);
+        break;
+      case RequestReader::State::kTooLarge:
+        SendFixed(p.client, Route::kTooLarge);
+        p.client.stop();
+        break;
+      case RequestReader::State::kTimedOut:
+        SendFixed(p.client, Route::kTimeout);
+        p.client.stop();
+        break;
+    }
+    p.client = WiFiClient();
+    p.used = false;
+  }
 }
 
 }  // namespace cam
@@ -232,20 +315,17 @@ void setup() {
   while (WiFi.status() != WL_CONNECTED) delay(200);
   Serial.print("camera at http://");
   Serial.print(WiFi.localIP());
-  Serial.println("/stream");
+  Serial.println(cam::kHttp.token[0] != '\0' ? "/stream (token required)"
+                                             : "/stream");
   cam::server.begin();
-  cam::fps_window_start_ms = millis();
+  cam::fps_window_start_ms = cam::NowMs();
 }
 
 void loop() {
   cam::UpdateFps();
-#if ESP_ARDUINO_VERSION_MAJOR >= 3
-  WiFiClient client = cam::server.accept();
-#else
-  WiFiClient client = cam::server.available();
-#endif
-  if (client) cam::HandleClient(client);
-  static uint32_t last_reconnect_ms = 0;
+  cam::AcceptClients();
+  cam::ServePending();
+  static unsigned long last_reconnect_ms = 0;
   if (WiFi.status() != WL_CONNECTED && millis() - last_reconnect_ms > 10000) {
     last_reconnect_ms = millis();
     WiFi.reconnect();

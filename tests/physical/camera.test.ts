@@ -22,6 +22,10 @@ const decodeDataUrl = (url: string) =>
 interface CameraServer {
   url: string;
   connections: number;
+  /** Requests refused with 401 for a missing or wrong token. */
+  refused: number;
+  /** The Authorization headers the server saw, in order. */
+  authorizations: Array<string | undefined>;
   /** Sends frame n to every open stream, split into two writes. */
   send(n: number, options?: { withLength?: boolean }): void;
   /** Ends every open stream (the camera dropping the connection). */
@@ -29,12 +33,24 @@ interface CameraServer {
   close(): Promise<void>;
 }
 
-async function cameraServer(): Promise<CameraServer> {
+/** A camera server; with `token`, it answers 401 unless given `Authorization: Bearer {token}`. */
+async function cameraServer(options: { token?: string } = {}): Promise<CameraServer> {
   const streams = new Set<ServerResponse>();
   let connections = 0;
+  let refused = 0;
+  const authorizations: Array<string | undefined> = [];
   const server: Server = createServer((request, response) => {
     if (request.url !== '/stream') {
       response.writeHead(404).end();
+      return;
+    }
+    authorizations.push(request.headers.authorization);
+    if (
+      options.token !== undefined &&
+      request.headers.authorization !== `Bearer ${options.token}`
+    ) {
+      refused += 1;
+      response.writeHead(401, { 'WWW-Authenticate': 'Bearer realm="cube-camera"' }).end();
       return;
     }
     connections += 1;
@@ -52,6 +68,10 @@ async function cameraServer(): Promise<CameraServer> {
     get connections() {
       return connections;
     },
+    get refused() {
+      return refused;
+    },
+    authorizations,
     send: (n, options = {}) => {
       const body = jpeg(n);
       const length = options.withLength === false ? '' : `Content-Length: ${body.length}\r\n`;
@@ -125,7 +145,94 @@ describe('MjpegCamera', () => {
   });
 });
 
+describe('MjpegCamera with a camera that requires a token', () => {
+  const cleanups: Array<() => Promise<void>> = [];
+  afterEach(async () => {
+    for (const cleanup of cleanups.splice(0).reverse()) await cleanup();
+  });
+
+  it('sends the configured token as a Bearer header and reads the stream', async () => {
+    const server = await cameraServer({ token: 'cam-token_42' });
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({
+      url: server.url,
+      token: 'cam-token_42',
+      reconnectDelayMs: 20,
+    });
+    cleanups.push(() => camera.stop());
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    server.send(5);
+    await expect.poll(() => camera.stats.frames, { timeout: 5000 }).toBe(1);
+    expect(decodeDataUrl(await camera.captureFrame())).toEqual(jpeg(5));
+    expect(server.refused).toBe(0);
+    expect(server.authorizations).toEqual(['Bearer cam-token_42']);
+  });
+
+  it('is refused without the token or with a wrong one, and captureFrame says why', async () => {
+    for (const token of [undefined, 'wrong-token']) {
+      const server = await cameraServer({ token: 'cam-token_42' });
+      cleanups.push(() => server.close());
+      const camera = new MjpegCamera({
+        url: server.url,
+        reconnectDelayMs: 20,
+        frameTimeoutMs: 300,
+        ...(token === undefined ? {} : { token }),
+      });
+      cleanups.push(() => camera.stop());
+      await expect(camera.captureFrame()).rejects.toMatchObject({
+        code: 'TIMEOUT',
+        message: expect.stringContaining('401'),
+      });
+      expect(server.refused).toBeGreaterThan(0);
+      expect(server.connections).toBe(0);
+      expect(server.authorizations[0]).toBe(token === undefined ? undefined : `Bearer ${token}`);
+    }
+  });
+});
+
 describe('PhysicalHAL#captureFrame', () => {
+  it('sends connection.cameraToken to the camera', async () => {
+    const server = await cameraServer({ token: 'hal-cam-token' });
+    const robot = new MockRobot({ timeScale: 20, hostTimeoutMs: 10_000 });
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: 'cube-cam-token',
+        connection: { type: 'wifi', cameraUrl: server.url, cameraToken: 'hal-cam-token' },
+      },
+      { transport: robot.transport(), timeScale: 20 },
+    );
+    try {
+      await hal.initialize();
+      await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+      const timer = setInterval(() => server.send(9), 20);
+      try {
+        expect(decodeDataUrl(await hal.vision.captureFrame())).toEqual(jpeg(9));
+      } finally {
+        clearInterval(timer);
+      }
+      expect(server.refused).toBe(0);
+    } finally {
+      await hal.cleanup();
+      await server.close();
+    }
+  });
+
+  it('refuses a camera token with characters a URL or header cannot carry', () => {
+    expect(
+      () =>
+        new PhysicalHAL(
+          {
+            mode: 'physical',
+            deviceId: 'cube-cam-bad',
+            connection: { type: 'wifi', cameraUrl: 'http://127.0.0.1:9', cameraToken: 'a b\r\n' },
+          },
+          { transport: new MockRobot().transport() },
+        ),
+    ).toThrow(/cameraToken/);
+  });
+
   it('returns the camera frame when a camera URL is configured, and offers the camera capability', async () => {
     const server = await cameraServer();
     const robot = new MockRobot({ timeScale: 20, hostTimeoutMs: 10_000 });

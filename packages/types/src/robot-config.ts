@@ -112,6 +112,11 @@ export const ConnectionConfigSchema = z.object({
     .optional()
     .describe('Robot UDP port (wifi), default 4210'),
   cameraUrl: z.string().url().optional().describe('ESP32-CAM base URL, e.g. http://192.168.4.2'),
+  cameraToken: z
+    .string()
+    .regex(/^[A-Za-z0-9._~-]{1,128}$/, 'up to 128 of A-Z a-z 0-9 - . _ ~')
+    .optional()
+    .describe('The ESP32-CAM token (its CAM_TOKEN), sent as "Authorization: Bearer"'),
   key: z
     .string()
     .regex(/^([0-9a-fA-F]{2})+$/)

@@ -7,6 +7,11 @@ import { boundaryOf, MultipartParser } from './multipart.js';
 export interface MjpegCameraOptions {
   /** The camera's base URL, e.g. `http://192.168.4.2`; the stream is `GET {url}/stream`. */
   url: string;
+  /**
+   * The camera's token (its `CAM_TOKEN`), sent as `Authorization: Bearer`; never logged. Default:
+   * none, for a camera without a token.
+   */
+  token?: string;
   /** Wait this long after the stream ends or fails before reconnecting, ms. Default 1000. */
   reconnectDelayMs?: number;
   /** `captureFrame` waits this long for a first frame, ms. Default 5000. */
@@ -51,6 +56,7 @@ export class MjpegCamera {
   #abort: AbortController | undefined;
   #running = false;
   #loop: Promise<void> | undefined;
+  #lastError: string | undefined;
   readonly stats: MjpegStats = { frames: 0, connects: 0, errors: 0 };
 
   constructor(options: MjpegCameraOptions) {
@@ -92,13 +98,13 @@ export class MjpegCamera {
       await new Promise<void>((resolve, reject) => {
         const timer = setTimeout(() => {
           this.#waiters.delete(wake);
+          const lastError = this.#lastError;
           reject(
             new HalError(
               'TIMEOUT',
-              `no camera frame from ${this.#options.url} within ${timeoutMs} ms`,
-              {
-                details: { url: this.#options.url, timeoutMs },
-              },
+              `no camera frame from ${this.#options.url} within ${timeoutMs} ms` +
+                (lastError === undefined ? '' : ` (last error: ${lastError})`),
+              { details: { url: this.#options.url, timeoutMs, lastError } },
             ),
           );
         }, timeoutMs);
@@ -121,14 +127,20 @@ export class MjpegCamera {
     while (this.#running) {
       this.#abort = new AbortController();
       try {
-        const response = await this.#fetch(url, { signal: this.#abort.signal });
+        const token = this.#options.token;
+        const response = await this.#fetch(url, {
+          signal: this.#abort.signal,
+          ...(token !== undefined && { headers: { Authorization: `Bearer ${token}` } }),
+        });
         const boundary = boundaryOf(response.headers.get('content-type'));
         if (!response.ok || response.body === null || boundary === undefined) {
+          await response.body?.cancel().catch(() => undefined);
           throw new Error(
             `GET ${url}: ${response.status} ${response.headers.get('content-type') ?? 'no content type'}`,
           );
         }
         this.stats.connects += 1;
+        this.#lastError = undefined;
         this.#log.debug('stream connected', { url });
         const parser = new MultipartParser(boundary);
         const reader = response.body.getReader();
@@ -146,7 +158,8 @@ export class MjpegCamera {
       } catch (error) {
         if (!this.#running) break;
         this.stats.errors += 1;
-        this.#log.debug('stream failed', { url, error: String(error) });
+        this.#lastError = error instanceof Error ? error.message : String(error);
+        this.#log.debug('stream failed', { url, error: this.#lastError });
       }
       if (!this.#running) break;
       await new Promise((resolve) => setTimeout(resolve, this.#options.reconnectDelayMs ?? 1000));

@@ -77,8 +77,15 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#robot = initialRobotConfig(parsed);
     this.#tracker = new PoseTracker(this.#robot, () => performance.now(), timeScale);
     const cameraUrl = parsed.connection?.cameraUrl;
+    const cameraToken = parsed.connection?.cameraToken;
     this.#camera =
-      cameraUrl === undefined ? undefined : new MjpegCamera({ url: cameraUrl, logger });
+      cameraUrl === undefined
+        ? undefined
+        : new MjpegCamera({
+            url: cameraUrl,
+            logger,
+            ...(cameraToken === undefined ? {} : { token: cameraToken }),
+          });
     const boundary = new HalBoundary({
       mode: this.mode,
       config: () => this.#robot,

@@ -183,7 +183,7 @@ void CubeAppSetup() {
 
 void CubeAppLoop() {
   // WiFi reconnects by itself; nothing else to do here.
-  static uint32_t last_try = 0;
+  static unsigned long last_try = 0;  // millis() is unsigned long
   if (WiFi.status() != WL_CONNECTED && millis() - last_try > 10000) {
     last_try = millis();
     WiFi.reconnect();
