@@ -2,7 +2,7 @@
 // with the Debian package to install, before any compiler or CMake error. The missing tool is
 // simulated (a PATH without it, or a compiler that cannot see the headers), never uninstalled.
 import { spawnSync } from 'node:child_process';
-import { chmodSync, existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { chmodSync, existsSync, mkdtempSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -138,13 +138,24 @@ describe('firmware/scripts/size-check.sh on a machine without a package', () => 
   });
 });
 
-describe('pnpm bench on a machine without a package', () => {
+describe('pnpm bench, which builds cube-emulator itself', () => {
   it('builds the emulator only for the benchmarks that start it', () => {
     const dir = join(root, 'bench');
     expect(benchmarksUsingEmulator(dir, ['physical.bench.ts', 'astar.bench.ts'])).toEqual([
       'physical.bench.ts',
     ]);
   });
+
+  it('builds a missing emulator, and leaves an up-to-date one as it is', () => {
+    const build = join(work, 'bench-fresh');
+    const path = ensureEmulator({ buildDir: build });
+    expect(path).toBe(join(build, 'cube-emulator'));
+    const built = statSync(path).mtimeMs;
+    const help = spawnSync(path, ['--help'], { encoding: 'utf8', timeout: 10_000 });
+    expect(`${help.stdout}${help.stderr}`).toContain('--udp-port');
+    expect(ensureEmulator({ buildDir: build })).toBe(path);
+    expect(statSync(path).mtimeMs).toBe(built);
+  }, 300_000);
 
   it('names cmake when it cannot build the emulator, and touches no build directory', () => {
     const build = join(work, 'bench-build');
