@@ -19,14 +19,16 @@ export interface EnsureEmulatorOptions {
   env?: NodeJS.ProcessEnv;
 }
 
-function run(command: string, args: readonly string[], env: NodeJS.ProcessEnv): void {
+/** Runs a step; throws its output, under `what` when given, else under the command line. */
+function run(command: string, args: readonly string[], env: NodeJS.ProcessEnv, what?: string) {
   const result = spawnSync(command, args, { env, encoding: 'utf8', timeout: 15 * 60_000 });
   if (result.error !== undefined) {
     throw new Error(`cube-emulator build: cannot run ${command}: ${result.error.message}`);
   }
   if (result.status !== 0) {
     const output = `${result.stdout}${result.stderr}`.trim();
-    throw new Error(`cube-emulator build: ${command} ${args.join(' ')} failed\n${output}`);
+    const step = what ?? `cube-emulator build: ${command} ${args.join(' ')} failed`;
+    throw new Error(step === '' ? output : `${step}\n${output}`);
   }
 }
 
@@ -38,6 +40,7 @@ export function ensureEmulator(options: EnsureEmulatorOptions = {}): string {
     'sh',
     ['-c', '. "$1" && require_host_build && require_end "pnpm bench"', 'sh', requireScript],
     env,
+    '', // require.sh's report says it all
   );
   if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
     run(
