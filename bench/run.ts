@@ -3,6 +3,7 @@
 import { spawnSync } from 'node:child_process';
 import { readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
+import { ensureEmulatorFor } from './ensure-emulator.js';
 
 const dir = fileURLToPath(new URL('.', import.meta.url));
 const filters = process.argv.slice(2);
@@ -10,6 +11,7 @@ const files = readdirSync(dir)
   .filter((name) => name.endsWith('.bench.ts'))
   .filter((name) => filters.length === 0 || filters.some((f) => name.includes(f)))
   .sort();
+ensureEmulatorFor(dir, files); // builds cube-emulator when a selected benchmark starts it
 
 let failed = 0;
 for (const file of files) {

@@ -2,14 +2,15 @@
 # Installs everything this repository needs on a Debian machine with Node.js 20 and npm:
 # the system packages (compilers, GoogleTest, Chromium for the browser test, socat),
 # pnpm through corepack (pinned by package.json's packageManager), and the workspace packages.
-# Safe to run again: it installs only what is missing.
+# Safe to run again: it installs only what is missing. tests/setup/ checks that apt_packages
+# covers every system tool the build, the tests and the benchmarks use (tests/setup/system-tools.ts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 log() { printf '[setup] %s\n' "$*" >&2; }
 
 apt_packages=(
-  cmake ninja-build g++ pkg-config # firmware host build
+  cmake ninja-build g++ # firmware host build (also what pnpm bench builds the emulator with)
   libgtest-dev nlohmann-json3-dev libmbedtls-dev # firmware tests, golden vectors, HMAC
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib # 32-bit cross build (size check)
   clang libclang-rt-14-dev # libFuzzer targets for the firmware's parsers (ASan, UBSan)

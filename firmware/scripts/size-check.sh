@@ -2,14 +2,17 @@
 # Compiles the firmware core for a 32-bit microcontroller target with the
 # board's flags (no exceptions, no RTTI, -Os) and the host's strict
 # warnings, links it into a minimal image, and prints its code and RAM size.
-# Needs Debian's gcc-arm-none-eabi and libnewlib-arm-none-eabi.
+# Needs Debian's gcc-arm-none-eabi, libstdc++-arm-none-eabi-newlib and libnewlib-arm-none-eabi
+# (checked first, by require.sh). ARM_CXX overrides the compiler.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/require.sh"
+require_arm_build
+require_end size-check
 core="$here/../esp32-s3-stepper/src/core"
 out=${SIZE_CHECK_OUT:-$(mktemp -d)}
 trap 'rm -rf "$out"' EXIT
 CXX=${ARM_CXX:-arm-none-eabi-g++}
-command -v "$CXX" >/dev/null 2>&1 || { echo "size-check: $CXX not found" >&2; exit 1; }
 flags="-mcpu=cortex-m4 -mthumb -mfloat-abi=soft -Os -std=c++17 -fno-exceptions -fno-rtti
   -ffunction-sections -fdata-sections -Wall -Wextra -Wconversion -Wsign-conversion -Wshadow -Werror"
 objs=""

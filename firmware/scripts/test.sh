@@ -3,10 +3,15 @@
 # Quiet on success except ctest's summary; on failure prints the build log or
 # the failing tests' output and exits non-zero.
 # Needs: cmake, ninja-build, g++, libgtest-dev, nlohmann-json3-dev,
-# libmbedtls-dev; optional gcc-arm-none-eabi + libnewlib-arm-none-eabi for
-# the size check.
+# libmbedtls-dev, and for the size check gcc-arm-none-eabi,
+# libstdc++-arm-none-eabi-newlib and libnewlib-arm-none-eabi; all are checked
+# first (scripts/require.sh), and a missing one is named with its package.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
+. "$here/scripts/require.sh"
+require_host_build
+require_arm_build
+require_end firmware
 build=${CUBE_BUILD_DIR:-$here/build}
 jobs=${CUBE_JOBS:-2}
 log=$(mktemp)

@@ -2,7 +2,7 @@
 // demo, serves it on a free port, and checks that the page loads without console errors, that
 // keyboard teleop moves the robot, and that clicked goals are reached, by a straight moveTo and
 // by the navigation bridge around an obstacle. Saves a screenshot to artifacts/sim-demo.png.
-import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -11,8 +11,8 @@ import type { BrowserContext, Page } from 'playwright-core';
 import { build, preview } from 'vite';
 import type { PreviewServer } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { requireChromium } from './chromium.js';
 
-const CHROMIUM = process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium';
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const demoRoot = join(repoRoot, 'apps/sim-demo');
 const artifacts = join(repoRoot, 'artifacts');
@@ -39,9 +39,7 @@ describe('apps/sim-demo in Chromium', () => {
   const problems: string[] = [];
 
   beforeAll(async () => {
-    if (!existsSync(CHROMIUM)) {
-      throw new Error(`no Chromium at ${CHROMIUM}: install it with "apt-get install -y chromium"`);
-    }
+    const executablePath = requireChromium();
     outDir = mkdtempSync(join(tmpdir(), 'sim-demo-build-'));
     profile = mkdtempSync(join(tmpdir(), 'sim-demo-profile-'));
     await build({
@@ -58,7 +56,7 @@ describe('apps/sim-demo in Chromium', () => {
       preview: { host: '127.0.0.1', port: 0, strictPort: false },
     });
     context = await chromium.launchPersistentContext(profile, {
-      executablePath: CHROMIUM,
+      executablePath,
       headless: true,
       viewport: { width: 1400, height: 900 },
       args: [
