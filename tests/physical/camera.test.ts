@@ -200,7 +200,11 @@ describe('PhysicalHAL#captureFrame', () => {
     const timersBefore = timers();
     const robot = new MockRobot({ timeScale: 20, hostTimeoutMs: 10_000 });
     const hal = new PhysicalHAL(
-      { mode: 'physical', deviceId: 'cube-cam', connection: { type: 'wifi', cameraUrl: server.url } },
+      {
+        mode: 'physical',
+        deviceId: 'cube-cam',
+        connection: { type: 'wifi', cameraUrl: server.url },
+      },
       { transport: robot.transport(), timeScale: 20 },
     );
     try {

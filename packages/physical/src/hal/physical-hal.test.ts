@@ -260,6 +260,19 @@ describe('PhysicalHAL', () => {
     });
   });
 
+  describe('config', () => {
+    it('refuses a link type it has no transport for, naming the supported ones', () => {
+      const build = () =>
+        new PhysicalHAL({
+          mode: 'physical',
+          deviceId: 'cube-1',
+          connection: { type: 'bluetooth' as 'serial' },
+        });
+      expect(build).toThrow(/"connection\.type".*one of "serial", "wifi".*got "bluetooth"/);
+      expect(build).toThrow(expect.objectContaining({ code: 'INVALID_PARAMETER' }));
+    });
+  });
+
   describe('#getDistanceSensors', () => {
     it('rejects with NOT_IMPLEMENTED: the V1 robot has no range sensors', async () => {
       const hal = halOn(new MockRobot());

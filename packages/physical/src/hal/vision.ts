@@ -26,7 +26,8 @@ export function createVision(ctx: HalContext, camera: MjpegCamera | undefined): 
         }
         return await camera.captureFrame();
       }),
-    scan: (mode) => b.read('scan', { mode }, () => lacks('range sensors', CAPABILITIES.rangeSensors)),
+    scan: (mode) =>
+      b.read('scan', { mode }, () => lacks('range sensors', CAPABILITIES.rangeSensors)),
     getDistanceSensors: () =>
       b.read('getDistanceSensors', {}, () => lacks('range sensors', CAPABILITIES.rangeSensors)),
     getLineSensors: () =>

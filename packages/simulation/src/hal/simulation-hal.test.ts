@@ -228,7 +228,12 @@ describe('SimulationHAL', () => {
     it('records nothing for a refused log call, reports it to the logger and never throws', async () => {
       const warnings: string[] = [];
       const ignore = () => undefined;
-      const logger = { debug: ignore, info: ignore, error: ignore, warn: (m: string) => warnings.push(m) };
+      const logger = {
+        debug: ignore,
+        info: ignore,
+        error: ignore,
+        warn: (m: string) => warnings.push(m),
+      };
       const hal = new SimulationHAL({ logger });
       const seen: CommunicationEvent[] = [];
       hal.events.on('communication', (e) => seen.push(e));

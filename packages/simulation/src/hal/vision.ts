@@ -28,7 +28,9 @@ export function createVision(ctx: HalContext, frameSource: FrameSource): VisionI
   return {
     captureFrame: () =>
       b.read('captureFrame', {}, () =>
-        features.camera ? frameSource(ctx.world, ctx.robot()) : lacks('camera', CAPABILITIES.camera),
+        features.camera
+          ? frameSource(ctx.world, ctx.robot())
+          : lacks('camera', CAPABILITIES.camera),
       ),
     scan: (mode) =>
       b.read('scan', { mode }, (p) =>

@@ -32,7 +32,9 @@ export function createReadSchemas() {
       ),
     captureFrame: z
       .object({})
-      .describe('Capture the latest camera frame, a base64 JPEG data URL (320x240 on the V1 robot)'),
+      .describe(
+        'Capture the latest camera frame, a base64 JPEG data URL (320x240 on the V1 robot)',
+      ),
     scan: z
       .object({
         mode: z

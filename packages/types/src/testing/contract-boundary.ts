@@ -42,9 +42,19 @@ const BAD_CALLS: Record<string, BadCall[]> = {
     ['a point far away', (h) => h.locomotion.moveTo(1e6, 0, 0), 'RANGE_EXCEEDED', 'x'],
   ],
   rotate: [
-    ['no direction', (h) => h.locomotion.rotate(num(none) as 'left', 90), 'INVALID_PARAMETER', 'direction'],
+    [
+      'no direction',
+      (h) => h.locomotion.rotate(num(none) as 'left', 90),
+      'INVALID_PARAMETER',
+      'direction',
+    ],
     ['infinite degrees', (h) => h.locomotion.rotate('right', inf), 'INVALID_PARAMETER', 'degrees'],
-    ['a string angle', (h) => h.locomotion.rotate('left', str('90')), 'INVALID_PARAMETER', 'degrees'],
+    [
+      'a string angle',
+      (h) => h.locomotion.rotate('left', str('90')),
+      'INVALID_PARAMETER',
+      'degrees',
+    ],
     ['zero degrees', (h) => h.locomotion.rotate('left', 0), 'RANGE_EXCEEDED', 'degrees'],
     ['a million degrees', (h) => h.locomotion.rotate('left', 1e6), 'RANGE_EXCEEDED', 'degrees'],
   ],

@@ -22,7 +22,8 @@ export function describeCapabilityContract(ctx: ContractContext): void {
         const outcome = await settle(() => hal.vision.captureFrame());
         if (hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.camera)) {
           expect('value' in outcome, JSON.stringify(outcome)).toBe(true);
-          if ('value' in outcome) expect(FrameDataUrlSchema.safeParse(outcome.value).success).toBe(true);
+          if ('value' in outcome)
+            expect(FrameDataUrlSchema.safeParse(outcome.value).success).toBe(true);
         } else {
           expectRejected(outcome, 'NOT_IMPLEMENTED', undefined, 'captureFrame:');
         }
