@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import type { HALLogLevel, VisionInterface } from '../interfaces.js';
 import {
   DistanceSensorsSchema,
   IMUReadingSchema,
@@ -11,10 +12,17 @@ import {
 export const MAX_LOG_MESSAGE_LENGTH = 2000;
 
 /** The levels of `communication.log`. */
-export const LOG_LEVELS = ['debug', 'info', 'warn', 'error'] as const;
+export const LOG_LEVELS = [
+  'debug',
+  'info',
+  'warn',
+  'error',
+] as const satisfies readonly HALLogLevel[];
 
 /** The ways `vision.scan` can look around. */
-export const SCAN_MODES = ['full', 'targeted', 'quick'] as const;
+export const SCAN_MODES = ['full', 'targeted', 'quick'] as const satisfies readonly NonNullable<
+  Parameters<VisionInterface['scan']>[0]
+>[];
 
 /**
  * The parameter schemas of the calls that read state (and of `log`), which answer with a value
