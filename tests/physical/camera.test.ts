@@ -26,6 +26,8 @@ interface CameraServer {
   refused: number;
   /** The Authorization headers the server saw, in order. */
   authorizations: Array<string | undefined>;
+  /** Streams open now. */
+  open: number;
   /** Sends frame n to every open stream, split into two writes. */
   send(n: number, options?: { withLength?: boolean }): void;
   /** Ends every open stream (the camera dropping the connection). */
@@ -72,6 +74,9 @@ async function cameraServer(options: { token?: string } = {}): Promise<CameraSer
       return refused;
     },
     authorizations,
+    get open() {
+      return streams.size;
+    },
     send: (n, options = {}) => {
       const body = jpeg(n);
       const length = options.withLength === false ? '' : `Content-Length: ${body.length}\r\n`;
@@ -91,6 +96,8 @@ async function cameraServer(options: { token?: string } = {}): Promise<CameraSer
       new Promise<void>((resolve) => {
         for (const stream of streams) stream.destroy();
         server.close(() => resolve());
+        // Node's fetch may keep an idle pooled socket after an abort (nodejs/undici#5845)
+        server.closeAllConnections();
       }),
   };
 }
@@ -141,7 +148,41 @@ describe('MjpegCamera', () => {
     cleanups.push(() => server.close());
     const camera = new MjpegCamera({ url: server.url, frameTimeoutMs: 100 });
     cleanups.push(() => camera.stop());
+    camera.start();
     await expect(camera.captureFrame()).rejects.toMatchObject({ code: 'TIMEOUT' });
+  });
+
+  it('rejects captureFrame with NOT_READY before start() and after stop(), and opens no stream for it', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 20 });
+    cleanups.push(() => camera.stop());
+    await expect(camera.captureFrame()).rejects.toMatchObject({ code: 'NOT_READY' });
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    await camera.stop();
+    await expect.poll(() => server.open, { timeout: 5000 }).toBe(0);
+    await expect(camera.captureFrame()).rejects.toMatchObject({ code: 'NOT_READY' });
+    await new Promise((resolve) => setTimeout(resolve, 100));
+    expect(server.connections).toBe(1);
+    expect(server.open).toBe(0);
+    expect(camera.running).toBe(false);
+  });
+
+  it('stops at once while it waits to reconnect, leaving no timer behind', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 600_000 });
+    cleanups.push(() => camera.stop());
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    server.dropStreams();
+    await expect.poll(() => server.open, { timeout: 5000 }).toBe(0);
+    const started = performance.now();
+    await camera.stop();
+    // a generous bound: the reconnect delay is ten minutes, so this proves it was not waited out
+    expect(performance.now() - started).toBeLessThan(5000);
+    expect(server.connections).toBe(1);
   });
 });
 
@@ -180,6 +221,7 @@ describe('MjpegCamera with a camera that requires a token', () => {
         ...(token === undefined ? {} : { token }),
       });
       cleanups.push(() => camera.stop());
+      camera.start();
       await expect(camera.captureFrame()).rejects.toMatchObject({
         code: 'TIMEOUT',
         message: expect.stringContaining('401'),
@@ -260,11 +302,46 @@ describe('PhysicalHAL#captureFrame', () => {
     }
   });
 
+  it('rejects with NOT_READY after cleanup() and leaves no stream, request or timer running', async () => {
+    const server = await cameraServer();
+    const timers = () => process.getActiveResourcesInfo().filter((r) => r === 'Timeout').length;
+    const timersBefore = timers();
+    const robot = new MockRobot({ timeScale: 20, hostTimeoutMs: 10_000 });
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: 'cube-cam',
+        connection: { type: 'wifi', cameraUrl: server.url },
+      },
+      { transport: robot.transport(), timeScale: 20 },
+    );
+    try {
+      await hal.initialize();
+      await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+      await hal.cleanup();
+      await expect.poll(() => server.open, { timeout: 5000 }).toBe(0);
+      await expect(hal.vision.captureFrame()).rejects.toMatchObject({ code: 'NOT_READY' });
+      await new Promise((resolve) => setTimeout(resolve, 100));
+      expect(server.connections).toBe(1);
+      expect(server.open).toBe(0);
+      expect(timers()).toBeLessThanOrEqual(timersBefore);
+    } finally {
+      await hal.cleanup();
+      await server.close();
+    }
+  });
+
   it('rejects with NOT_IMPLEMENTED when no camera is configured', async () => {
     const hal = new PhysicalHAL(
       { mode: 'physical', deviceId: 'cube-nocam' },
       { transport: new MockRobot().transport() },
     );
-    await expect(hal.vision.captureFrame()).rejects.toMatchObject({ code: 'NOT_IMPLEMENTED' });
+    await expect(hal.vision.captureFrame()).rejects.toMatchObject({ code: 'NOT_READY' });
+    await hal.initialize();
+    try {
+      await expect(hal.vision.captureFrame()).rejects.toMatchObject({ code: 'NOT_IMPLEMENTED' });
+    } finally {
+      await hal.cleanup();
+    }
   });
 });

@@ -20,6 +20,15 @@ export interface HybridContext {
    * both are anchored where each robot stood at `initialize()`.
    */
   twinPoint(x: number, y: number): { x: number; y: number };
-  /** Throws NOT_READY unless the hybrid HAL is initialised. */
-  ensureReady(what: string): void;
+  /**
+   * Guards and validates a value-returning call with the same boundary, then runs it; rejects
+   * with a HalError (NOT_READY, INVALID_PARAMETER, or whatever the body rejects with).
+   */
+  read<N extends CallName, T>(
+    call: N,
+    args: unknown,
+    body: (params: CallParams<N>) => Promise<T>,
+  ): Promise<T>;
+  /** Guards and validates `log`, then runs it; never throws, a refusal is logged at warn level. */
+  notify<N extends CallName>(call: N, args: unknown, body: (params: CallParams<N>) => void): void;
 }

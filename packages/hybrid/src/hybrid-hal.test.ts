@@ -233,6 +233,24 @@ describe('HybridHAL', () => {
       await hal.cleanup();
     });
 
+    it('logs through the physical robot, and reports a refused log to its own logger without throwing', async () => {
+      const entries: Array<[string, string, string]> = [];
+      const physicalEntries: string[] = [];
+      const { hal } = hybridRig({
+        hybrid: { logger: { log: (level, ns, message) => entries.push([level, ns, message]) } },
+        physical: {
+          logger: { log: (_l, ns, message) => physicalEntries.push(`${ns} ${message}`) },
+        },
+      });
+      await hal.initialize();
+      hal.communication.log('kept', 'info');
+      expect(() => hal.communication.log('x', 'bogus' as 'info')).not.toThrow();
+      expect(physicalEntries).toContain('hal:physical:log kept');
+      expect(physicalEntries.filter((e) => e.startsWith('hal:physical:log'))).toHaveLength(1);
+      expect(entries).toContainEqual(['warn', 'hal:hybrid', 'log refused']);
+      await hal.cleanup();
+    });
+
     it('refuses vision calls with NOT_READY before initialize()', async () => {
       const { hal } = hybridRig();
       const imu = await hal.vision.getIMU().catch((error: unknown) => error);

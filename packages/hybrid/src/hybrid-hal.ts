@@ -112,12 +112,11 @@ export class HybridHAL implements HardwareAbstractionLayer {
         const point = composePose(starts.twin, relative);
         return { x: point.x, y: point.y };
       },
-      ensureReady: (what) => {
-        if (!this.#ready) {
-          throw new HalError(
-            'NOT_READY',
-            `${what}: the HAL is not initialised; call initialize() first`,
-          );
+      read: (call, args, body) => this.#boundary.read(call, args, body),
+      notify: (call, args, body) => {
+        const result = this.#boundary.notify(call, args, body);
+        if (!result.success) {
+          this.#log('warn', `${call} refused`, { code: result.code, error: result.error });
         }
       },
     };

@@ -53,7 +53,7 @@ export function createLocomotion(ctx: HybridContext): LocomotionInterface {
         () => p.locomotion.stop(),
         () => t.locomotion.stop(),
       ),
-    getPose: async () => p.locomotion.getPose(),
+    getPose: () => ctx.read('getPose', {}, () => p.locomotion.getPose()),
   };
 }
 
@@ -64,26 +64,11 @@ export function createLocomotion(ctx: HybridContext): LocomotionInterface {
 export function createVision(ctx: HybridContext): VisionInterface {
   const v = ctx.physical.vision;
   return {
-    captureFrame: async () => {
-      ctx.ensureReady('captureFrame');
-      return v.captureFrame();
-    },
-    scan: async (mode) => {
-      ctx.ensureReady('scan');
-      return v.scan(mode);
-    },
-    getDistanceSensors: async () => {
-      ctx.ensureReady('getDistanceSensors');
-      return v.getDistanceSensors();
-    },
-    getLineSensors: async () => {
-      ctx.ensureReady('getLineSensors');
-      return v.getLineSensors();
-    },
-    getIMU: async () => {
-      ctx.ensureReady('getIMU');
-      return v.getIMU();
-    },
+    captureFrame: () => ctx.read('captureFrame', {}, () => v.captureFrame()),
+    scan: (mode) => ctx.read('scan', { mode }, (a) => v.scan(a.mode)),
+    getDistanceSensors: () => ctx.read('getDistanceSensors', {}, () => v.getDistanceSensors()),
+    getLineSensors: () => ctx.read('getLineSensors', {}, () => v.getLineSensors()),
+    getIMU: () => ctx.read('getIMU', {}, () => v.getIMU()),
   };
 }
 
@@ -102,6 +87,7 @@ export function createCommunication(ctx: HybridContext): CommunicationInterface 
       ),
     playSound: (soundId) =>
       ctx.run('playSound', { soundId }, (a) => p.communication.playSound(a.soundId)),
-    log: (message, level) => p.communication.log(message, level),
+    log: (message, level) =>
+      ctx.notify('log', { message, level }, (a) => p.communication.log(a.message, a.level)),
   };
 }

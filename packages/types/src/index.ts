@@ -8,6 +8,7 @@ export { HALToolResultSchema, failureResult, successResult } from './result.js';
 export type { HALToolResult } from './result.js';
 
 export {
+  CONNECTION_TYPES,
   ConnectionConfigSchema,
   HALConfigSchema,
   RobotConfigSchema,
@@ -15,6 +16,7 @@ export {
   maxDistancePerCommandCm,
   maxLinearSpeedMPerS,
   maxRotationPerCommandDeg,
+  minLinearSpeedMPerS,
   robotConfig,
   stepsPerCm,
 } from './robot-config.js';
@@ -78,6 +80,20 @@ export type {
   SetLEDParams,
   SpeakParams,
 } from './schemas/calls.js';
+
+export {
+  FrameDataUrlSchema,
+  LOG_LEVELS,
+  LineSensorsSchema,
+  LogParamsSchema,
+  MAX_LOG_MESSAGE_LENGTH,
+  NoParamsSchema,
+  READ_RESULT_SCHEMAS,
+  SCAN_MODES,
+  ScanParamsSchema,
+  createReadSchemas,
+} from './schemas/reads.js';
+export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
 export type { HalBoundaryOptions } from './validation.js';

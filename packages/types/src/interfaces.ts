@@ -18,7 +18,15 @@ import type { HALToolResult } from './result.js';
  *   timeout derived from the motion profile, and a timeout is `success: false`, code TIMEOUT;
  * - report a capability the robot lacks honestly: absent from `capabilities`, its result-returning
  *   calls fail with NOT_IMPLEMENTED, and its value-returning calls reject with a HalError of code
- *   NOT_IMPLEMENTED or return a value derived from what the robot has, marked with its `source`.
+ *   NOT_IMPLEMENTED or return a value derived from what the robot has, marked with its `source`;
+ * - put every call through the shared boundary (`HalBoundary`), with the same rules in the same
+ *   order on every HAL: before `initialize()` and after `cleanup()` NOT_READY, then (motion only)
+ *   EMERGENCY_STOPPED, then parameters, then the capability. A call that answers with a
+ *   `HALToolResult` never throws: it resolves `success: false` with the code. A call that answers
+ *   with a value (`getPose`, `captureFrame`, `scan`, `getDistanceSensors`, `getLineSensors`,
+ *   `getIMU`) rejects with a `HalError` carrying the code. `log` never throws. The synchronous
+ *   `isEmergencyStopped()` and `getSafetyStatus()` answer from cached state at any time and never
+ *   throw, so a safety check cannot fail.
  * Frame REP-103: x forward, y left, yaw counter-clockwise positive. Metres unless a name says cm.
  */
 
@@ -58,25 +66,39 @@ export interface LocomotionInterface {
   /** Stop all wheel motion now (no ramp-down). Always allowed, even while emergency-stopped. */
   stop(): Promise<HALToolResult>;
 
-  /** The current pose (REP-103; metres, radians, m/s, rad/s). */
+  /**
+   * The current pose (REP-103; metres, radians, m/s, rad/s). Rejects with a HalError:
+   * NOT_READY before `initialize()` and after `cleanup()`.
+   */
   getPose(): Promise<Pose>;
 }
 
 /** Camera and range sensing. */
 export interface VisionInterface {
-  /** The latest camera frame as a base64 JPEG data URL (`data:image/jpeg;base64,...`). */
+  /**
+   * The latest camera frame as a base64 JPEG data URL (`data:image/jpeg;base64,...`). Rejects
+   * with a HalError: NOT_READY before `initialize()` and after `cleanup()` (and starts nothing);
+   * NOT_IMPLEMENTED without a camera; TIMEOUT when no frame comes in time.
+   */
   captureFrame(): Promise<string>;
 
-  /** A scan of the surroundings; robots without range sensors derive what they can. */
+  /**
+   * A scan of the surroundings; robots without range sensors derive what they can. Rejects with
+   * a HalError: NOT_READY; INVALID_PARAMETER for a mode other than 'full', 'targeted' or 'quick'
+   * (default 'quick'); NOT_IMPLEMENTED when the robot cannot scan.
+   */
   scan(mode?: 'full' | 'targeted' | 'quick'): Promise<ScanResult>;
 
-  /** Range readings front/left/right, metres. */
+  /** Range readings front/left/right, metres. Rejects NOT_READY, or NOT_IMPLEMENTED without sensors. */
   getDistanceSensors(): Promise<DistanceSensors>;
 
-  /** Line sensor readings, 0..1 each, left to right. */
+  /** Line sensor readings, 0..1 each, left to right. Rejects NOT_READY, or NOT_IMPLEMENTED. */
   getLineSensors(): Promise<number[]>;
 
-  /** Acceleration, rotation rate and heading; `source` says where each comes from. */
+  /**
+   * Acceleration, rotation rate and heading; `source` says where each comes from. Rejects with a
+   * HalError: NOT_READY before `initialize()` and after `cleanup()`.
+   */
   getIMU(): Promise<IMUReading>;
 }
 
@@ -112,7 +134,11 @@ export interface CommunicationInterface {
   ): Promise<HALToolResult>;
   /** Play a sound effect by id. */
   playSound(soundId: string): Promise<HALToolResult>;
-  /** Record a message in the HAL's log and telemetry. Never throws. */
+  /**
+   * Record a message (a string of up to 2000 characters) in the HAL's log and telemetry, at
+   * `level` (default 'info'). Never throws: a call the boundary refuses (not ready, a message that
+   * is not a string, an unknown level) records nothing and is reported through the HAL's logger.
+   */
   log(message: string, level?: HALLogLevel): void;
 }
 
@@ -120,11 +146,18 @@ export interface CommunicationInterface {
 export interface SafetyInterface {
   /** Stop everything now and latch: motion is refused until {@link resetEmergencyStop}. */
   emergencyStop(reason?: string): Promise<HALToolResult>;
-  /** Whether the emergency stop is latched. Synchronous: answers from cached state. */
+  /**
+   * Whether the emergency stop is latched. Synchronous: answers from cached state at any time,
+   * before `initialize()` and after `cleanup()` too, and never throws.
+   */
   isEmergencyStopped(): boolean;
   /** Clear a latched emergency stop. The only way to clear it. */
   resetEmergencyStop(): Promise<HALToolResult>;
-  /** Battery, temperature, active faults and recorded trips, from cached state. */
+  /**
+   * Battery, temperature, active faults and recorded trips, from cached state. Answers at any
+   * time (before `initialize()` and after `cleanup()` with what is known) and never throws; its
+   * `emergencyStopped` always equals {@link isEmergencyStopped}.
+   */
   getSafetyStatus(): SafetyStatus;
 }
 

@@ -29,6 +29,16 @@ export const RobotConfigSchema = z.object({
     .max(2048)
     .default(1024)
     .describe('Top wheel speed, steps/s (1..2048); the firmware clamps every command to it'),
+  minSpeedStepsPerS: z
+    .number()
+    .int()
+    .min(1)
+    .max(2048)
+    .default(64)
+    .describe(
+      'Slowest cruise speed a call may ask for, steps/s (1..2048, never above the top speed); ' +
+        'slower requests are refused rather than run for hours',
+    ),
   accelerationStepsPerS2: z
     .number()
     .int()
@@ -98,9 +108,28 @@ export function maxLinearSpeedMPerS(config: RobotConfig): number {
   return config.maxSpeedStepsPerS / stepsPerCm(config) / 100;
 }
 
+/**
+ * Slowest cruise speed a call may ask for, m/s: `minSpeedStepsPerS` (never above the top speed)
+ * along the ground. At the V1 default of 64 steps/s that is about 2.9 mm/s, so the longest single
+ * command (40960 steps) takes at most about 11 minutes.
+ */
+export function minLinearSpeedMPerS(config: RobotConfig): number {
+  const steps = Math.min(config.minSpeedStepsPerS, config.maxSpeedStepsPerS);
+  return steps / stepsPerCm(config) / 100;
+}
+
+/** The links a HAL can reach a physical robot over; each has a transport in @hal/physical. */
+export const CONNECTION_TYPES = ['serial', 'wifi'] as const;
+
 /** How a HAL reaches a physical robot. */
 export const ConnectionConfigSchema = z.object({
-  type: z.enum(['serial', 'wifi', 'bluetooth']).describe('Link to the robot'),
+  type: z
+    .enum(CONNECTION_TYPES, {
+      error: (issue) =>
+        `connection.type must be one of ${CONNECTION_TYPES.map((t) => `"${t}"`).join(', ')} ` +
+        `(the links with a transport), got ${JSON.stringify(issue.input) ?? 'nothing'}`,
+    })
+    .describe('Link to the robot: "serial" (CRC-16 framed) or "wifi" (UDP)'),
   port: z.string().min(1).optional().describe('Serial device path, e.g. /dev/ttyUSB0'),
   baudRate: z.number().int().positive().optional().describe('Serial baud rate, bits/s'),
   host: z.string().min(1).optional().describe('Robot IP address or host name (wifi)'),

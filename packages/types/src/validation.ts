@@ -1,5 +1,5 @@
 import type { z } from 'zod';
-import { HalError } from './errors.js';
+import { HalError, toHalError } from './errors.js';
 import type { HALMode } from './mode.js';
 import { failureResult, successResult } from './result.js';
 import type { HALToolResult } from './result.js';
@@ -84,10 +84,18 @@ export interface HalBoundaryOptions {
 }
 
 /**
- * Safety layer 2, shared by every HAL implementation: each public call goes through `call()`,
- * which refuses before anything moves (not ready, emergency-stopped motion, bad parameters),
- * runs the body with validated parameters, times it, and converts whatever is thrown into a
- * failed {@link HALToolResult} once, here.
+ * Safety layer 2, shared by every HAL implementation. Every public call goes through it, with the
+ * same rules in the same order: not ready (before `initialize()`, after `cleanup()`): NOT_READY;
+ * a motion while the emergency stop is latched: EMERGENCY_STOPPED; bad parameters:
+ * INVALID_PARAMETER or RANGE_EXCEEDED naming the parameter and the limit; only then the body,
+ * whose capability checks (NOT_IMPLEMENTED) and failures come last.
+ * - `call()` serves the calls that answer with a {@link HALToolResult}: it never throws.
+ * - `read()` serves the calls that answer with a value (`getPose`, `captureFrame`, `scan`,
+ *   `getIMU`, ...): it rejects, always with a {@link HalError}.
+ * - `notify()` serves `log`, which returns nothing and never throws: it returns the result for
+ *   the HAL to report a refusal through its logger.
+ * `isEmergencyStopped()` and `getSafetyStatus()` are exempt: they answer from cached state at any
+ * time (before `initialize()`, after `cleanup()`) and never throw, so a safety check never fails.
  */
 export class HalBoundary {
   readonly #options: HalBoundaryOptions;
@@ -136,6 +144,45 @@ export class HalBoundary {
         'EMERGENCY_STOPPED',
         `${call}: the emergency stop is latched; call safety.resetEmergencyStop() first`,
       );
+    }
+  }
+
+  /**
+   * Guards and validates a value-returning call, then runs it. Rejects with a HalError (anything
+   * else the body throws becomes a HARDWARE_ERROR that keeps it as its cause).
+   */
+  async read<N extends CallName, T>(
+    call: N,
+    args: unknown,
+    body: (params: CallParams<N>) => T | Promise<T>,
+  ): Promise<T> {
+    try {
+      this.checkAllowed(call);
+      const params = this.validate(call, args);
+      return await body(params);
+    } catch (thrown) {
+      throw toHalError(thrown);
+    }
+  }
+
+  /**
+   * Guards, validates and runs a call that returns nothing and must never throw (`log`).
+   * Returns its result; a refused call has not run its body.
+   */
+  notify<N extends CallName>(
+    call: N,
+    args: unknown,
+    body: (params: CallParams<N>) => void,
+  ): HALToolResult {
+    const started = this.#now();
+    try {
+      this.checkAllowed(call);
+      body(this.validate(call, args));
+      const finished = this.#now();
+      return successResult(this.#options.mode, finished, undefined, finished - started);
+    } catch (thrown) {
+      const finished = this.#now();
+      return failureResult(this.#options.mode, finished, thrown, finished - started);
     }
   }
 

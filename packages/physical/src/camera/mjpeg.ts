@@ -72,12 +72,18 @@ export class MjpegCamera {
     this.#loop = this.#run();
   }
 
-  /** Stops reading and closes the connection. */
+  /** Stops reading, closes the connection and cancels a pending reconnect; nothing is left running. */
   async stop(): Promise<void> {
     this.#running = false;
     this.#abort?.abort();
     for (const wake of this.#waiters) wake();
     await this.#loop;
+    this.#loop = undefined;
+  }
+
+  /** Whether the reader is running (between {@link start} and {@link stop}). */
+  get running(): boolean {
+    return this.#running;
   }
 
   /** The latest JPEG and when it arrived (ms, `performance.now()`), if any. */
@@ -87,10 +93,16 @@ export class MjpegCamera {
 
   /**
    * The latest frame as a `data:image/jpeg;base64,...` URL, waiting for one if there is none yet
-   * (or the last is stale). Rejects with TIMEOUT when none comes in time.
+   * (or the last is stale). Rejects with NOT_READY when the reader is not running (it never
+   * starts the stream itself: after {@link stop} nothing may open it again but {@link start}), and
+   * with TIMEOUT when no frame comes in time.
    */
   async captureFrame(): Promise<string> {
-    this.start();
+    if (!this.#running) {
+      throw new HalError('NOT_READY', 'the camera reader is not running; call start() first', {
+        details: { url: this.#options.url },
+      });
+    }
     const maxAge = this.#options.maxFrameAgeMs ?? 2000;
     const fresh = () => this.#latest !== undefined && performance.now() - this.#latest.at <= maxAge;
     if (!fresh()) {
@@ -162,7 +174,20 @@ export class MjpegCamera {
         this.#log.debug('stream failed', { url, error: this.#lastError });
       }
       if (!this.#running) break;
-      await new Promise((resolve) => setTimeout(resolve, this.#options.reconnectDelayMs ?? 1000));
+      await this.#pause(this.#options.reconnectDelayMs ?? 1000);
     }
+  }
+
+  /** Waits before a reconnect; {@link stop} cuts the wait short, so no timer outlives it. */
+  async #pause(ms: number): Promise<void> {
+    await new Promise<void>((resolve) => {
+      const wake = () => {
+        clearTimeout(timer);
+        this.#waiters.delete(wake);
+        resolve();
+      };
+      const timer = setTimeout(wake, ms);
+      this.#waiters.add(wake);
+    });
   }
 }

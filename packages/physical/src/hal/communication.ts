@@ -4,8 +4,9 @@ import type { ScopedLogger } from '../logger.js';
 import type { HalContext } from './context.js';
 
 /**
- * The robot's LED (`set_led`) and the HAL's log, written to the injected logger. The V1 robot has
- * no speaker: `speak` and `playSound` fail NOT_IMPLEMENTED.
+ * The robot's LED (`set_led`) and the HAL's log, written to the injected logger (a `log` call the
+ * boundary refuses records nothing and is reported there at warn level). The V1 robot has no
+ * speaker: `speak` and `playSound` fail NOT_IMPLEMENTED.
  */
 export function createCommunication(
   ctx: HalContext,
@@ -32,8 +33,14 @@ export function createCommunication(
         });
         return { led: reply.led };
       }),
-    log: (message, level = 'info') => {
-      robotLog[level](String(message), { deviceId });
+    log: (message, level) => {
+      const result = b.notify('log', { message, level }, (p) => {
+        robotLog[p.level ?? 'info'](p.message, { deviceId });
+      });
+      if (!result.success) {
+        // the scoped logger swallows its own failures, so this cannot throw either
+        robotLog.warn('log refused', { deviceId, code: result.code, error: result.error });
+      }
     },
   };
 }

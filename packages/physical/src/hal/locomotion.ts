@@ -54,6 +54,6 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         const reply = await ctx.command('stop', {});
         return { stopped: reply.stopped, pose: poseData(ctx) };
       }),
-    getPose: async (): Promise<Pose> => ctx.tracker.pose(),
+    getPose: () => b.read('getPose', {}, (): Pose => ctx.tracker.pose()),
   };
 }

@@ -10,10 +10,15 @@ export interface MoveToTarget {
   speed?: number | undefined;
 }
 
+/**
+ * m/s along the ground to wheel steps/s (undefined: top speed). The boundary has already refused
+ * speeds outside the robot's slowest..top speed; the clamp only absorbs rounding.
+ */
 function speedStepsPerS(ctx: HalContext, mPerS: number | undefined): number | undefined {
   if (mPerS === undefined) return undefined;
   const robot = ctx.robot();
-  return Math.max(1, Math.min(robot.maxSpeedStepsPerS, mPerS * 100 * stepsPerCm(robot)));
+  const slowest = Math.min(robot.minSpeedStepsPerS, robot.maxSpeedStepsPerS);
+  return Math.max(slowest, Math.min(robot.maxSpeedStepsPerS, mPerS * 100 * stepsPerCm(robot)));
 }
 
 /**

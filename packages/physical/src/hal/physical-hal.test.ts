@@ -195,6 +195,7 @@ describe('PhysicalHAL', () => {
       const hal = halOn(new MockRobot(), {
         logger: { log: (...entry) => entries.push(entry) },
       });
+      await hal.initialize();
       hal.communication.log('battery low', 'warn');
       expect(entries).toContainEqual([
         'warn',
@@ -202,6 +203,34 @@ describe('PhysicalHAL', () => {
         'battery low',
         { deviceId: 'cube-1' },
       ]);
+      await hal.cleanup();
+    });
+
+    it('never throws: a refused call records nothing and is reported at warn level', async () => {
+      const entries: unknown[][] = [];
+      const hal = halOn(new MockRobot(), {
+        logger: { log: (...entry) => entries.push(entry) },
+      });
+      expect(() => hal.communication.log('too early', 'info')).not.toThrow();
+      await hal.initialize();
+      expect(() => hal.communication.log('x', 'bogus' as 'info')).not.toThrow();
+      expect(() => hal.communication.log(42 as unknown as string)).not.toThrow();
+      const logged = entries.filter((e) => e[1] === 'hal:physical:log');
+      expect(logged.map((e) => [e[0], e[2]])).toEqual([
+        ['warn', 'log refused'],
+        ['warn', 'log refused'],
+        ['warn', 'log refused'],
+      ]);
+      expect(logged[0]?.[3]).toMatchObject({ code: 'NOT_READY' });
+      expect(logged[1]?.[3]).toMatchObject({
+        code: 'INVALID_PARAMETER',
+        error: expect.stringContaining('"level"'),
+      });
+      expect(logged[2]?.[3]).toMatchObject({
+        code: 'INVALID_PARAMETER',
+        error: expect.stringContaining('"message"'),
+      });
+      await hal.cleanup();
     });
   });
 
@@ -252,12 +281,27 @@ describe('PhysicalHAL', () => {
     });
   });
 
+  describe('config', () => {
+    it('refuses a link type it has no transport for, naming the supported ones', () => {
+      const build = () =>
+        new PhysicalHAL({
+          mode: 'physical',
+          deviceId: 'cube-1',
+          connection: { type: 'bluetooth' as 'serial' },
+        });
+      expect(build).toThrow(/"connection\.type".*one of "serial", "wifi".*got "bluetooth"/);
+      expect(build).toThrow(expect.objectContaining({ code: 'INVALID_PARAMETER' }));
+    });
+  });
+
   describe('#getDistanceSensors', () => {
     it('rejects with NOT_IMPLEMENTED: the V1 robot has no range sensors', async () => {
       const hal = halOn(new MockRobot());
+      await hal.initialize();
       await expect(hal.vision.getDistanceSensors()).rejects.toMatchObject({
         code: 'NOT_IMPLEMENTED',
       });
+      await hal.cleanup();
     });
   });
 });

@@ -9,7 +9,8 @@ const KEPT_LOGS = 1000;
 /**
  * The simulated robot's communication: `setLED` lights the robot's LED; `log`, and `speak` and
  * `playSound` with a speaker, emit `communication` events for a UI. `log` keeps the last
- * messages in `logs` (oldest first) and writes to `logger`, never the console.
+ * messages in `logs` (oldest first) and writes to `logger`, never the console; a `log` call the
+ * boundary refuses records nothing and is reported to `logger.warn`.
  */
 export function createCommunication(
   ctx: HalContext,
@@ -48,20 +49,25 @@ export function createCommunication(
         ctx.events.emit('communication', { type: 'led', ...led });
         return { led };
       }),
-    log: (message, level = 'info') => {
-      try {
-        const text = String(message);
-        logs.push(text);
+    log: (message, level) => {
+      const result = b.notify('log', { message, level }, (p) => {
+        const at = p.level ?? 'info';
+        logs.push(p.message);
         if (logs.length > KEPT_LOGS) logs.shift();
-        logger[level]?.(text);
+        logger[at]?.(p.message);
         ctx.events.emit('communication', {
           type: 'log',
-          message: text,
-          level,
+          message: p.message,
+          level: at,
           atMs: ctx.world.nowUs / 1000,
         });
-      } catch {
-        // log() never throws.
+      });
+      if (!result.success) {
+        try {
+          logger.warn?.(`log refused: ${result.error ?? result.code ?? 'unknown reason'}`);
+        } catch {
+          // log() never throws, even through a broken logger
+        }
       }
     },
   };

@@ -15,5 +15,4 @@ export interface HalContext {
   readonly clock: SimulationClock;
   readonly features: Required<SimulatedFeatures>;
   readonly options: SimulationHALOptions;
-  isReady(): boolean;
 }

@@ -17,11 +17,16 @@ function motionData(report: MotionReport, robot: SimRobot): Record<string, unkno
   };
 }
 
-/** m/s along the ground to master-wheel steps/s, within 1..top speed (undefined: top speed). */
+/**
+ * m/s along the ground to master-wheel steps/s (undefined: top speed). The boundary has already
+ * refused speeds outside the robot's slowest..top speed; the clamp only absorbs rounding.
+ */
 function wheelSpeed(robot: SimRobot, speedMPerS: number | undefined): number | undefined {
   if (speedMPerS === undefined) return undefined;
   const config = robot.config;
-  return Math.max(1, Math.min(config.maxSpeedStepsPerS, speedMPerS * 100 * stepsPerCm(config)));
+  const slowest = Math.min(config.minSpeedStepsPerS, config.maxSpeedStepsPerS);
+  const sps = speedMPerS * 100 * stepsPerCm(config);
+  return Math.max(slowest, Math.min(config.maxSpeedStepsPerS, sps));
 }
 
 /**
@@ -107,14 +112,15 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         const stopped = ctx.robot().stop();
         return { stopped, pose: poseData(ctx.robot()) };
       }),
-    getPose: async (): Promise<Pose> => {
-      const r = ctx.robot();
-      const v = r.velocity();
-      return {
-        position: { x: r.x, y: r.y, z: 0 },
-        rotation: { yaw: r.yaw, pitch: 0, roll: 0 },
-        velocity: { linear: v.linear, angular: v.angular },
-      };
-    },
+    getPose: () =>
+      b.read('getPose', {}, (): Pose => {
+        const r = ctx.robot();
+        const v = r.velocity();
+        return {
+          position: { x: r.x, y: r.y, z: 0 },
+          rotation: { yaw: r.yaw, pitch: 0, roll: 0 },
+          velocity: { linear: v.linear, angular: v.angular },
+        };
+      }),
   };
 }

@@ -224,6 +224,33 @@ describe('SimulationHAL', () => {
       expect(hal.robot.led).toEqual({ r: 0, g: 255, b: 0, pattern: 'blink' });
       expect(hal.logs).toEqual(['hello']);
     });
+
+    it('records nothing for a refused log call, reports it to the logger and never throws', async () => {
+      const warnings: string[] = [];
+      const ignore = () => undefined;
+      const logger = {
+        debug: ignore,
+        info: ignore,
+        error: ignore,
+        warn: (m: string) => warnings.push(m),
+      };
+      const hal = new SimulationHAL({ logger });
+      const seen: CommunicationEvent[] = [];
+      hal.events.on('communication', (e) => seen.push(e));
+      expect(() => hal.communication.log('too early')).not.toThrow();
+      await ready(hal);
+      expect(() => hal.communication.log('x', 'bogus' as 'info')).not.toThrow();
+      expect(() => hal.communication.log({ toString: null } as unknown as string)).not.toThrow();
+      hal.communication.log('kept', 'warn');
+      expect(hal.logs).toEqual(['kept']);
+      expect(seen).toHaveLength(1);
+      expect(warnings).toEqual([
+        expect.stringMatching(/^log refused: log: the HAL is not initialised/),
+        expect.stringContaining('"level" must be one of'),
+        expect.stringContaining('"message"'),
+        'kept',
+      ]);
+    });
   });
 
   describe('many robots', () => {

@@ -71,7 +71,6 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       clock: this.#clock,
       features: this.#features,
       options,
-      isReady: () => this.#ready,
     };
     this.locomotion = createLocomotion(context);
     this.vision = createVision(

@@ -18,47 +18,43 @@ export const softwareFrameSource =
  * IMU, each present only when the robot has the feature (else NOT_IMPLEMENTED); no line sensors.
  */
 export function createVision(ctx: HalContext, frameSource: FrameSource): VisionInterface {
-  const lacks = (what: string, capability: string) =>
-    new HalError('NOT_IMPLEMENTED', `the simulated robot has no ${what}`, {
+  const lacks = (what: string, capability: string): never => {
+    throw new HalError('NOT_IMPLEMENTED', `the simulated robot has no ${what}`, {
       details: { capability },
     });
-  const requireReady = (call: string) => {
-    if (!ctx.isReady()) {
-      throw new HalError(
-        'NOT_READY',
-        `${call}: the HAL is not initialised; call initialize() first`,
-      );
-    }
   };
+  const b = ctx.boundary;
   const { features, options } = ctx;
   return {
-    captureFrame: async () => {
-      requireReady('captureFrame');
-      if (!features.camera) throw lacks('camera', CAPABILITIES.camera);
-      return frameSource(ctx.world, ctx.robot());
-    },
-    scan: async (mode = 'quick') => {
-      requireReady('scan');
-      if (!features.rangeSensors) throw lacks('range sensors', CAPABILITIES.rangeSensors);
-      return scanAround(ctx.world, ctx.robot(), mode, options.rangeSensors);
-    },
-    getDistanceSensors: async () => {
-      requireReady('getDistanceSensors');
-      if (!features.rangeSensors) throw lacks('range sensors', CAPABILITIES.rangeSensors);
-      return readDistanceSensors(ctx.world, ctx.robot(), options.rangeSensors);
-    },
-    getLineSensors: async () => {
-      throw lacks('line sensors', CAPABILITIES.lineSensors);
-    },
-    getIMU: async () => {
-      requireReady('getIMU');
-      if (features.imu) return readImu(ctx.robot());
-      return {
-        acceleration: { x: 0, y: 0, z: 0 },
-        gyroscope: { x: 0, y: 0, z: ctx.robot().velocity().angular },
-        heading: ctx.robot().yaw,
-        source: 'odometry',
-      };
-    },
+    captureFrame: () =>
+      b.read('captureFrame', {}, () =>
+        features.camera
+          ? frameSource(ctx.world, ctx.robot())
+          : lacks('camera', CAPABILITIES.camera),
+      ),
+    scan: (mode) =>
+      b.read('scan', { mode }, (p) =>
+        features.rangeSensors
+          ? scanAround(ctx.world, ctx.robot(), p.mode ?? 'quick', options.rangeSensors)
+          : lacks('range sensors', CAPABILITIES.rangeSensors),
+      ),
+    getDistanceSensors: () =>
+      b.read('getDistanceSensors', {}, () =>
+        features.rangeSensors
+          ? readDistanceSensors(ctx.world, ctx.robot(), options.rangeSensors)
+          : lacks('range sensors', CAPABILITIES.rangeSensors),
+      ),
+    getLineSensors: () =>
+      b.read('getLineSensors', {}, () => lacks('line sensors', CAPABILITIES.lineSensors)),
+    getIMU: () =>
+      b.read('getIMU', {}, () => {
+        if (features.imu) return readImu(ctx.robot());
+        return {
+          acceleration: { x: 0, y: 0, z: 0 },
+          gyroscope: { x: 0, y: 0, z: ctx.robot().velocity().angular },
+          heading: ctx.robot().yaw,
+          source: 'odometry' as const,
+        };
+      }),
   };
 }

@@ -50,6 +50,41 @@ describe('SimRobot', () => {
       expect(robot.rightSteps).toBe(217_299);
     });
 
+    it('refuses NaN and Infinity before changing anything, and later moves and step-limit refusals behave as if they never came', () => {
+      const control = new SimRobot({ id: 'control' });
+      const robot = new SimRobot({ id: 'r' });
+      for (const r of [control, robot]) {
+        r.moveCm(10, 10); // carries 0.99 of a step per wheel
+        runToEnd(r);
+      }
+      for (const bad of [
+        () => robot.moveCm(Number.NaN, 5),
+        () => robot.moveCm(5, Number.POSITIVE_INFINITY),
+        () => robot.rotateDeg(Number.NaN),
+        () => robot.drive(Number.NaN, 100),
+        () => robot.drive(100, 100, Number.POSITIVE_INFINITY),
+      ]) {
+        const error = thrown(bad);
+        expect(isHalError(error) && error.code).toBe('INVALID_PARAMETER');
+      }
+      expect(robot.running).toBe(false);
+      expect(robot.emergencyStopped).toBe(false);
+      expect(robot.trips).toBe(0);
+      expect(robot.leftSteps).toBe(control.leftSteps);
+
+      for (const r of [control, robot]) {
+        const error = thrown(() => r.moveCm(1e6, 1e6));
+        expect(isHalError(error) && error.code).toBe('RANGE_EXCEEDED');
+        expect(r.resetEmergencyStop()).toBe(true);
+      }
+      const next = robot.moveCm(10, 10).report;
+      expect(next.plannedLeft).toBe(control.moveCm(10, 10).report.plannedLeft);
+      expect(next.plannedLeft).toBe(2173); // the carry survived the refusals
+      runToEnd(robot);
+      runToEnd(control);
+      expect(robot.leftSteps).toBe(control.leftSteps);
+    });
+
     it('forgets the carry on hello, as on a new session', () => {
       const robot = new SimRobot({ id: 'r' });
       robot.moveCm(10, 10); // 2172.99 steps: issues 2172, carries 0.99

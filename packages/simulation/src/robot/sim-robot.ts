@@ -6,7 +6,7 @@ import { MotionExecutor } from './motion-executor.js';
 import type { MotionHandle, MotionReport } from './motion-report.js';
 import { RobotSafety } from './robot-safety.js';
 import type { SafetyTrip } from './robot-safety.js';
-import { clampDriveSpeeds, clampSpeed } from './speed-limits.js';
+import { clampDriveSpeeds, clampSpeed, requireFinite } from './speed-limits.js';
 import { WheelAccumulator } from './wheel-accumulator.js';
 
 /*
@@ -182,8 +182,14 @@ export class SimRobot {
     );
   }
 
-  /** `move_cm`: a distance per wheel through the accumulators (equal: straight; else an arc). */
+  /**
+   * `move_cm`: a distance per wheel through the accumulators (equal: straight; else an arc).
+   * Every argument is checked before anything changes: a refused command leaves the
+   * accumulators, the motion and the safety state as they were.
+   */
   moveCm(leftCm: number, rightCm: number, speed?: number): MotionHandle {
+    requireFinite('left_cm', leftCm);
+    requireFinite('right_cm', rightCm);
     this.touchHost();
     this.#safety.refuseWhileLatched();
     const used = clampSpeed(speed, this.#config.maxSpeedStepsPerS);
@@ -218,6 +224,9 @@ export class SimRobot {
    * a stop, a new motion, an e-stop or the host timeout. Both 0: stops and returns undefined.
    */
   drive(leftSps: number, rightSps: number, durationMs?: number): MotionHandle | undefined {
+    requireFinite('left_sps', leftSps);
+    requireFinite('right_sps', rightSps);
+    if (durationMs !== undefined) requireFinite('duration_ms', durationMs, { positive: true });
     this.touchHost();
     this.#safety.refuseWhileLatched();
     const { left, right, clamped } = clampDriveSpeeds(

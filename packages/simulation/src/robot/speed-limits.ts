@@ -1,5 +1,27 @@
 import { HalError } from '@hal/types';
 
+/**
+ * Throws INVALID_PARAMETER unless `value` is a finite number (and > 0 when `positive`): the
+ * firmware's JSON reader refuses non-finite numbers, so the simulated robot does too, before it
+ * changes anything.
+ */
+export function requireFinite(
+  field: string,
+  value: number,
+  options: { positive?: boolean } = {},
+): void {
+  if (typeof value !== 'number' || !Number.isFinite(value)) {
+    throw new HalError('INVALID_PARAMETER', `"${field}" must be a finite number, got ${value}`, {
+      details: { field, value: String(value) },
+    });
+  }
+  if (options.positive === true && !(value > 0)) {
+    throw new HalError('RANGE_EXCEEDED', `"${field}" must be greater than 0, got ${value}`, {
+      details: { field, min: 0, value },
+    });
+  }
+}
+
 /** Wheel speed limits the firmware applies to a requested cruise speed, steps/s. */
 export function clampSpeed(
   requested: number | undefined,

@@ -3,14 +3,22 @@ import {
   maxDistancePerCommandCm,
   maxLinearSpeedMPerS,
   maxRotationPerCommandDeg,
+  minLinearSpeedMPerS,
   V1_ROBOT,
 } from '../robot-config.js';
 import type { RobotConfig } from '../robot-config.js';
+import { createReadSchemas } from './reads.js';
 
 /** Rounds a limit down so the number quoted to users is never above the true limit. */
 function floorTo(value: number, decimals: number): number {
   const scale = 10 ** decimals;
   return Math.floor(value * scale) / scale;
+}
+
+/** Rounds a lower limit up so the number quoted to users is never below the true limit. */
+function ceilTo(value: number, decimals: number): number {
+  const scale = 10 ** decimals;
+  return Math.ceil(value * scale) / scale;
 }
 
 /**
@@ -21,6 +29,7 @@ export function createCallSchemas(config: RobotConfig) {
   const maxCm = floorTo(maxDistancePerCommandCm(config), 1);
   const maxDeg = floorTo(maxRotationPerCommandDeg(config), 1);
   const maxSpeed = floorTo(maxLinearSpeedMPerS(config), 4);
+  const minSpeed = Math.min(ceilTo(minLinearSpeedMPerS(config), 4), maxSpeed);
   const extent = config.workspaceHalfExtentM;
   const power = (wheel: string) =>
     z
@@ -35,6 +44,7 @@ export function createCallSchemas(config: RobotConfig) {
     .describe(`Distance, cm, greater than 0 and at most ${maxCm} (one command's limit)`);
 
   return {
+    ...createReadSchemas(),
     drive: z
       .object({
         left: power('Left'),
@@ -56,10 +66,12 @@ export function createCallSchemas(config: RobotConfig) {
         z: z.number().describe('Target z, metres (ignored by wheeled robots)'),
         speed: z
           .number()
-          .gt(0)
+          .min(minSpeed)
           .max(maxSpeed)
           .optional()
-          .describe(`Cruise speed, m/s, greater than 0 and at most ${maxSpeed}; default top speed`),
+          .describe(
+            `Cruise speed, m/s, ${minSpeed}..${maxSpeed} (the robot's slowest and top speeds); default top speed`,
+          ),
       })
       .describe('Turn toward a point and drive straight to it (REP-103: x forward, y left)'),
     rotate: z

@@ -7,6 +7,9 @@ import { DeviceInfoSchema, PoseSchema, SafetyStatusSchema } from '../pose.js';
 import type { Pose } from '../pose.js';
 import { HALToolResultSchema } from '../result.js';
 import type { HALToolResult } from '../result.js';
+import { describeBoundaryContract } from './contract-boundary.js';
+import { describeCapabilityContract } from './contract-capabilities.js';
+import { describeLifecycleContract } from './contract-lifecycle.js';
 
 /** How the contract suite gets, and gets rid of, the HAL under test. */
 export interface HalContractOptions {
@@ -314,5 +317,10 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         }
       });
     });
+
+    const groups = { hal: () => hal, ready, timeout };
+    describeBoundaryContract(groups);
+    describeLifecycleContract(groups);
+    describeCapabilityContract(groups);
   });
 }

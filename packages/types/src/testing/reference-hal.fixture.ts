@@ -10,7 +10,6 @@ import type {
   VisionInterface,
 } from '../interfaces.js';
 import type { DeviceInfo, Pose, SafetyStatus } from '../pose.js';
-import type { HALToolResult } from '../result.js';
 import { maxLinearSpeedMPerS, V1_ROBOT } from '../robot-config.js';
 import { HalBoundary } from '../validation.js';
 
@@ -27,6 +26,8 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
   readonly safety: SafetyInterface;
   /** Every message passed to communication.log, for tests. */
   readonly logged: string[] = [];
+  /** Why each refused communication.log call was refused, for tests. */
+  readonly refusedLogs: string[] = [];
 
   #ready = false;
   #estop = false;
@@ -72,37 +73,39 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
       moveBackward: (distanceCm) =>
         b.call('moveBackward', { distanceCm }, async (p) => forward(-p.distanceCm)),
       stop: () => b.call('stop', {}, async () => undefined),
-      getPose: async (): Promise<Pose> => ({
-        position: { x: this.#x, y: this.#y, z: 0 },
-        rotation: { yaw: this.#yaw, pitch: 0, roll: 0 },
-        velocity: { linear: 0, angular: 0 },
-      }),
+      getPose: () =>
+        b.read('getPose', {}, (): Pose => ({
+          position: { x: this.#x, y: this.#y, z: 0 },
+          rotation: { yaw: this.#yaw, pitch: 0, roll: 0 },
+          velocity: { linear: 0, angular: 0 },
+        })),
     };
-    const lacks = (what: string) => () =>
-      Promise.reject(new HalError('NOT_IMPLEMENTED', `the reference robot has no ${what}`));
+    const lacks = (what: string): never => {
+      throw new HalError('NOT_IMPLEMENTED', `the reference robot has no ${what}`);
+    };
     this.vision = {
-      captureFrame: lacks('camera'),
-      scan: lacks('range sensors'),
-      getDistanceSensors: lacks('range sensors'),
-      getLineSensors: lacks('line sensors'),
-      getIMU: async () => ({
-        acceleration: { x: 0, y: 0, z: 0 },
-        gyroscope: { x: 0, y: 0, z: 0 },
-        heading: this.#yaw,
-        source: 'odometry' as const,
-      }),
+      captureFrame: () => b.read('captureFrame', {}, () => lacks('camera')),
+      scan: (mode) => b.read('scan', { mode }, () => lacks('range sensors')),
+      getDistanceSensors: () => b.read('getDistanceSensors', {}, () => lacks('range sensors')),
+      getLineSensors: () => b.read('getLineSensors', {}, () => lacks('line sensors')),
+      getIMU: () =>
+        b.read('getIMU', {}, () => ({
+          acceleration: { x: 0, y: 0, z: 0 },
+          gyroscope: { x: 0, y: 0, z: 0 },
+          heading: this.#yaw,
+          source: 'odometry' as const,
+        })),
     };
-    const notImplemented = (what: string): Promise<HALToolResult> =>
-      b.call('stop', {}, async () => {
-        throw new HalError('NOT_IMPLEMENTED', `the reference robot has no ${what}`);
-      });
     this.communication = {
-      speak: () => notImplemented('speaker'),
-      playSound: () => notImplemented('speaker'),
+      speak: (text, urgency) => b.call('speak', { text, urgency }, async () => lacks('speaker')),
+      playSound: (soundId) => b.call('playSound', { soundId }, async () => lacks('speaker')),
       setLED: (r, g, bl, pattern) =>
         b.call('setLED', { r, g, b: bl, pattern }, async () => undefined),
-      log: (message) => {
-        this.logged.push(message);
+      log: (message, level) => {
+        const result = b.notify('log', { message, level }, (p) => {
+          this.logged.push(p.message);
+        });
+        if (!result.success) this.refusedLogs.push(result.error ?? '');
       },
     };
     this.safety = {
