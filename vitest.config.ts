@@ -17,6 +17,10 @@ export default defineConfig({
       })),
       {
         extends: true as const,
+        test: { name: 'bench', include: ['bench/**/*.test.ts'] },
+      },
+      {
+        extends: true as const,
         test: {
           name: 'tests',
           include: ['tests/**/*.test.ts'],

@@ -5,6 +5,7 @@
 // library needs a fresh grid per search, so its grid.clone() is done outside the timed part.
 import { AStarSearch, ObstacleMap } from '@hal/navigation';
 import PF from 'pathfinding';
+import { reportFigure, reportPoint } from './report/figures.js';
 
 function seededRandom(seed: number): () => number {
   let state = seed >>> 0;
@@ -23,6 +24,8 @@ interface Case {
   blocked: number[][];
   start: [number, number];
   goal: [number, number];
+  /** Set on the grids of the size series, plotted as time against grid cells. */
+  plot?: { kind: string; cells: number };
 }
 
 function emptyGrid(size: number): number[][] {
@@ -135,7 +138,16 @@ const cases: Case[] = [
     blocked: randomGrid(200, 0.2, 2026),
     start: [0, 0],
     goal: [199, 199],
+    plot: { kind: 'random 20% obstacles', cells: 200 * 200 },
   },
+  // the size series: random 20% obstacles, corner to corner
+  ...[300, 400, 500].map((size): Case => ({
+    name: `${size}x${size} 20% obstacles (series)`,
+    blocked: connectedRandomGrid(size, 0.2, 7 + size),
+    start: [0, 0],
+    goal: [size - 1, size - 1],
+    plot: { kind: 'random 20% obstacles', cells: size * size },
+  })),
   {
     name: '200x200 maze',
     blocked: mazeGrid(mazeSize, 11),
@@ -196,6 +208,33 @@ for (const c of cases) {
   const a = median(oursMs);
   const b = median(theirsMs);
   slowest = Math.min(slowest, b / a);
+  reportFigure({
+    bench: 'astar',
+    name: `A* search, ${c.name} (${ours.status}, same path cost: ${agree ? 'yes' : 'NO'})`,
+    value: a,
+    unit: 'ms',
+    better: 'lower',
+    alternative: { name: 'pathfinding AStarFinder', value: b },
+    goal: '>= 2x faster, equal path cost',
+  });
+  if (c.plot !== undefined) {
+    for (const [series, value] of [
+      ['@hal/navigation AStarSearch', a],
+      ['pathfinding AStarFinder', b],
+    ] as const) {
+      reportPoint({
+        plot: 'astar-grid-size',
+        title: `A* time by grid size (${c.plot.kind})`,
+        series,
+        x: c.plot.cells,
+        y: value,
+        xLabel: 'grid cells',
+        yLabel: 'median ms per search',
+        logX: true,
+        logY: true,
+      });
+    }
+  }
   rows.push([
     c.name,
     ours.status,

@@ -109,6 +109,34 @@ describe('FrameDecoder', () => {
     expect(found.map((e) => e.frame.seq)).toEqual([valid[1]!.decoded!.seq]);
   });
 
+  it('keeps frame payloads intact when the caller reuses its chunk buffer', () => {
+    const decoder = new FrameDecoder();
+    const chunk = new Uint8Array(golden[0]!.length + 5);
+    chunk.set(golden[0]!, 0);
+    chunk.set(golden[1]!.subarray(0, 5), golden[0]!.length);
+    const first = frames(decoder.push(chunk));
+    const expected = first[0]!.frame.payload.slice();
+    chunk.fill(0xa5); // a serial binding may hand out the same memory again
+    const second = frames(decoder.push(golden[1]!.subarray(5)));
+    expect(first[0]!.frame.payload).toEqual(expected);
+    expect(second[0]!.frame.seq).toBe(valid[1]!.decoded!.seq);
+  });
+
+  it('holds no more than the unfinished frame between pushes', () => {
+    const decoder = new FrameDecoder();
+    const stream = new Uint8Array(golden.reduce((n, f) => n + f.length, 0));
+    let at = 0;
+    for (const frame of golden) {
+      stream.set(frame, at);
+      at += frame.length;
+    }
+    const cut = golden[0]!.length + 3;
+    decoder.push(stream.subarray(0, cut));
+    expect(decoder.pending).toBe(3);
+    decoder.push(stream.subarray(cut));
+    expect(decoder.pending).toBe(0);
+  });
+
   it('abandons a partial frame and finds a frame that starts inside it', () => {
     const decoder = new FrameDecoder();
     expect(frames(decoder.push(golden[0]!.subarray(0, 20)))).toEqual([]);

@@ -72,14 +72,18 @@ export type FrameEvent =
   | { kind: 'oversize'; length: number };
 
 /**
- * Checks the header at the start of `bytes`. Returns the payload length, an error, or undefined
- * when more bytes are needed.
+ * Checks the header at `bytes[at]` (whose sync is already found). Returns the payload length, an
+ * error, or undefined when more bytes are needed.
  */
-function checkHeader(bytes: Uint8Array): number | FrameError | undefined {
-  if (bytes.length < HEADER_BYTES) return undefined;
-  const type = bytes[2];
-  const len = (bytes[5] ?? 0) | ((bytes[6] ?? 0) << 8);
-  const inv = (bytes[7] ?? 0) | ((bytes[8] ?? 0) << 8);
+function checkHeader(
+  bytes: Uint8Array,
+  at = 0,
+  to = bytes.length,
+): number | FrameError | undefined {
+  if (to - at < HEADER_BYTES) return undefined;
+  const type = bytes[at + 2];
+  const len = (bytes[at + 5] ?? 0) | ((bytes[at + 6] ?? 0) << 8);
+  const inv = (bytes[at + 7] ?? 0) | ((bytes[at + 8] ?? 0) << 8);
   if ((len ^ 0xffff) !== inv) return 'bad_length';
   if (type !== FRAME_DATA && type !== FRAME_ACK) return 'bad_type';
   if (type === FRAME_ACK && len !== 0) return 'bad_length';
@@ -120,77 +124,128 @@ export function decodeFrame(
  * and the errors it found. After garbage, a bad header or a bad CRC it drops one byte and hunts
  * for the next sync, so the link resynchronises by itself. `abandon()` drops a partial frame
  * (call it when no byte has arrived for 200 ms).
+ *
+ * It parses each chunk where it lies: only the unfinished tail of a chunk (at most one frame) is
+ * copied into a reused buffer, so the cost per byte is that of the one-shot {@link decodeFrame}.
  */
 export class FrameDecoder {
-  #buffer = new Uint8Array(0);
+  #held = new Uint8Array(256);
+  #start = 0;
+  #end = 0;
 
   /** Bytes held while waiting for the rest of a frame. */
   get pending(): number {
-    return this.#buffer.length;
+    return this.#end - this.#start;
   }
 
   push(chunk: Uint8Array): FrameEvent[] {
-    const joined = new Uint8Array(this.#buffer.length + chunk.length);
-    joined.set(this.#buffer, 0);
-    joined.set(chunk, this.#buffer.length);
-    let buf = joined;
     const events: FrameEvent[] = [];
-    let garbage = 0;
-    const flushGarbage = () => {
-      if (garbage > 0) events.push({ kind: 'garbage', dropped: garbage });
-      garbage = 0;
-    };
-    for (;;) {
-      const sync = findSync(buf);
-      if (sync < 0) {
-        // keep a trailing 0xA5: it may be the start of the next sync
-        const keep = buf.length > 0 && buf[buf.length - 1] === SYNC_0 ? 1 : 0;
-        garbage += buf.length - keep;
-        buf = buf.subarray(buf.length - keep);
-        break;
-      }
-      garbage += sync;
-      buf = buf.subarray(sync);
-      const len = checkHeader(buf);
-      if (len === undefined) break;
-      if (typeof len === 'string') {
-        flushGarbage();
-        if (len === 'oversize') {
-          events.push({ kind: 'oversize', length: (buf[5] ?? 0) | ((buf[6] ?? 0) << 8) });
-        }
-        events.push({ kind: 'error', error: len, dropped: 1 });
-        buf = buf.subarray(1);
-        continue;
-      }
-      const total = HEADER_BYTES + len + CRC_BYTES;
-      if (buf.length < total) break;
-      flushGarbage();
-      const result = decodeFrame(buf.subarray(0, total));
-      if (result.ok) {
-        events.push({ kind: 'frame', frame: result.frame });
-        buf = buf.subarray(total);
-      } else {
-        events.push({ kind: 'error', error: result.error, dropped: 1 });
-        buf = buf.subarray(1);
-      }
+    if (this.#start === this.#end) {
+      const used = scan(chunk, 0, chunk.length, events);
+      this.#start = 0;
+      this.#end = 0;
+      this.#append(chunk.subarray(used));
+    } else {
+      this.#append(chunk);
+      this.#start = scan(this.#held, this.#start, this.#end, events);
     }
-    flushGarbage();
-    this.#buffer = buf.slice();
+    if (this.#start === this.#end) this.#start = this.#end = 0;
     return events;
   }
 
   /** Drops a partial frame (no byte for 200 ms), resuming the hunt one byte later. */
   abandon(): FrameEvent[] {
-    if (this.#buffer.length === 0) return [];
-    const rest = this.#buffer.subarray(1);
-    this.#buffer = new Uint8Array(0);
-    return [{ kind: 'error', error: 'incomplete', dropped: 1 }, ...this.push(rest.slice())];
+    if (this.#start === this.#end) return [];
+    const rest = this.#held.slice(this.#start + 1, this.#end);
+    this.#start = this.#end = 0;
+    return [{ kind: 'error', error: 'incomplete', dropped: 1 }, ...this.push(rest)];
+  }
+
+  #append(bytes: Uint8Array): void {
+    if (bytes.length === 0) return;
+    if (this.#held.length - this.#end < bytes.length) {
+      const pending = this.#end - this.#start;
+      const target =
+        pending + bytes.length <= this.#held.length
+          ? this.#held
+          : new Uint8Array(Math.max(this.#held.length * 2, pending + bytes.length));
+      target.set(this.#held.subarray(this.#start, this.#end), 0);
+      this.#held = target;
+      this.#start = 0;
+      this.#end = pending;
+    }
+    this.#held.set(bytes, this.#end);
+    this.#end += bytes.length;
   }
 }
 
-function findSync(buf: Uint8Array): number {
-  for (let i = 0; i + 1 < buf.length; i++) {
-    if (buf[i] === SYNC_0 && buf[i + 1] === SYNC_1) return i;
+/**
+ * Finds the frames in `bytes[from, to)`, appending what it found to `events`; returns where the
+ * bytes it could not finish with (a partial frame, or a trailing 0xA5) begin.
+ */
+function scan(bytes: Uint8Array, from: number, to: number, events: FrameEvent[]): number {
+  let at = from;
+  let garbage = 0;
+  while (at < to) {
+    const sync = bytes.indexOf(SYNC_0, at);
+    if (sync < 0 || sync >= to) {
+      garbage += to - at;
+      at = to;
+      break;
+    }
+    if (sync + 1 === to) {
+      // keep a trailing 0xA5: it may be the start of the next sync
+      garbage += sync - at;
+      at = sync;
+      break;
+    }
+    if (bytes[sync + 1] !== SYNC_1) {
+      garbage += sync + 1 - at;
+      at = sync + 1;
+      continue;
+    }
+    garbage += sync - at;
+    at = sync;
+    const len = checkHeader(bytes, at, to);
+    if (len === undefined) break;
+    if (typeof len === 'string') {
+      garbage = flushGarbage(events, garbage);
+      if (len === 'oversize') {
+        events.push({
+          kind: 'oversize',
+          length: (bytes[at + 5] ?? 0) | ((bytes[at + 6] ?? 0) << 8),
+        });
+      }
+      events.push({ kind: 'error', error: len, dropped: 1 });
+      at += 1;
+      continue;
+    }
+    const total = HEADER_BYTES + len + CRC_BYTES;
+    if (to - at < total) break;
+    garbage = flushGarbage(events, garbage);
+    const crcAt = at + total - CRC_BYTES;
+    const crc = ((bytes[crcAt] ?? 0) << 8) | (bytes[crcAt + 1] ?? 0);
+    if (crc16(bytes.subarray(at, crcAt)) !== crc) {
+      events.push({ kind: 'error', error: 'bad_crc', dropped: 1 });
+      at += 1;
+      continue;
+    }
+    events.push({
+      kind: 'frame',
+      frame: {
+        type: bytes[at + 2] === FRAME_DATA ? 'data' : 'ack',
+        seq: (bytes[at + 3] ?? 0) | ((bytes[at + 4] ?? 0) << 8),
+        payload: bytes.slice(at + HEADER_BYTES, crcAt),
+      },
+    });
+    at += total;
   }
-  return -1;
+  flushGarbage(events, garbage);
+  return at;
+}
+
+/** Reports `garbage` dropped bytes, if any; returns the new count (0). */
+function flushGarbage(events: FrameEvent[], garbage: number): number {
+  if (garbage > 0) events.push({ kind: 'garbage', dropped: garbage });
+  return 0;
 }

@@ -189,7 +189,7 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
         target.on('data', (chunk) => {
           if (target !== port) return;
           clearTimeout(partialTimer);
-          handle(decoder.push(new Uint8Array(chunk)));
+          handle(decoder.push(chunk)); // a Buffer is a Uint8Array: no copy
           if (decoder.pending > 0) {
             partialTimer = setTimeout(function abandon() {
               handle(decoder.abandon());

@@ -1,0 +1,111 @@
+import { mkdtemp, readFile, readdir, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterEach, describe, expect, it } from 'vitest';
+import { collectRecords } from './collect.js';
+import { BENCH_JSON_PREFIX, percentile } from './figures.js';
+import type { Figure } from './figures.js';
+import { figuresTable } from './markdown.js';
+import { writeReport } from './write.js';
+
+const latency: Figure = {
+  kind: 'figure',
+  bench: 'physical',
+  name: 'UDP round trip p99',
+  value: 120,
+  unit: 'us',
+  better: 'lower',
+  alternative: { name: 'raw dgram', value: 60 },
+  goal: '<= 1.3x raw',
+};
+
+describe('collectRecords', () => {
+  it('keeps the records, leaves the human lines, and reports lines that are not valid records', () => {
+    const output = [
+      'UDP round trip:',
+      BENCH_JSON_PREFIX + JSON.stringify(latency),
+      BENCH_JSON_PREFIX + '{"kind":"figure"', // cut short
+      BENCH_JSON_PREFIX + JSON.stringify({ ...latency, value: 'fast' }),
+      BENCH_JSON_PREFIX +
+        JSON.stringify({
+          kind: 'point',
+          plot: 'rtt',
+          title: 't',
+          series: 'raw',
+          x: 1,
+          y: 2,
+          xLabel: 'x',
+          yLabel: 'y',
+        }),
+    ].join('\n');
+    const { records, malformed } = collectRecords(output);
+    expect(records.map((r) => r.kind)).toEqual(['figure', 'point']);
+    expect(malformed).toHaveLength(2);
+  });
+});
+
+describe('figuresTable', () => {
+  it('gives ours / alternative and marks a figure that is worse than its alternative', () => {
+    const table = figuresTable([
+      latency,
+      {
+        ...latency,
+        name: 'frames/s',
+        unit: 'frames/s',
+        better: 'higher',
+        value: 300,
+        alternative: { name: 'one-shot', value: 100 },
+      },
+    ]);
+    expect(table).toContain(
+      '| physical | UDP round trip p99 | 120 us | raw dgram | 60 us | 2.00x (lower is better) ⚠ |',
+    );
+    expect(table).toContain('| 3.00x (higher is better) |');
+  });
+});
+
+describe('percentile', () => {
+  it('takes the nearest rank', () => {
+    const samples = Array.from({ length: 100 }, (_, i) => 100 - i);
+    expect(percentile(samples, 50)).toBe(50);
+    expect(percentile(samples, 99)).toBe(99);
+    expect(percentile(samples, 100)).toBe(100);
+  });
+});
+
+describe('writeReport', () => {
+  let dir: string | undefined;
+  afterEach(async () => {
+    if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  });
+
+  it('writes the figures table, the machine and one SVG per plot', async () => {
+    dir = await mkdtemp(join(tmpdir(), 'bench-report-'));
+    const points = [10, 100, 1000].map((x) => ({
+      kind: 'point' as const,
+      plot: 'sim-scaling',
+      title: 'Simulation speed by robot count',
+      series: 'event stepping',
+      x,
+      y: 1e6 / x,
+      xLabel: 'robots',
+      yLabel: 'robot-seconds per second',
+      logX: true,
+      logY: true,
+    }));
+    const outcome = await writeReport(dir, [
+      { bench: 'physical', ok: true, records: [latency, ...points], malformed: [], seconds: 3 },
+      { bench: 'broken', ok: false, records: [], malformed: [], seconds: 1 },
+    ]);
+    expect(outcome).toBe('1 benchmark(s) failed');
+    const readme = await readFile(join(dir, 'README.md'), 'utf8');
+    expect(readme).toContain('UDP round trip p99');
+    expect(readme).toContain(`Node ${process.version}`);
+    expect(readme).toContain('![sim-scaling](sim-scaling.svg)');
+    expect(readme).toContain('| broken | FAILED |');
+    expect(await readdir(dir)).toContain('sim-scaling.svg');
+    const svg = await readFile(join(dir, 'sim-scaling.svg'), 'utf8');
+    expect(svg.startsWith('<svg')).toBe(true);
+    expect(svg).toContain('Simulation speed by robot count');
+  });
+});
