@@ -144,5 +144,5 @@ describe('apps/sim-demo in Chromium', () => {
     mkdirSync(artifacts, { recursive: true });
     await page.screenshot({ path: join(artifacts, 'sim-demo.png') });
     expect(problems).toEqual([]);
-  }, 90_000); // typically 20-30 s; the margin is for a loaded machine
+  }, 180_000); // typically 20-30 s alone; 75-90 s seen on a 2-core machine under full load
 });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { HalError } from '@hal/types';
-import seed from '../../../../shared/vectors/seed-figures.json' with { type: 'json' };
+import seed from '../../../tests/vectors/seed-figures.json' with { type: 'json' };
 import { calculateMoveDuration, toMicros, TrapezoidalProfile, VelocityProfile } from './profile.js';
 
 describe('calculateMoveDuration', () => {

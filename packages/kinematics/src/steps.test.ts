@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { HalError, robotConfig } from '@hal/types';
-import seed from '../../../../shared/vectors/seed-figures.json' with { type: 'json' };
+import seed from '../../../tests/vectors/seed-figures.json' with { type: 'json' };
 import { getStepsPerCm, V1_GEOMETRY, wheelCircumferenceCm } from './geometry.js';
 import {
   calculateArcSpeeds,
