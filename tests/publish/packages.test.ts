@@ -131,7 +131,7 @@ describe('the packages as published', () => {
     expect(Math.hypot(dx, dy)).toBeCloseTo(0.1, 3);
     expect(report.after.rotation.yaw).toBeCloseTo(report.before.rotation.yaw, 6);
     expect(report.framePrefix).toBe('data:image/jpeg;base64,');
-  });
+  }, 120_000);
 
   it('bundles the library packages for a browser with no Node built-in and no native module in it', async () => {
     // Packages that ship a command are Node programs; every other package is a library a browser
@@ -176,5 +176,5 @@ describe('the packages as published', () => {
       expect(external.dynamicImporters.length, external.id).toBeGreaterThan(0);
     }
     expect(bundle.externals.map((external) => external.id)).toContain('serialport');
-  });
+  }, 180_000);
 });
