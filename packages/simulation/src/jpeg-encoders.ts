@@ -28,11 +28,8 @@ export const canvasJpegEncoder: JpegEncoder = async (image, quality) => {
   const canvas = new OffscreenCanvas(image.width, image.height);
   const context = canvas.getContext('2d');
   if (context === null) throw new Error('OffscreenCanvas has no 2d context here');
-  const pixels = new Uint8ClampedArray(
-    image.data.buffer,
-    image.data.byteOffset,
-    image.width * image.height * 4,
-  );
+  const pixels = new Uint8ClampedArray(image.width * image.height * 4);
+  pixels.set(image.data.subarray(0, pixels.length));
   context.putImageData(new ImageData(pixels, image.width, image.height), 0, 0);
   const blob = await canvas.convertToBlob({ type: 'image/jpeg', quality: quality / 100 });
   return new Uint8Array(await blob.arrayBuffer());
