@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { BUILTIN_MAPS } from './maps/index.js';
+import type { BUILTIN_MAPS } from './maps/index.js';
 import type { WorldMapInput } from './map.js';
 import { SeededRandom } from './rng.js';
-import { runTickStepping } from './robot/tick-stepping.fixture.ts';
-import type { TickCommand, TickResult, TickRobotSpec } from './robot/tick-stepping.fixture.ts';
+import { runTickStepping } from './robot/tick-stepping.fixture.js';
+import type { TickCommand, TickResult, TickRobotSpec } from './robot/tick-stepping.fixture.js';
 import { World } from './world.js';
 
 /*
