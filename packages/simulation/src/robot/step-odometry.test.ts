@@ -39,3 +39,32 @@ describe('StepOdometry', () => {
     expect(turn.maxStepCm).toBe(0);
   });
 });
+
+describe('StepOdometry by whole periods', () => {
+  it('gives the same bits walked one step at a time or in one go, and the per-step pose to a nanometre', () => {
+    const plan = new VelocityPlan(1024, 905, 512); // the pattern repeats every 1024 steps
+    const start = { xCm: 1, yCm: 2, headingRad: -1 };
+    const oneGo = new StepOdometry(start);
+    oneGo.begin(plan, V1_ROBOT);
+    oneGo.walkTo(50_000);
+    const stepwise = new StepOdometry(start);
+    stepwise.begin(plan, V1_ROBOT);
+    for (let k = 1; k <= 50_000; k += 37) stepwise.walkTo(k);
+    stepwise.walkTo(50_000);
+    expect([stepwise.xCm, stepwise.yCm, stepwise.pose.headingRad]).toEqual([
+      oneGo.xCm,
+      oneGo.yCm,
+      oneGo.pose.headingRad,
+    ]);
+    let pose = start;
+    let before = { left: 0, right: 0 };
+    for (let k = 1; k <= 50_000; k += 1) {
+      const steps = plan.stepsAt(plan.masterStepTimeUs(k));
+      pose = integrateOdometry(pose, steps.left - before.left, steps.right - before.right);
+      before = steps;
+    }
+    expect([oneGo.left, oneGo.right]).toEqual([before.left, before.right]);
+    expect(Math.hypot(oneGo.xCm - pose.xCm, oneGo.yCm - pose.yCm)).toBeLessThan(1e-7);
+    expect(Math.abs(oneGo.pose.headingRad - pose.headingRad)).toBeLessThan(1e-9);
+  });
+});

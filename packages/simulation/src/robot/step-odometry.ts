@@ -4,6 +4,31 @@ import type { RobotConfig } from '@hal/types';
 
 /** The heading is wrapped and its sine and cosine recomputed every this many master steps. */
 const RESYNC_STEPS = 4096;
+/** Plans whose step pattern repeats within this many master steps are advanced by whole periods. */
+const MAX_PERIOD = 4096;
+
+function gcd(a: number, b: number): number {
+  while (b !== 0) [a, b] = [b, a % b];
+  return a;
+}
+
+/** Where the pattern's periods are counted from, and what one period does (robot frame, cm, rad). */
+interface Periods {
+  /** Master steps per period. */
+  length: number;
+  k: number;
+  xCm: number;
+  yCm: number;
+  heading: number;
+  cos: number;
+  sin: number;
+  slave: number;
+  left: number;
+  right: number;
+  dx: number;
+  dy: number;
+  dth: number;
+}
 
 /** One step of a plan as a rigid motion in the robot frame (cm, rad): both wheels, or the master alone. */
 interface StepMotion {
@@ -46,6 +71,7 @@ export class StepOdometry {
   /** Master and slave steps the current plan has made. */
   #k = 0;
   #slave = 0;
+  #periods: Periods | undefined;
 
   constructor(start: PlanarPose) {
     this.#xCm = start.xCm;
@@ -93,11 +119,88 @@ export class StepOdometry {
     this.#slave = 0;
     this.#resync();
     this.#geometry(plan, config);
+    this.#countPeriods();
   }
 
   /** The geometry changed (`set_config`): the steps still to come use the new one. */
   reconfigure(plan: StepPlan, config: RobotConfig): void {
     this.#geometry(plan, config);
+    this.#resync();
+    this.#countPeriods();
+  }
+
+  /**
+   * The Bresenham pattern repeats every masterTerm / gcd(masterTerm, slaveTerm) master steps, and
+   * so does the rigid motion of one period. When the period is short, the pose at the end of the
+   * n-th period after here is computed in closed form from n (a sum of rotated copies of one
+   * period's motion), and only the steps within a period are walked one by one. Both depend only
+   * on the step number, never on how the walk is split, so the pose stays the same bits however
+   * often the robot is read.
+   */
+  #countPeriods(): void {
+    this.#periods = undefined;
+    const M = this.#masterTerm;
+    const S = this.#slaveTerm;
+    const length = M / gcd(M, S);
+    if (!(length <= MAX_PERIOD)) return;
+    const here = {
+      length,
+      k: this.#k,
+      xCm: this.#xCm,
+      yCm: this.#yCm,
+      heading: this.#heading,
+      cos: this.#cos,
+      sin: this.#sin,
+      slave: this.#slave,
+      left: this.#left,
+      right: this.#right,
+    };
+    // One period walked from the origin gives its motion.
+    this.#xCm = 0;
+    this.#yCm = 0;
+    this.#heading = 0;
+    this.#cos = 1;
+    this.#sin = 0;
+    this.walkTo(this.#k + length);
+    const period = { ...here, dx: this.#xCm, dy: this.#yCm, dth: this.#heading };
+    this.#k = here.k;
+    this.#xCm = here.xCm;
+    this.#yCm = here.yCm;
+    this.#heading = here.heading;
+    this.#cos = here.cos;
+    this.#sin = here.sin;
+    this.#slave = here.slave;
+    this.#left = here.left;
+    this.#right = here.right;
+    this.#periods = period;
+  }
+
+  /** Jumps to the end of the n-th period (n >= 1) in closed form. */
+  #toPeriod(p: Periods, n: number): void {
+    const k = p.k + n * p.length;
+    // Sum over j < n of the period's motion turned by j * dth: t * sin(n a) / sin(a) * e^(i (n-1) a),
+    // with a = dth / 2 (n copies when the period does not turn).
+    const a = p.dth / 2;
+    const scale = a === 0 ? n : Math.sin(n * a) / Math.sin(a);
+    const b = (n - 1) * a;
+    const cb = Math.cos(b);
+    const sb = Math.sin(b);
+    const X = scale * (p.dx * cb - p.dy * sb);
+    const Y = scale * (p.dx * sb + p.dy * cb);
+    this.#xCm = p.xCm + p.cos * X - p.sin * Y;
+    this.#yCm = p.yCm + p.sin * X + p.cos * Y;
+    this.#heading = normalizeAngle(p.heading + n * p.dth);
+    this.#cos = Math.cos(this.#heading);
+    this.#sin = Math.sin(this.#heading);
+    const slave = Math.floor((k * this.#slaveTerm) / this.#masterTerm);
+    const pairs = slave - p.slave;
+    const alone = k - p.k - pairs;
+    const both = this.#both as StepMotion;
+    const single = this.#masterOnly as StepMotion;
+    this.#left = p.left + pairs * both.dl + alone * single.dl;
+    this.#right = p.right + pairs * both.dr + alone * single.dr;
+    this.#slave = slave;
+    this.#k = k;
   }
 
   #geometry(plan: StepPlan, config: RobotConfig): void {
@@ -125,6 +228,12 @@ export class StepOdometry {
   /** Takes master steps up to the plan's k-th (k above the steps made). */
   walkTo(k: number): void {
     if (k <= this.#k) return;
+    const p = this.#periods;
+    if (p !== undefined) {
+      const n = Math.floor((k - p.k) / p.length);
+      if (n > Math.floor((this.#k - p.k) / p.length)) this.#toPeriod(p, n);
+      if (k <= this.#k) return;
+    }
     const both = this.#both as StepMotion;
     const alone = this.#masterOnly as StepMotion;
     const M = this.#masterTerm;
