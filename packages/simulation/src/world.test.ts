@@ -159,6 +159,19 @@ describe('World event stepping', () => {
     expect(contactAt.mock.calls.length).toBeLessThan(60);
   });
 
+  it('sees a robot coming that keeps its speed after set_config lowered the limit', () => {
+    const world = new World();
+    const mover = world.addRobot({ start: { x: -1, y: 0, yaw: 0 } });
+    const still = world.addRobot({ start: { x: 0, y: 0, yaw: 0 } });
+    still.setConfig({ maxSpeedStepsPerS: 1 });
+    mover.drive(1024, 1024);
+    world.advance(500_000);
+    mover.setConfig({ maxSpeedStepsPerS: 1 }); // applies to the next motion: this one goes on
+    world.advanceUntil(() => !mover.running, 60_000_000);
+    expect(mover.motion?.outcome).toBe('collision');
+    expect(still.x - mover.x).toBeGreaterThanOrEqual(0.14 - 1e-9);
+  });
+
   it('sees a robot added in the way of one already moving', () => {
     const world = new World();
     const mover = world.addRobot({ start: { x: -1, y: 0, yaw: 0 } });

@@ -121,9 +121,13 @@ export class SimRobot {
     return Math.min(motion, this.#safety.silentDeadlineUs(this.#config.hostTimeoutMs));
   }
 
-  /** The most the centre can move per second, m/s (the top speed on a straight line). */
+  /**
+   * The most the centre can move per second, m/s: the top speed on a straight line, or the
+   * running motion's, if it started under a higher limit.
+   */
   get maxSpeedMps(): number {
-    return this.#config.maxSpeedStepsPerS / this.#perCm / 100;
+    const running = this.#motions.running ? (this.#motions.motion?.speed ?? 0) : 0;
+    return Math.max(this.#config.maxSpeedStepsPerS, running) / this.#perCm / 100;
   }
 
   /** Length of one wheel step, metres. */
