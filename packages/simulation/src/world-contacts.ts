@@ -19,7 +19,10 @@ function drift(robot: SimRobot, nowUs: number): number {
   return robot.maxSpeedMps * (Math.max(0, nowUs - robot.settledUs) / 1e6) + robot.stepLengthM;
 }
 
-/** What a disc at (x, y) of radius r touches (solids first, then robots), or undefined. */
+/**
+ * What a disc at (x, y) of radius r touches (solids first, then robots), or undefined. Only the
+ * robots in `candidates` (indices, ascending) are looked at, all when it is undefined.
+ */
 export function contactAmong(
   x: number,
   y: number,
@@ -28,12 +31,15 @@ export function contactAmong(
   robots: readonly SimRobot[],
   self: SimRobot | undefined,
   nowUs: number,
+  candidates?: readonly number[],
 ): Contact | undefined {
   for (const solid of solids) {
     const point = discContact(x, y, r, solid);
     if (point !== undefined) return { point, role: solid.role, index: solid.index };
   }
-  for (let i = 0; i < robots.length; i += 1) {
+  const count = candidates === undefined ? robots.length : candidates.length;
+  for (let n = 0; n < count; n += 1) {
+    const i = candidates === undefined ? n : (candidates[n] as number);
     const other = robots[i] as SimRobot;
     if (other === self) continue;
     const reach = r + other.radius;
@@ -60,8 +66,10 @@ export function contactAmong(
 
 /**
  * The room of `self`, a disc of radius r at (x, y) at `nowUs`: the distance to the nearest solid,
- * and until when no other robot can touch it. Two robots a gap g apart, with top speeds v1 and v2,
- * cannot touch before g / (v1 + v2) has passed, whatever commands they get meanwhile.
+ * and until when (at most {@link ROOM_HORIZON_US} ahead) no other robot can touch it. Two robots a
+ * gap g apart, with top speeds v1 and v2, cannot touch before g / (v1 + v2) has passed, whatever
+ * commands they get meanwhile. Only the robots in `candidates` are looked at, all when it is
+ * undefined: the caller leaves out only robots too far away to matter within the horizon.
  */
 export function freeSpaceAmong(
   x: number,
@@ -71,6 +79,7 @@ export function freeSpaceAmong(
   robots: readonly SimRobot[],
   self: SimRobot,
   nowUs: number,
+  candidates?: readonly number[],
 ): FreeSpace {
   let distance = Number.POSITIVE_INFINITY;
   for (const solid of solids) {
@@ -79,7 +88,9 @@ export function freeSpaceAmong(
   }
   let untilUs = nowUs + ROOM_HORIZON_US;
   const own = self.maxSpeedMps;
-  for (const other of robots) {
+  const count = candidates === undefined ? robots.length : candidates.length;
+  for (let n = 0; n < count; n += 1) {
+    const other = robots[candidates === undefined ? n : (candidates[n] as number)] as SimRobot;
     if (other === self) continue;
     const speed = own + other.maxSpeedMps;
     if (speed <= 0) continue;

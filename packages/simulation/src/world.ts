@@ -10,7 +10,13 @@ import type { Contact, FreeSpace } from './robot/contact.js';
 import { EventQueue } from './event-queue.js';
 import { solidsOf } from './shapes.js';
 import type { Solid } from './shapes.js';
-import { contactAmong, freeSpaceAmong } from './world-contacts.js';
+import { RobotIndex } from './robot-index.js';
+import { contactAmong, freeSpaceAmong, ROOM_HORIZON_US } from './world-contacts.js';
+
+/** From this many robots on, the robots near a point are found through a {@link RobotIndex}. */
+const INDEX_MIN_ROBOTS = 32;
+/** An index is rebuilt when it is older than this, µs (it bounds how far robots have moved). */
+const INDEX_MAX_AGE_US = 1_000_000;
 
 /** Listener bookkeeping for a few named events (no Node dependency, works in the browser). */
 export class Emitter<Events extends Record<string, unknown>> {
@@ -117,6 +123,7 @@ export class World {
   #timer: ReturnType<typeof setInterval> | undefined;
   #speed = 0;
   readonly #queue = new EventQueue<SimRobot>();
+  #index: RobotIndex | undefined;
 
   constructor(options: WorldOptions = {}) {
     this.random = new SeededRandom(options.seed ?? 1);
@@ -195,6 +202,7 @@ export class World {
     robot.stop();
     this.#queue.delete(robot);
     this.#robots = this.#robots.filter((r) => r !== robot);
+    this.#index = undefined;
     this.events.emit('robots', this.#robots);
   }
 
@@ -207,6 +215,7 @@ export class World {
     this.#solids = solidsOf(this.#map);
     const old = this.#robots;
     this.#robots = [];
+    this.#index = undefined;
     for (const robot of old) {
       robot.stop();
       this.#queue.delete(robot);
@@ -220,7 +229,9 @@ export class World {
    * Robots check it before a step that could bring them into contact.
    */
   contactAt(x: number, y: number, r: number, self?: SimRobot): Contact | undefined {
-    return contactAmong(x, y, r, this.#solids, this.#robots, self, this.#nowUs);
+    const index = this.#robotIndex(this.#nowUs);
+    const near = index?.near(x, y, r + index.maxRadius + index.staleness(this.#nowUs));
+    return contactAmong(x, y, r, this.#solids, this.#robots, self, this.#nowUs, near);
   }
 
   /**
@@ -228,12 +239,31 @@ export class World {
    * solid, and until when no other robot can touch it.
    */
   freeSpaceAt(x: number, y: number, r: number, self: SimRobot, atUs: number): FreeSpace {
-    return freeSpaceAmong(x, y, r, this.#solids, this.#robots, self, atUs);
+    const index = this.#robotIndex(atUs);
+    // A robot farther than this cannot reach `self` within the horizon, whatever either does.
+    const reach =
+      r +
+      (index?.maxRadius ?? 0) +
+      ((self.maxSpeedMps + (index?.maxSpeedMps ?? 0)) * ROOM_HORIZON_US) / 1e6 +
+      (index?.staleness(atUs) ?? 0);
+    const near = index?.near(x, y, reach);
+    return freeSpaceAmong(x, y, r, this.#solids, this.#robots, self, atUs, near);
+  }
+
+  /** The index of robot positions, rebuilt when missing or too old; none for few robots. */
+  #robotIndex(nowUs: number): RobotIndex | undefined {
+    if (this.#robots.length < INDEX_MIN_ROBOTS) return undefined;
+    const index = this.#index;
+    if (index === undefined || nowUs < index.builtUs || nowUs - index.builtUs > INDEX_MAX_AGE_US) {
+      this.#index = new RobotIndex(this.#robots, this.#nowUs);
+    }
+    return this.#index;
   }
 
   /** A robot's next event may have moved; `everyone`: every robot must measure its room again. */
   #reschedule(robot: SimRobot, everyone: boolean): void {
     if (everyone) {
+      this.#index = undefined;
       for (const other of this.#robots) {
         other.invalidateRoom();
         this.#queue.set(other, other.nextEventUs);
