@@ -48,3 +48,25 @@ describe('VelocityPlan', () => {
     expect(() => new VelocityPlan(10.5, 0, 512)).toThrow(/whole steps\/s/);
   });
 });
+
+describe('StepPlan master schedule', () => {
+  it('gives the master step count and step times that stepsAt is made of, for a move and a drive', () => {
+    const plans = [new MovePlan(-700, 1500, 900, 512), new VelocityPlan(800, -300, 512)];
+    for (const plan of plans) {
+      for (const k of [1, 2, 50, 461, 700, 1499]) {
+        const t = plan.masterStepTimeUs(k);
+        expect(plan.masterStepsAt(t)).toBe(k);
+        expect(plan.masterStepsAt(t - 1)).toBe(k - 1);
+        const slave = Math.floor((k * plan.slaveTerm) / plan.masterTerm);
+        const steps = plan.stepsAt(t);
+        const [master, other] = plan.leftIsMaster
+          ? [steps.left, steps.right]
+          : [steps.right, steps.left];
+        expect(Math.abs(master)).toBe(k);
+        expect(Math.abs(other)).toBe(slave);
+      }
+    }
+    expect([plans[0]?.leftSign, plans[0]?.rightSign]).toEqual([-1, 1]);
+    expect([plans[1]?.leftSign, plans[1]?.rightSign]).toEqual([1, -1]);
+  });
+});

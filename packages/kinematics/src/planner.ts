@@ -17,6 +17,19 @@ export interface StepPlan {
   readonly durationUs: number;
   /** Whether the left wheel is the master. */
   readonly leftIsMaster: boolean;
+  /**
+   * The Bresenham terms: after the master's k-th step the slave has made
+   * `floor(k * slaveTerm / masterTerm)` steps (steps of a move, speeds of a velocity plan).
+   */
+  readonly masterTerm: number;
+  readonly slaveTerm: number;
+  /** Direction of each wheel: 1, -1, or 0 for a wheel that does not turn. */
+  readonly leftSign: number;
+  readonly rightSign: number;
+  /** Whole steps the master wheel has made `elapsedUs` microseconds after the start. */
+  masterStepsAt(elapsedUs: number): number;
+  /** When the master wheel's k-th step (k >= 1) happens, whole µs after the start. */
+  masterStepTimeUs(k: number): number;
 }
 
 function slaveSteps(k: number, slave: number, master: number): number {
@@ -53,6 +66,26 @@ export class MovePlan implements StepPlan {
 
   get durationUs(): number {
     return this.profile.durationUs;
+  }
+  get masterTerm(): number {
+    return this.#master;
+  }
+  get slaveTerm(): number {
+    return this.#slave;
+  }
+  get leftSign(): number {
+    return Math.sign(this.left);
+  }
+  get rightSign(): number {
+    return Math.sign(this.right);
+  }
+
+  masterStepsAt(elapsedUs: number): number {
+    return this.profile.stepsDoneAt(elapsedUs);
+  }
+
+  masterStepTimeUs(k: number): number {
+    return this.profile.stepTimeUs(k);
   }
 
   stepsAt(elapsedUs: number): WheelPair {
@@ -98,6 +131,27 @@ export class VelocityPlan implements StepPlan {
     this.#slave = Math.abs(this.leftIsMaster ? rightSpeed : leftSpeed);
     this.#profile =
       this.#master === 0 ? undefined : new VelocityProfile(this.#master, acceleration);
+  }
+
+  get masterTerm(): number {
+    return this.#master;
+  }
+  get slaveTerm(): number {
+    return this.#slave;
+  }
+  get leftSign(): number {
+    return Math.sign(this.leftSpeed);
+  }
+  get rightSign(): number {
+    return Math.sign(this.rightSpeed);
+  }
+
+  masterStepsAt(elapsedUs: number): number {
+    return this.#profile?.stepsDoneAt(elapsedUs) ?? 0;
+  }
+
+  masterStepTimeUs(k: number): number {
+    return this.#profile === undefined ? Number.POSITIVE_INFINITY : this.#profile.stepTimeUs(k);
   }
 
   stepsAt(elapsedUs: number): WheelPair {

@@ -1,15 +1,22 @@
 import jpeg from 'jpeg-js';
 import { describe, expect, it } from 'vitest';
 import { renderRobotView } from './camera.js';
-import { encodeJpeg, jpegDataUrl } from './jpeg.js';
+import { defaultJpegEncoder, encodeJpeg, jpegDataUrl } from './jpeg.js';
+import { jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';
+import type { JpegEncoder } from './jpeg-encoders.js';
 import { World } from './world.js';
 
-async function frameOf(world: World, robotId: string) {
-  const url = jpegDataUrl(await encodeJpeg(renderRobotView(world, world.robot(robotId))));
+async function frameOf(world: World, robotId: string, encoder?: JpegEncoder) {
+  const url = jpegDataUrl(
+    await encodeJpeg(renderRobotView(world, world.robot(robotId)), 85, encoder),
+  );
   expect(url.startsWith('data:image/jpeg;base64,')).toBe(true);
   const bytes = Buffer.from(url.slice('data:image/jpeg;base64,'.length), 'base64');
   return jpeg.decode(bytes, { useTArray: true });
 }
+
+const sharp = await loadSharpEncoder();
+if (sharp === undefined) throw new Error('sharp (an optional dependency) is not installed');
 
 function pixel(image: { width: number; data: Uint8Array }, x: number, y: number) {
   const i = (y * image.width + x) * 4;
@@ -26,34 +33,49 @@ describe('renderRobotView', () => {
     expect(sky.b).toBeGreaterThan(sky.r + 40);
   });
 
-  it('shows an obstacle in front in its colour, and not when the robot looks away', async () => {
-    // A red box 0.5 m ahead, nothing behind.
-    const world = new World({
-      map: {
-        name: 'red box',
-        obstacles: [
-          { kind: 'box', x: 0.6, y: 0, width: 0.2, depth: 0.4, height: 0.3, color: '#ff0000' },
-        ],
-      },
-    });
-    const robot = world.addRobot({ id: 'r' });
-    const ahead = await frameOf(world, 'r');
-    const centre = pixel(ahead, 160, 130);
-    expect(centre.r).toBeGreaterThan(150);
-    expect(centre.g).toBeLessThan(80);
-    expect(centre.b).toBeLessThan(80);
+  const encoders: Array<[string, JpegEncoder]> = [
+    ['jpeg-js', jpegJsEncoder],
+    ['sharp', sharp],
+  ];
+  it.each(encoders)(
+    'shows an obstacle in front in its colour, and not when the robot looks away (%s)',
+    async (_name, encoder) => {
+      // A red box 0.5 m ahead, nothing behind.
+      const world = new World({
+        map: {
+          name: 'red box',
+          obstacles: [
+            { kind: 'box', x: 0.6, y: 0, width: 0.2, depth: 0.4, height: 0.3, color: '#ff0000' },
+          ],
+        },
+      });
+      const robot = world.addRobot({ id: 'r' });
+      const ahead = await frameOf(world, 'r', encoder);
+      const centre = pixel(ahead, 160, 130);
+      expect(centre.r).toBeGreaterThan(150);
+      expect(centre.g).toBeLessThan(80);
+      expect(centre.b).toBeLessThan(80);
 
-    robot.rotateDeg(180);
-    world.advanceUntil(() => !robot.running, 10_000_000);
-    const away = await frameOf(world, 'r');
-    let red = 0;
-    for (let y = 0; y < 240; y += 4) {
-      for (let x = 0; x < 320; x += 4) {
-        const p = pixel(away, x, y);
-        if (p.r > 150 && p.g < 80 && p.b < 80) red += 1;
+      robot.rotateDeg(180);
+      world.advanceUntil(() => !robot.running, 10_000_000);
+      const away = await frameOf(world, 'r', encoder);
+      let red = 0;
+      for (let y = 0; y < 240; y += 4) {
+        for (let x = 0; x < 320; x += 4) {
+          const p = pixel(away, x, y);
+          if (p.r > 150 && p.g < 80 && p.b < 80) red += 1;
+        }
       }
-    }
-    expect(red).toBe(0);
+      expect(red).toBe(0);
+    },
+  );
+
+  it('encodes with sharp in Node by default, and refuses a quality outside 1..100', async () => {
+    expect(await defaultJpegEncoder()).toBe(sharp);
+    const world = new World({ map: 'room' });
+    const image = renderRobotView(world, world.addRobot());
+    await expect(encodeJpeg(image, 0)).rejects.toThrow(/quality/);
+    await expect(encodeJpeg(image, Number.NaN)).rejects.toThrow(/quality/);
   });
 
   it('draws a nearer obstacle larger than a farther one', () => {

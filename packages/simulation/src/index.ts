@@ -38,6 +38,8 @@ export type { RangeSensorOptions } from './sensors.js';
 
 export { cameraPose, renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';
-export { encodeJpeg, jpegDataUrl, toBase64 } from './jpeg.js';
+export { defaultJpegEncoder, encodeJpeg, jpegDataUrl, toBase64 } from './jpeg.js';
+export { canvasJpegEncoder, jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';
+export type { JpegEncoder } from './jpeg-encoders.js';
 
 export { SeededRandom } from './rng.js';

@@ -149,6 +149,16 @@ export function discContact(x: number, y: number, r: number, solid: Solid): Poin
   return { x: solid.x + (dx / d) * solid.radius, y: solid.y + (dy / d) * solid.radius };
 }
 
+/** Distance from (x, y) to the nearest point of `solid`, metres (0 inside it). */
+export function pointDistance(x: number, y: number, solid: Solid): number {
+  if (solid.kind === 'box') {
+    const dx = x < solid.minX ? solid.minX - x : x > solid.maxX ? x - solid.maxX : 0;
+    const dy = y < solid.minY ? solid.minY - y : y > solid.maxY ? y - solid.maxY : 0;
+    return Math.sqrt(dx * dx + dy * dy);
+  }
+  return Math.max(0, Math.hypot(x - solid.x, y - solid.y) - solid.radius);
+}
+
 /**
  * Distance along the ray (ox, oy) + t (dx, dy) (a unit direction) at which it enters `solid`,
  * or Infinity when it misses. A ray starting inside a solid hits it at 0.

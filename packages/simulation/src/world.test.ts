@@ -120,3 +120,67 @@ describe('World', () => {
     expect(world.realtimeSpeed).toBe(0);
   });
 });
+
+describe('World event stepping', () => {
+  const scenario = () => {
+    const world = new World({ map: 'obstacles' });
+    const a = world.addRobot({ start: { x: -2, y: -2, yaw: 0.4 } });
+    const b = world.addRobot({ start: { x: 1.9, y: 1.9, yaw: -2.5 } });
+    a.drive(1024, 700, 12_000);
+    b.moveSteps(9000, 8000, 900);
+    return { world, a, b };
+  };
+  const state = (w: ReturnType<typeof scenario>) =>
+    [w.a, w.b].map((r) => [r.x, r.y, r.yaw, r.leftSteps, r.rightSteps, r.motion?.endedUs]);
+
+  it('ends in the same state, bit for bit, however the clock is advanced and whoever looks meanwhile', () => {
+    const once = scenario();
+    once.world.advance(15_000_000);
+    const ticks = scenario();
+    for (let i = 0; i < 15_000; i += 1) ticks.world.step();
+    const watched = scenario();
+    for (let i = 0; i < 1500; i += 1) {
+      watched.world.advance(10_000);
+      expect(watched.a.x + watched.b.y).not.toBeNaN(); // reads catch the robots up
+    }
+    expect(state(ticks)).toEqual(state(once));
+    expect(state(watched)).toEqual(state(once));
+  });
+
+  it('checks for contact only near something: a few times, not at every step, in open space', () => {
+    const world = new World({ map: { name: 'open', arena: { width: 20, height: 20 } } });
+    const robot = world.addRobot();
+    const contactAt = vi.spyOn(world, 'contactAt');
+    robot.drive(1024, 1024, 20_000);
+    world.advance(21_000_000);
+    expect(robot.motion?.outcome).toBe('done');
+    expect(Math.abs(robot.leftSteps)).toBeGreaterThan(19_000);
+    expect(contactAt.mock.calls.length).toBeGreaterThan(0);
+    expect(contactAt.mock.calls.length).toBeLessThan(60);
+  });
+
+  it('sees a robot coming that keeps its speed after set_config lowered the limit', () => {
+    const world = new World();
+    const mover = world.addRobot({ start: { x: -1, y: 0, yaw: 0 } });
+    const still = world.addRobot({ start: { x: 0, y: 0, yaw: 0 } });
+    still.setConfig({ maxSpeedStepsPerS: 1 });
+    mover.drive(1024, 1024);
+    world.advance(500_000);
+    mover.setConfig({ maxSpeedStepsPerS: 1 }); // applies to the next motion: this one goes on
+    world.advanceUntil(() => !mover.running, 60_000_000);
+    expect(mover.motion?.outcome).toBe('collision');
+    expect(still.x - mover.x).toBeGreaterThanOrEqual(0.14 - 1e-9);
+  });
+
+  it('sees a robot added in the way of one already moving', () => {
+    const world = new World();
+    const mover = world.addRobot({ start: { x: -1, y: 0, yaw: 0 } });
+    mover.drive(1024, 1024);
+    world.advance(2_000_000);
+    world.addRobot({ id: 'late', start: { x: 0, y: 0, yaw: 0 } });
+    world.advanceUntil(() => !mover.running, 60_000_000);
+    expect(mover.motion?.outcome).toBe('collision');
+    expect(mover.motion?.contact?.robotId).toBe('late');
+    expect(world.robot('late').x - mover.x).toBeGreaterThanOrEqual(0.14 - 1e-9);
+  });
+});

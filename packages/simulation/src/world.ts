@@ -6,14 +6,17 @@ import { BUILTIN_MAPS } from './maps/index.js';
 import type { BuiltinMapName } from './maps/index.js';
 import { SeededRandom } from './rng.js';
 import { SimRobot } from './robot/sim-robot.js';
-import type { Contact } from './robot/contact.js';
-import { discContact, solidsOf } from './shapes.js';
+import type { Contact, FreeSpace } from './robot/contact.js';
+import { EventQueue } from './event-queue.js';
+import { solidsOf } from './shapes.js';
 import type { Solid } from './shapes.js';
+import { RobotIndex } from './robot-index.js';
+import { contactAmong, freeSpaceAmong, ROOM_HORIZON_US } from './world-contacts.js';
 
-/** Side of a cell of the robot grid, metres. */
-const GRID_CELL_M = 0.5;
-/** Below this many robots, contact tests check every robot (cheaper than a grid). */
-const GRID_MIN_ROBOTS = 12;
+/** From this many robots on, the robots near a point are found through a {@link RobotIndex}. */
+const INDEX_MIN_ROBOTS = 32;
+/** An index is rebuilt when it is older than this, µs (it bounds how far robots have moved). */
+const INDEX_MAX_AGE_US = 1_000_000;
 
 /** Listener bookkeeping for a few named events (no Node dependency, works in the browser). */
 export class Emitter<Events extends Record<string, unknown>> {
@@ -28,6 +31,11 @@ export class Emitter<Events extends Record<string, unknown>> {
     }
     set.add(listener as (payload: never) => void);
     return () => set.delete(listener as (payload: never) => void);
+  }
+
+  /** Whether anyone listens to `event`. */
+  has(event: keyof Events): boolean {
+    return (this.#listeners.get(event)?.size ?? 0) > 0;
   }
 
   emit<E extends keyof Events>(event: E, payload: Events[E]): void {
@@ -97,6 +105,11 @@ function resolveMap(map: WorldOptions['map']): WorldMap {
 /**
  * A deterministic world: a map, its solids, robots, and a simulated clock that only moves when
  * told to (`step`, `advance`, `advanceUntil`) or by a real-time ticker (`startRealtime`).
+ *
+ * Time moves from event to event, not tick to tick: each robot is due at its next event (a step
+ * that must be checked for contact, the end of its motion, a host timeout), and the world takes
+ * the events in time order (ties in the order the robots were added). Between its events a robot
+ * takes only steps that cannot touch anything, and is brought up to the clock when read.
  */
 export class World {
   readonly events = new Emitter<WorldEvents>();
@@ -109,7 +122,8 @@ export class World {
   #ticks = 0;
   #timer: ReturnType<typeof setInterval> | undefined;
   #speed = 0;
-  #grid: Map<number, number[]> | undefined;
+  readonly #queue = new EventQueue<SimRobot>();
+  #index: RobotIndex | undefined;
 
   constructor(options: WorldOptions = {}) {
     this.random = new SeededRandom(options.seed ?? 1);
@@ -167,8 +181,17 @@ export class World {
       ...(options.radius === undefined ? {} : { radius: options.radius }),
     });
     robot.advanceTo(this.#nowUs);
-    robot.setContactTest((x, y, r) => this.contactAt(x, y, r, robot));
+    robot.setScheduler({
+      nowUs: () => this.#nowUs,
+      reschedule: (everyone) => this.#reschedule(robot, everyone),
+    });
+    robot.setContactTest(
+      (x, y, r) => this.contactAt(x, y, r, robot),
+      (x, y, r, atUs) => this.freeSpaceAt(x, y, r, robot, atUs),
+    );
     this.#robots.push(robot);
+    // The robots already moving measured their room without this one.
+    this.#reschedule(robot, true);
     this.events.emit('robots', this.#robots);
     return robot;
   }
@@ -177,7 +200,9 @@ export class World {
   removeRobot(id: string): void {
     const robot = this.robot(id);
     robot.stop();
+    this.#queue.delete(robot);
     this.#robots = this.#robots.filter((r) => r !== robot);
+    this.#index = undefined;
     this.events.emit('robots', this.#robots);
   }
 
@@ -190,8 +215,10 @@ export class World {
     this.#solids = solidsOf(this.#map);
     const old = this.#robots;
     this.#robots = [];
+    this.#index = undefined;
     for (const robot of old) {
       robot.stop();
+      this.#queue.delete(robot);
       this.addRobot({ id: robot.id, config: robot.config, radius: robot.radius });
     }
     this.events.emit('map', this.#map);
@@ -199,107 +226,98 @@ export class World {
 
   /**
    * What a disc at (x, y) of radius r touches (map solids and other robots), or undefined.
-   * Used by robots on every step they move.
+   * Robots check it before a step that could bring them into contact.
    */
   contactAt(x: number, y: number, r: number, self?: SimRobot): Contact | undefined {
-    for (const solid of this.#solids) {
-      const point = discContact(x, y, r, solid);
-      if (point !== undefined) return { point, role: solid.role, index: solid.index };
-    }
-    const grid = this.#grid;
-    if (grid === undefined) {
-      for (let i = 0; i < this.#robots.length; i += 1) {
-        const hit = this.#robotContact(x, y, r, i, self);
-        if (hit !== undefined) return hit;
-      }
-      return undefined;
-    }
-    const cx = Math.floor(x / GRID_CELL_M);
-    const cy = Math.floor(y / GRID_CELL_M);
-    for (let gx = cx - 1; gx <= cx + 1; gx += 1) {
-      for (let gy = cy - 1; gy <= cy + 1; gy += 1) {
-        const cell = grid.get(gx * 65_536 + gy);
-        if (cell === undefined) continue;
-        for (const i of cell) {
-          const hit = this.#robotContact(x, y, r, i, self);
-          if (hit !== undefined) return hit;
-        }
-      }
-    }
-    return undefined;
-  }
-
-  #robotContact(
-    x: number,
-    y: number,
-    r: number,
-    i: number,
-    self: SimRobot | undefined,
-  ): Contact | undefined {
-    const other = this.#robots[i] as SimRobot;
-    if (other === self) return undefined;
-    const dx = x - other.x;
-    const dy = y - other.y;
-    const reach = r + other.radius;
-    const d2 = dx * dx + dy * dy;
-    if (d2 >= reach * reach) return undefined;
-    const d = Math.sqrt(d2) || 1;
-    return {
-      point: { x: other.x + (dx / d) * other.radius, y: other.y + (dy / d) * other.radius },
-      role: 'robot',
-      index: i,
-      robotId: other.id,
-    };
+    const index = this.#robotIndex(this.#nowUs);
+    const near = index?.near(x, y, r + index.maxRadius + index.staleness(this.#nowUs));
+    return contactAmong(x, y, r, this.#solids, this.#robots, self, this.#nowUs, near);
   }
 
   /**
-   * With many robots, a grid of robot indices by cell, rebuilt every tick, so a contact test
-   * looks only at the robots in the nine cells around it. A robot moves far less than a cell per
-   * tick, and no robot is wider than a cell, so nothing in reach is missed.
+   * How much room a disc at (x, y) of radius r has at `atUs`: how far it can move and touch no
+   * solid, and until when no other robot can touch it.
    */
-  #buildGrid(): void {
-    const robots = this.#robots;
-    if (robots.length < GRID_MIN_ROBOTS || robots.some((r) => r.radius * 2 > GRID_CELL_M / 2)) {
-      this.#grid = undefined;
-      return;
-    }
-    const grid = new Map<number, number[]>();
-    for (let i = 0; i < robots.length; i += 1) {
-      const robot = robots[i] as SimRobot;
-      const key = Math.floor(robot.x / GRID_CELL_M) * 65_536 + Math.floor(robot.y / GRID_CELL_M);
-      const cell = grid.get(key);
-      if (cell === undefined) grid.set(key, [i]);
-      else cell.push(i);
-    }
-    this.#grid = grid;
+  freeSpaceAt(x: number, y: number, r: number, self: SimRobot, atUs: number): FreeSpace {
+    const index = this.#robotIndex(atUs);
+    // A robot farther than this cannot reach `self` within the horizon, whatever either does.
+    const reach =
+      r +
+      (index?.maxRadius ?? 0) +
+      ((self.maxSpeedMps + (index?.maxSpeedMps ?? 0)) * ROOM_HORIZON_US) / 1e6 +
+      (index?.staleness(atUs) ?? 0);
+    const near = index?.near(x, y, reach);
+    return freeSpaceAmong(x, y, r, this.#solids, this.#robots, self, atUs, near);
   }
 
-  /** Advances the clock by one tick and moves every robot. */
-  step(): void {
-    const next = this.#nowUs + this.tickUs;
-    const robots = this.#robots;
-    this.#buildGrid();
-    for (let i = 0; i < robots.length; i += 1) {
-      const robot = robots[i] as SimRobot;
+  /** The index of robot positions, rebuilt when missing or too old; none for few robots. */
+  #robotIndex(nowUs: number): RobotIndex | undefined {
+    if (this.#robots.length < INDEX_MIN_ROBOTS) return undefined;
+    const index = this.#index;
+    if (index === undefined || nowUs < index.builtUs || nowUs - index.builtUs > INDEX_MAX_AGE_US) {
+      this.#index = new RobotIndex(this.#robots, this.#nowUs);
+    }
+    return this.#index;
+  }
+
+  /** A robot's next event may have moved; `everyone`: every robot must measure its room again. */
+  #reschedule(robot: SimRobot, everyone: boolean): void {
+    if (everyone) {
+      this.#index = undefined;
+      for (const other of this.#robots) {
+        other.invalidateRoom();
+        this.#queue.set(other, other.nextEventUs);
+      }
+    }
+    if (this.#robots.includes(robot)) this.#queue.set(robot, robot.nextEventUs);
+  }
+
+  /** Takes every robot event due by `targetUs`, in time order, then sets the clock to it. */
+  #advanceTo(targetUs: number): void {
+    const queue = this.#queue;
+    while (queue.peekTime() <= targetUs) {
+      const robot = queue.peek() as SimRobot;
+      const atUs = queue.peekTime();
+      if (atUs > this.#nowUs) this.#nowUs = atUs;
       const wasRunning = robot.running;
-      robot.advanceTo(next);
+      robot.advanceTo(this.#nowUs);
+      const next = robot.nextEventUs;
+      if (next <= this.#nowUs) {
+        throw new Error(`robot "${robot.id}" did not get past its event at ${this.#nowUs} µs`);
+      }
+      queue.set(robot, next);
       if (wasRunning && !robot.running) {
-        const contact = robot.motion?.contact;
-        if (robot.motion?.outcome === 'collision' && contact !== undefined) {
-          this.events.emit('collision', { robotId: robot.id, contact });
+        const motion = robot.motion;
+        if (motion?.outcome === 'collision' && motion.contact !== undefined) {
+          this.events.emit('collision', { robotId: robot.id, contact: motion.contact });
         }
       }
     }
-    this.#grid = undefined;
-    this.#nowUs = next;
+    this.#nowUs = targetUs;
+  }
+
+  /** Advances the clock by one tick, taking the robot events due by then. */
+  step(): void {
+    const next = this.#nowUs + this.tickUs;
+    this.#advanceTo(next);
     this.#ticks += 1;
     this.events.emit('tick', next);
   }
 
-  /** Advances the clock by `us` microseconds (rounded up to whole ticks). */
+  /**
+   * Advances the clock by `us` microseconds (rounded up to whole ticks). With no `tick`
+   * listener it goes there in one go, from event to event; with one, tick by tick.
+   */
   advance(us: number): void {
-    const target = this.#nowUs + us;
-    while (this.#nowUs < target) this.step();
+    if (!(us > 0)) return;
+    const ticks = Math.ceil(us / this.tickUs);
+    if (this.events.has('tick')) {
+      for (let i = 0; i < ticks; i += 1) this.step();
+      return;
+    }
+    this.#advanceTo(this.#nowUs + ticks * this.tickUs);
+    this.#ticks += ticks;
+    this.events.emit('tick', this.#nowUs);
   }
 
   /**

@@ -1,5 +1,6 @@
 import type { RobotConfig } from '@hal/types';
 import type { CameraOptions } from '../camera.js';
+import type { JpegEncoder } from '../jpeg-encoders.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { RangeSensorOptions } from '../sensors.js';
 import type { World } from '../world.js';
@@ -59,6 +60,11 @@ export interface SimulationHALOptions {
   rangeSensors?: RangeSensorOptions;
   /** Camera model of the built-in software renderer. */
   camera?: CameraOptions;
+  /**
+   * Encodes the software renderer's frames; default the fastest the runtime has (sharp in Node
+   * when installed, the browser's canvas encoder, else jpeg-js).
+   */
+  jpegEncoder?: JpegEncoder;
   /** Renders frames another way (the browser demo uses Three.js). */
   frameSource?: FrameSource;
   /** Device id reported by `getDeviceInfo`. Default `sim-` + the robot id. */

@@ -75,7 +75,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
     this.locomotion = createLocomotion(context);
     this.vision = createVision(
       context,
-      options.frameSource ?? softwareFrameSource(options.camera ?? {}),
+      options.frameSource ?? softwareFrameSource(options.camera ?? {}, options.jpegEncoder),
     );
     this.communication = createCommunication(context, this.#logs, options.logger ?? SILENT_LOGGER);
     this.safety = createSafety(context);

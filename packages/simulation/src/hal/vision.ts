@@ -3,15 +3,19 @@ import type { VisionInterface } from '@hal/types';
 import { renderRobotView } from '../camera.js';
 import type { CameraOptions } from '../camera.js';
 import { encodeJpeg, jpegDataUrl } from '../jpeg.js';
+import type { JpegEncoder } from '../jpeg-encoders.js';
 import { readDistanceSensors, readImu, scanAround } from '../sensors.js';
 import type { HalContext } from './context.js';
 import type { FrameSource } from './options.js';
 
-/** Frames from the built-in software renderer, encoded with jpeg-js (works in Node). */
+/**
+ * Frames from the built-in software renderer (works in Node), encoded with `encoder` (default:
+ * the fastest the runtime has, see `defaultJpegEncoder`).
+ */
 export const softwareFrameSource =
-  (options: CameraOptions): FrameSource =>
+  (options: CameraOptions, encoder?: JpegEncoder): FrameSource =>
   async (world, robot) =>
-    jpegDataUrl(await encodeJpeg(renderRobotView(world, robot, options)));
+    jpegDataUrl(await encodeJpeg(renderRobotView(world, robot, options), 85, encoder));
 
 /**
  * The simulated robot's vision: camera frames from `frameSource`, ray-cast range sensors and an

@@ -35,3 +35,14 @@ export function blockingContact(
   const after = Math.hypot(x - contact.point.x, y - contact.point.y);
   return after < before - 1e-12 ? contact : undefined;
 }
+
+/** How much room a robot has, as the world measures it from one pose at one instant. */
+export interface FreeSpace {
+  /** How far the centre can move, metres, and touch no solid (<= 0: it may touch one now). */
+  distance: number;
+  /** Until when, µs, no other robot can touch it, whatever either does (Infinity: none can). */
+  untilUs: number;
+}
+
+/** Measures the room of a disc of radius r at (x, y), metres, at `nowUs`. */
+export type FreeSpaceTest = (x: number, y: number, radius: number, nowUs: number) => FreeSpace;

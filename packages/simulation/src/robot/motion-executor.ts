@@ -1,15 +1,18 @@
-import { integrateOdometry, MovePlan, VelocityPlan } from '@hal/kinematics';
+import { MovePlan, VelocityPlan } from '@hal/kinematics';
 import type { PlanarPose, StepPlan } from '@hal/kinematics';
 import type { RobotConfig } from '@hal/types';
 import { blockingContact } from './contact.js';
-import type { ContactTest } from './contact.js';
+import type { ContactTest, FreeSpaceTest } from './contact.js';
 import type { MotionHandle, MotionReport, MoveOutcome } from './motion-report.js';
+import { StepOdometry } from './step-odometry.js';
 
 interface RunningMotion {
   plan: StepPlan;
   report: MotionReport;
   /** Stop at this elapsed time, µs (a move's last step, a drive's duration, or Infinity). */
   limitUs: number;
+  /** Master steps the motion makes before its limit (Infinity for an endless drive). */
+  lastStep: number;
   settle: (report: MotionReport) => void;
 }
 
@@ -18,42 +21,72 @@ type MotionFields = Pick<
   'kind' | 'plannedLeft' | 'plannedRight' | 'leftSps' | 'rightSps' | 'speed' | 'speedClamped'
 >;
 
+/** Margin kept from anything the robot might touch when it takes steps unchecked, metres. */
+const CLEARANCE_MARGIN_M = 1e-9;
+
 /**
  * The robot's motion state: at most one running motion (a {@link MovePlan} or a
- * {@link VelocityPlan}), the last one, the pose and the absolute wheel positions. It executes
- * the steps a plan has made by a given time and integrates odometry over them, as the firmware's
- * motion task does, stopping before a step that would bring its footprint into contact.
+ * {@link VelocityPlan}), the last one, the pose and the absolute wheel positions.
+ *
+ * It moves from step to step, not from tick to tick: the plan says in closed form how many whole
+ * steps the master wheel has made by any time, and {@link StepOdometry} integrates them one by
+ * one. Contacts are checked only where one is possible: after a checked step it asks the world how
+ * much room it has (the distance to the nearest solid, and until when no other robot can reach
+ * it), and the steps that stay within that room are taken unchecked; the first step beyond it is
+ * checked, and not taken if it would bring the footprint into contact, as before.
  */
 export class MotionExecutor {
   /** Footprint radius, metres. */
   readonly #radius: number;
+  readonly #onChange: () => void;
   #contactTest: ContactTest = () => undefined;
-  #pose: PlanarPose;
-  #left = 0;
-  #right = 0;
+  #freeSpace: FreeSpaceTest | undefined;
+  readonly #odometry: StepOdometry;
   #motion: RunningMotion | undefined;
   #last: MotionReport | undefined;
   #nextMoveId = 1;
+  /** The first master step of the running motion that must be checked for contact. */
+  #checkStep = 1;
+  readonly #scratch = { xCm: 0, yCm: 0, headingRad: 0 };
 
-  constructor(start: PlanarPose, radius: number) {
-    this.#pose = start;
+  /** `onChange` is told whenever a motion starts or ends. */
+  constructor(start: PlanarPose, radius: number, onChange: () => void = () => undefined) {
+    this.#odometry = new StepOdometry(start);
     this.#radius = radius;
+    this.#onChange = onChange;
   }
 
-  /** How the robot learns what it touches (the world sets it). */
-  setContactTest(test: ContactTest): void {
+  /**
+   * How the robot learns what it touches, and (optionally) how much room it has; without
+   * `freeSpace` every step is checked.
+   */
+  setContactTest(test: ContactTest, freeSpace?: FreeSpaceTest): void {
     this.#contactTest = test;
+    this.#freeSpace = freeSpace;
+    this.invalidateRoom();
+  }
+
+  /** Forgets the room last measured: the next step is checked (the world changed). */
+  invalidateRoom(): void {
+    this.#checkStep = this.#odometry.masterSteps + 1;
   }
 
   get pose(): PlanarPose {
-    return this.#pose;
+    return this.#odometry.pose;
+  }
+  /** Centre, cm (no allocation). */
+  get xCm(): number {
+    return this.#odometry.xCm;
+  }
+  get yCm(): number {
+    return this.#odometry.yCm;
   }
   /** Absolute wheel positions since the start, steps. */
   get leftSteps(): number {
-    return this.#left;
+    return this.#odometry.left;
   }
   get rightSteps(): number {
-    return this.#right;
+    return this.#odometry.right;
   }
   get running(): boolean {
     return this.#motion !== undefined;
@@ -62,10 +95,22 @@ export class MotionExecutor {
   get motion(): MotionReport | undefined {
     return this.#motion?.report ?? this.#last;
   }
-  /** When the running motion's next event (its end) is due, µs, or Infinity. */
+  /** When the running motion's end is due, µs, or Infinity. */
   get endUs(): number {
     const m = this.#motion;
     return m === undefined ? Number.POSITIVE_INFINITY : m.report.startedUs + m.limitUs;
+  }
+
+  /**
+   * When something next happens to the running motion, µs: its first step that must be checked
+   * for contact, or its end; Infinity at rest. Until then it only takes steps that touch nothing.
+   */
+  get nextEventUs(): number {
+    const m = this.#motion;
+    if (m === undefined) return Number.POSITIVE_INFINITY;
+    const end = m.report.startedUs + m.limitUs;
+    if (this.#checkStep > m.lastStep) return end;
+    return Math.min(end, m.report.startedUs + m.plan.masterStepTimeUs(this.#checkStep));
   }
 
   /** Current signed wheel speeds, steps/s (0 at rest). */
@@ -85,7 +130,7 @@ export class MotionExecutor {
     config: RobotConfig,
   ): MotionHandle {
     const plan = new MovePlan(left, right, speed, config.accelerationStepsPerS2);
-    return this.#start(plan, plan.durationUs, nowUs, {
+    return this.#start(plan, plan.durationUs, nowUs, config, {
       kind: 'move',
       plannedLeft: left,
       plannedRight: right,
@@ -107,7 +152,7 @@ export class MotionExecutor {
   ): MotionHandle {
     const plan = new VelocityPlan(left, right, config.accelerationStepsPerS2);
     const limitUs = durationMs === undefined ? Number.POSITIVE_INFINITY : durationMs * 1000;
-    return this.#start(plan, limitUs, nowUs, {
+    return this.#start(plan, limitUs, nowUs, config, {
       kind: 'drive',
       plannedLeft: 0,
       plannedRight: 0,
@@ -116,6 +161,12 @@ export class MotionExecutor {
       speed: Math.max(Math.abs(left), Math.abs(right)),
       speedClamped: clamped,
     });
+  }
+
+  /** The geometry changed (`set_config`): the running motion's remaining steps use it. */
+  reconfigure(config: RobotConfig): void {
+    const m = this.#motion;
+    if (m !== undefined) this.#odometry.reconfigure(m.plan, config);
   }
 
   /** Ends the running motion with `outcome` at `nowUs`. Returns whether one was running. */
@@ -127,40 +178,29 @@ export class MotionExecutor {
     m.report.endedUs = nowUs;
     this.#last = m.report;
     m.settle(m.report);
+    this.#onChange();
     return true;
   }
 
   /**
    * Executes the steps the running motion has made by `untilUs` and integrates odometry over
-   * them (with `config`'s geometry). Ends the motion `done` at its limit, or `collision` (at
-   * `untilUs`, no step taken) when the new pose would be a collision. Returns the motion's outcome
+   * them. Ends the motion `done` at its limit, or `collision` at the instant of a step that would
+   * bring the footprint into contact (that step not taken). Returns the motion's outcome
    * (`running` if it goes on), or undefined when no motion is running.
    */
-  stepTo(untilUs: number, config: RobotConfig): MoveOutcome | undefined {
+  advanceTo(untilUs: number): MoveOutcome | undefined {
     const m = this.#motion;
     if (m === undefined) return undefined;
     const started = m.report.startedUs;
     const elapsed = Math.min(untilUs - started, m.limitUs);
-    // A drive makes only the steps due strictly before its duration (the firmware queues no step
-    // at or after the limit); a move's limit is the time of its last step, which it makes.
-    const steps = m.plan.stepsAt(
-      m.report.kind === 'drive' && elapsed >= m.limitUs ? m.limitUs - 1 : elapsed,
-    );
-    const dl = steps.left - m.report.doneLeft;
-    const dr = steps.right - m.report.doneRight;
-    if (dl !== 0 || dr !== 0) {
-      const next = integrateOdometry(this.#pose, dl, dr, config);
-      const contact = blockingContact(this.#contactTest, this.#radius, this.#pose, next);
-      if (contact !== undefined) {
-        m.report.contact = contact;
-        this.finish('collision', untilUs);
+    const target = this.#stepsBy(m, elapsed);
+    const odometry = this.#odometry;
+    while (odometry.masterSteps < target) {
+      if (odometry.masterSteps + 1 < this.#checkStep) {
+        this.#walk(m, Math.min(target, this.#checkStep - 1));
+      } else if (!this.#checkedStep(m)) {
         return 'collision';
       }
-      this.#pose = next;
-      this.#left += dl;
-      this.#right += dr;
-      m.report.doneLeft = steps.left;
-      m.report.doneRight = steps.right;
     }
     if (elapsed >= m.limitUs) {
       this.finish('done', Math.min(started + m.limitUs, untilUs));
@@ -169,7 +209,87 @@ export class MotionExecutor {
     return 'running';
   }
 
-  #start(plan: StepPlan, limitUs: number, nowUs: number, fields: MotionFields): MotionHandle {
+  /**
+   * Takes the steps due by `untilUs` that need no check (for a reader that wants the pose now;
+   * the world handles the events). Never ends the motion.
+   */
+  catchUp(untilUs: number): void {
+    const m = this.#motion;
+    if (m === undefined) return;
+    const elapsed = Math.min(untilUs - m.report.startedUs, m.limitUs);
+    const target = Math.min(this.#stepsBy(m, elapsed), this.#checkStep - 1);
+    if (target > this.#odometry.masterSteps) this.#walk(m, target);
+  }
+
+  /** Master steps made by `elapsed`: a drive makes only those due strictly before its limit. */
+  #stepsBy(m: RunningMotion, elapsed: number): number {
+    if (elapsed <= 0) return 0;
+    if (m.report.kind === 'drive' && elapsed >= m.limitUs) return m.lastStep;
+    return m.plan.masterStepsAt(elapsed);
+  }
+
+  #walk(m: RunningMotion, k: number): void {
+    const odometry = this.#odometry;
+    const left = odometry.left;
+    const right = odometry.right;
+    odometry.walkTo(k);
+    m.report.doneLeft += odometry.left - left;
+    m.report.doneRight += odometry.right - right;
+  }
+
+  /** The next step, checked: taken (true), or the motion ends in a collision (false). */
+  #checkedStep(m: RunningMotion): boolean {
+    const odometry = this.#odometry;
+    const k = odometry.masterSteps + 1;
+    const atUs = m.report.startedUs + m.plan.masterStepTimeUs(k);
+    const next = this.#scratch;
+    odometry.peek(next);
+    const contact = blockingContact(this.#contactTest, this.#radius, odometry.pose, next);
+    if (contact !== undefined) {
+      m.report.contact = contact;
+      this.finish('collision', atUs);
+      return false;
+    }
+    this.#walk(m, k);
+    this.#measureRoom(m, k, atUs);
+    return true;
+  }
+
+  /** After step k (at `atUs`): which later steps are sure to touch nothing. */
+  #measureRoom(m: RunningMotion, k: number, atUs: number): void {
+    if (this.#freeSpace === undefined) {
+      this.#checkStep = k + 1;
+      return;
+    }
+    const room = this.#freeSpace(
+      this.#odometry.xCm / 100,
+      this.#odometry.yCm / 100,
+      this.#radius,
+      atUs,
+    );
+    const stepCm = this.#odometry.maxStepCm;
+    const free = room.distance - CLEARANCE_MARGIN_M;
+    // Steps by distance: the centre moves at most `stepCm` per master step.
+    const byDistance =
+      stepCm === 0
+        ? Number.POSITIVE_INFINITY
+        : free <= 0
+          ? k
+          : k + Math.floor((free * 100) / stepCm);
+    // Steps by time: only the steps strictly before `untilUs`.
+    const byTime = Number.isFinite(room.untilUs)
+      ? Math.max(k, m.plan.masterStepsAt(room.untilUs - 1 - m.report.startedUs))
+      : Number.POSITIVE_INFINITY;
+    this.#checkStep = Math.min(byDistance, byTime) + 1;
+  }
+
+  #start(
+    plan: StepPlan,
+    limitUs: number,
+    nowUs: number,
+    config: RobotConfig,
+    fields: MotionFields,
+  ): MotionHandle {
     this.finish('replaced', nowUs);
     const report: MotionReport = {
       moveId: this.#nextMoveId,
@@ -186,7 +306,18 @@ export class MotionExecutor {
     const finished = new Promise<MotionReport>((resolve) => {
       settle = resolve;
     });
-    this.#motion = { plan, report, limitUs, settle };
+    const lastStep =
+      report.kind === 'move'
+        ? plan.masterTerm
+        : Number.isFinite(limitUs)
+          ? limitUs <= 0
+            ? 0
+            : plan.masterStepsAt(limitUs - 1)
+          : Number.POSITIVE_INFINITY;
+    this.#motion = { plan, report, limitUs, lastStep, settle };
+    this.#odometry.begin(plan, config);
+    this.#checkStep = 1;
+    this.#onChange();
     if (limitUs <= 0) this.finish('done', nowUs);
     return { report, finished };
   }

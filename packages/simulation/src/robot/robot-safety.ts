@@ -117,6 +117,11 @@ export class RobotSafety {
     return deadline <= nowUs ? deadline : undefined;
   }
 
+  /** When a silent host's timeout of `timeoutMs` expires, µs; Infinity while the host talks. */
+  silentDeadlineUs(timeoutMs: number): number {
+    return this.#hostSilent ? this.#lastHostUs + timeoutMs * 1000 : Number.POSITIVE_INFINITY;
+  }
+
   /** The host timeout expired: records the trip and stops the motion (nothing latches). */
   hostTimedOut(timeoutMs: number): void {
     this.#trip('host_timeout', `no request from the host for ${timeoutMs} ms`);

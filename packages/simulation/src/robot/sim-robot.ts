@@ -1,7 +1,7 @@
 import { normalizeAngle, rotationArcCm } from '@hal/kinematics';
 import { HalError, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
-import type { ContactTest } from './contact.js';
+import type { ContactTest, FreeSpaceTest } from './contact.js';
 import { MotionExecutor } from './motion-executor.js';
 import type { MotionHandle, MotionReport } from './motion-report.js';
 import { RobotSafety } from './robot-safety.js';
@@ -19,7 +19,19 @@ import { WheelAccumulator } from './wheel-accumulator.js';
  *
  * This file is the command layer; the motion state and step execution are a MotionExecutor, the
  * e-stop, step limit and host timeout a RobotSafety.
+ *
+ * In a world, the robot is advanced only at its events (a step that must be checked for contact,
+ * the end of a motion, the host timeout: see `nextEventUs`); between them, reading its state or
+ * commanding it first catches it up to the world's clock with the steps that need no check.
  */
+
+/** How a world drives a robot's time (see {@link SimRobot.setScheduler}). */
+export interface RobotScheduler {
+  /** The world's simulated time, µs. */
+  nowUs(): number;
+  /** The robot's next event may have moved; `everyone`: the room of every robot changed. */
+  reschedule(everyone: boolean): void;
+}
 
 /** The status LED. */
 export interface LedState {
@@ -52,6 +64,7 @@ export class SimRobot {
   readonly #safety: RobotSafety;
   readonly #accLeft: WheelAccumulator;
   readonly #accRight: WheelAccumulator;
+  #scheduler: RobotScheduler | undefined;
 
   constructor(options: SimRobotOptions) {
     this.id = options.id;
@@ -60,7 +73,7 @@ export class SimRobot {
     this.#perCm = stepsPerCm(this.#config);
     const start = options.start ?? { x: 0, y: 0, yaw: 0 };
     const pose = { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) };
-    this.#motions = new MotionExecutor(pose, this.radius);
+    this.#motions = new MotionExecutor(pose, this.radius, () => this.#scheduler?.reschedule(false));
     this.#safety = new RobotSafety({
       nowUs: () => this.#nowUs,
       stopMotion: (outcome) => this.#motions.finish(outcome, this.#nowUs),
@@ -69,9 +82,68 @@ export class SimRobot {
     this.#accRight = new WheelAccumulator(() => this.#config);
   }
 
-  /** The world sets how the robot learns what it touches. */
-  setContactTest(test: ContactTest): void {
-    this.#motions.setContactTest(test);
+  /**
+   * The world sets how the robot learns what it touches and, optionally, how much room it has
+   * (without it every step is checked).
+   */
+  setContactTest(test: ContactTest, freeSpace?: FreeSpaceTest): void {
+    this.#motions.setContactTest(test, freeSpace);
+  }
+
+  /** The world sets its clock and is told when the robot's next event may have moved. */
+  setScheduler(scheduler: RobotScheduler): void {
+    this.#scheduler = scheduler;
+  }
+
+  /** Forgets the room last measured (the world changed around the robot). */
+  invalidateRoom(): void {
+    this.#motions.invalidateRoom();
+  }
+
+  /** Brings the robot up to the world's clock with the steps that need no check. */
+  #catchUp(): void {
+    const scheduler = this.#scheduler;
+    if (scheduler === undefined) return;
+    const now = scheduler.nowUs();
+    if (now > this.#nowUs) {
+      this.#motions.catchUp(now);
+      this.#nowUs = now;
+    }
+  }
+
+  /**
+   * When the robot next needs the world's attention, µs: a step to check for contact, the end of
+   * its motion, or a silent host's timeout; Infinity at rest.
+   */
+  get nextEventUs(): number {
+    const motion = this.#motions.nextEventUs;
+    if (motion === Number.POSITIVE_INFINITY) return motion;
+    return Math.min(motion, this.#safety.silentDeadlineUs(this.#config.hostTimeoutMs));
+  }
+
+  /**
+   * The most the centre can move per second, m/s: the top speed on a straight line, or the
+   * running motion's, if it started under a higher limit.
+   */
+  get maxSpeedMps(): number {
+    const running = this.#motions.running ? (this.#motions.motion?.speed ?? 0) : 0;
+    return Math.max(this.#config.maxSpeedStepsPerS, running) / this.#perCm / 100;
+  }
+
+  /** Length of one wheel step, metres. */
+  get stepLengthM(): number {
+    return 1 / this.#perCm / 100;
+  }
+
+  /** Centre, metres, as last integrated (without catching up), and when, µs. */
+  get settledX(): number {
+    return this.#motions.xCm / 100;
+  }
+  get settledY(): number {
+    return this.#motions.yCm / 100;
+  }
+  get settledUs(): number {
+    return this.#nowUs;
   }
 
   get config(): RobotConfig {
@@ -79,23 +151,29 @@ export class SimRobot {
   }
   /** The robot's simulated time, µs. */
   get nowUs(): number {
+    this.#catchUp();
     return this.#nowUs;
   }
   /** Pose, metres and radians (REP-103). */
   get x(): number {
-    return this.#motions.pose.xCm / 100;
+    this.#catchUp();
+    return this.#motions.xCm / 100;
   }
   get y(): number {
-    return this.#motions.pose.yCm / 100;
+    this.#catchUp();
+    return this.#motions.yCm / 100;
   }
   get yaw(): number {
+    this.#catchUp();
     return this.#motions.pose.headingRad;
   }
   /** Absolute wheel positions since the start, steps. */
   get leftSteps(): number {
+    this.#catchUp();
     return this.#motions.leftSteps;
   }
   get rightSteps(): number {
+    this.#catchUp();
     return this.#motions.rightSteps;
   }
   get running(): boolean {
@@ -103,6 +181,7 @@ export class SimRobot {
   }
   /** The running motion, or the last one. */
   get motion(): MotionReport | undefined {
+    this.#catchUp();
     return this.#motions.motion;
   }
   get emergencyStopped(): boolean {
@@ -126,12 +205,12 @@ export class SimRobot {
   }
 
   /** Current signed wheel speeds, steps/s (0 at rest). */
-  wheelSpeeds(atUs = this.#nowUs): { left: number; right: number } {
+  wheelSpeeds(atUs = this.nowUs): { left: number; right: number } {
     return this.#motions.wheelSpeeds(atUs);
   }
 
   /** Linear (m/s) and angular (rad/s) velocity of the robot's centre. */
-  velocity(atUs = this.#nowUs): { linear: number; angular: number } {
+  velocity(atUs = this.nowUs): { linear: number; angular: number } {
     if (!this.#motions.running) return { linear: 0, angular: 0 };
     const w = this.wheelSpeeds(atUs);
     const l = w.left / this.#perCm;
@@ -143,6 +222,7 @@ export class SimRobot {
 
   /** A valid request from the host arrived now (every command counts; so do heartbeats). */
   touchHost(): void {
+    this.#catchUp();
     this.#safety.touchHost();
   }
 
@@ -151,7 +231,9 @@ export class SimRobot {
    * host timeout) or speaks again (false).
    */
   setHostSilent(silent: boolean): void {
+    this.#catchUp();
     this.#safety.setHostSilent(silent);
+    this.#scheduler?.reschedule(false);
   }
 
   // ---- firmware commands -------------------------------------------------------------------
@@ -264,6 +346,9 @@ export class SimRobot {
     this.touchHost();
     this.#config = robotConfig({ ...this.#config, ...overrides });
     this.#perCm = stepsPerCm(this.#config);
+    this.#motions.reconfigure(this.#config);
+    // A new top speed or geometry changes how fast this robot can reach the others.
+    this.#scheduler?.reschedule(true);
     this.#accLeft.reset();
     this.#accRight.reset();
     return this.#config;
@@ -290,8 +375,9 @@ export class SimRobot {
    */
   advanceTo(nowUs: number): void {
     const config = this.#config;
+    if (nowUs < this.#nowUs) nowUs = this.#nowUs;
     const timeoutUs = this.#safety.hostTimeoutBy(nowUs, config.hostTimeoutMs);
-    const outcome = this.#motions.stepTo(timeoutUs ?? nowUs, config);
+    const outcome = this.#motions.advanceTo(timeoutUs ?? nowUs);
     if (outcome === 'running' && timeoutUs !== undefined) {
       this.#nowUs = Math.min(this.#motions.endUs, timeoutUs);
       this.#safety.hostTimedOut(config.hostTimeoutMs);
