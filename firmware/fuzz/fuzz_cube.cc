@@ -271,8 +271,8 @@ void OneRequest(World& w, Session& s, uint8_t ctl, std::string body) {
   CheckStateAfter(before, after, c, req);
   if (kKeyed && !sign && JsonPart(req) == req) {
     FUZZ_CHECK(!c.ok && c.code == "AUTH_FAILED",
-               "unsigned request not refused with AUTH_FAILED: %s",
-               req.c_str());
+               "unsigned request not refused with AUTH_FAILED: %s\n  reply: %s",
+               req.c_str(), raw.c_str());
   }
   if (c.has_seq && c.has_sid && c.sid == w.cube->session_id() &&
       c.cmd != "hello") {
