@@ -62,6 +62,24 @@ TEST(Auth, ARequestWithoutAMacIsRefusedAndNotExecuted) {
   EXPECT_FALSE(d.cube->running());
 }
 
+TEST(Auth, AnUnsignedRequestWithABadEnvelopeIsStillAuthFailed) {
+  // Found by the cube_keyed fuzz target: an invalid "sid" was reported as
+  // INVALID_PARAMETER before the missing MAC.
+  Device d(kKey);
+  d.Hello();
+  for (const std::string& raw :
+       {std::string(R"({"cmd":"heartbeat","seq":5,"sid":"x"})"),
+        std::string(R"({"cmd":"move_steps","seq":-1,"left":9,"right":9})")}) {
+    const json r = Unsigned(d.Raw(raw));
+    EXPECT_EQ(Code(r), "AUTH_FAILED") << raw;
+  }
+  // Signed, the same envelope error is named as such.
+  const std::string body = R"({"cmd":"heartbeat","seq":5,"sid":"x"})";
+  EXPECT_EQ(Code(Unsigned(d.Raw(body + "#" + MacHex(kKey, body)))),
+            "INVALID_PARAMETER");
+  EXPECT_FALSE(d.cube->running());
+}
+
 TEST(Auth, AWrongMacIsRefused) {
   Device d(kKey);
   d.Hello();

@@ -1,5 +1,6 @@
 #include "harness.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -97,8 +98,13 @@ uint64_t Device::RunUntilIdle(uint64_t max_ms, bool heartbeat) {
   return ran;
 }
 
+std::string VectorPath(const std::string& name) {
+  const char* dir = std::getenv("CUBE_VECTORS_DIR");
+  return std::string(dir != nullptr ? dir : CUBE_VECTORS_DIR) + "/" + name;
+}
+
 std::string ReadVectorFile(const std::string& name) {
-  std::ifstream f(std::string(CUBE_VECTORS_DIR) + "/" + name);
+  std::ifstream f(VectorPath(name));
   if (!f) return "";
   std::stringstream ss;
   ss << f.rdbuf();

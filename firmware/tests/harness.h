@@ -119,7 +119,10 @@ class Device {
   int hellos_ = 0;
 };
 
-// Reads a file under tests/vectors; empty if missing.
+// The path of a file under tests/vectors (the CUBE_VECTORS_DIR environment
+// variable, when set, names another folder).
+std::string VectorPath(const std::string& name);
+// Reads a file under tests/vectors; empty if it cannot be read.
 std::string ReadVectorFile(const std::string& name);
 
 std::vector<uint8_t> FromHex(const std::string& hex);

@@ -8,6 +8,7 @@
 #include "json_number.h"
 #include "json_reader.h"
 #include "json_writer.h"
+#include "text.h"
 
 namespace cube {
 namespace {
@@ -145,6 +146,19 @@ std::string Write(void (*fn)(JsonWriter&)) {
   fn(w);
   EXPECT_TRUE(w.ok());
   return std::string(buf, w.size());
+}
+
+TEST(Text, NeverCutsAUtf8SequenceInHalf) {
+  // The builder holds 159 bytes: after 156 the second two-byte character
+  // (or a three-byte one after 157) would straddle the end; it is dropped
+  // whole.
+  const std::string pad(156, 'x');
+  Text t;
+  t.S(pad.c_str()).S("\xc3\xa9\xc3\xa9");
+  EXPECT_EQ(std::string(t.c_str()), pad + "\xc3\xa9");
+  Text u;
+  u.S(pad.c_str()).S("a\xe2\x9c\x93");  // a check mark, 3 bytes
+  EXPECT_EQ(std::string(u.c_str()), pad + "a");
 }
 
 TEST(JsonWriter, WritesNestedObjectsWithCommas) {

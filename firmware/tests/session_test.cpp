@@ -234,6 +234,19 @@ TEST(Errors, UnknownCommandsAreNamed) {
   EXPECT_EQ(r["error"]["message"], "unknown command \"fly\"");
 }
 
+TEST(Errors, ALongUnknownCommandIsCutToFitAsValidUtf8) {
+  // Found by the cube_keyless fuzz target: the message was cut inside a
+  // two-byte character, so the reply was not valid UTF-8.
+  Device d;
+  for (size_t n = 120; n < 170; ++n) {
+    const std::string cmd = std::string(n, 'a') + "\xc3\xa9\xc3\xa9\xc3\xa9";
+    const json r =
+        json::parse(d.Raw(json({{"cmd", cmd}}).dump()), nullptr, false);
+    ASSERT_FALSE(r.is_discarded()) << "length " << n << ": " << d.last_raw_reply;
+    EXPECT_EQ(Code(r), "UNKNOWN_COMMAND");
+  }
+}
+
 TEST(Errors, MissingOrMistypedCmdIsInvalid) {
   Device d;
   EXPECT_EQ(d.Send({{"left", 1}})["error"]["message"], "\"cmd\" is required");

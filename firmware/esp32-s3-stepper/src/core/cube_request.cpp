@@ -121,6 +121,12 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
       request_.Parse(reinterpret_cast<const char*>(req), json_len);
   const bool parsed = perr == JsonError::kOk;
 
+  // With a key, an unauthenticated request is refused as such, whatever
+  // else is wrong with it.
+  const bool keyed = auth_ == AuthMode::kHmacSha256;
+  const bool mac_ok =
+      !keyed || (mac_hex != nullptr && VerifyMac(req, json_len, mac_hex));
+
   // Envelope fields, when they can be read.
   bool bad_envelope = false;
   if (parsed) {
@@ -135,7 +141,9 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
       if (g == nullptr) continue;
       if (g->type != JsonType::kNumber || !g->is_integer || g->integer < 0 ||
           g->integer > 0xFFFFFFFFLL) {
-        if (!bad_envelope) TypeError(reply, key, "an integer 0..4294967295");
+        if (!bad_envelope && mac_ok) {
+          TypeError(reply, key, "an integer 0..4294967295");
+        }
         bad_envelope = true;
         continue;
       }
@@ -149,9 +157,7 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
     }
   }
 
-  const bool keyed = auth_ == AuthMode::kHmacSha256;
-  if (keyed &&
-      (mac_hex == nullptr || !VerifyMac(req, json_len, mac_hex))) {
+  if (!mac_ok) {
     reply.Fail(kAuthFailed, mac_hex == nullptr
                                 ? "message has no MAC; a key is configured"
                                 : "MAC does not match the message");

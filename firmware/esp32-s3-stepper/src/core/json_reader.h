@@ -64,7 +64,6 @@ class JsonReader {
   char buf_[kMaxInput + 1] = {};
   size_t len_ = 0;
   size_t pos_ = 0;
-  size_t write_ = 0;  // decode cursor for strings, never ahead of pos_
   JsonError error_ = JsonError::kOk;
   JsonField fields_[kMaxFields];
   size_t count_ = 0;

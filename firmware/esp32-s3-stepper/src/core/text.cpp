@@ -22,6 +22,13 @@ void CopyText(char* dst, size_t cap, const char* src, size_t len) {
 
 Text& Text::S(const char* s) {
   while (*s != '\0' && n_ + 1 < sizeof(buf_)) buf_[n_++] = *s++;
+  // Cut inside a UTF-8 sequence: drop its first bytes too.
+  if ((static_cast<unsigned char>(*s) & 0xC0) == 0x80) {
+    while (n_ > 0 && (static_cast<unsigned char>(buf_[n_ - 1]) & 0xC0) == 0x80)
+      --n_;
+    if (n_ > 0 && (static_cast<unsigned char>(buf_[n_ - 1]) & 0xC0) == 0xC0)
+      --n_;
+  }
   buf_[n_] = '\0';
   return *this;
 }
