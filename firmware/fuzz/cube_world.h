@@ -58,7 +58,13 @@ struct World {
     deps.led = &led;
     deps.mac = &mac;
     cube = new Cube(deps, "cube-fuzz");
-    if (keyed) cube->SetKey(FuzzKey().data(), FuzzKey().size());
+    // keyless is the board's explicit opt-out (CUBE_ALLOW_UNAUTHENTICATED); a
+    // Cube given neither would refuse all but stop and estop
+    if (keyed) {
+      cube->SetKey(FuzzKey().data(), FuzzKey().size());
+    } else {
+      cube->AllowUnauthenticated();
+    }
   }
   ~World() { delete cube; }
   World(const World&) = delete;
