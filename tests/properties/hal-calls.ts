@@ -221,7 +221,11 @@ export const HAL_CALLS: HalCall[] = [
     returnsResult: false,
     any: fc.tuple(
       fc.oneof(fc.string({ maxLength: 300 }), anyArg),
-      fc.constantFrom('debug', 'info', 'warn', 'error'),
+      fc.oneof(
+        fc.constantFrom('debug', 'info', 'warn', 'error'),
+        fc.string({ maxLength: 20 }),
+        anyArg,
+      ),
     ),
     run: (hal, a) => call(hal.communication.log, hal.communication, a),
   },
