@@ -3,7 +3,7 @@ import type { CallName, HALToolResult, HardwareAbstractionLayer, RobotConfig } f
 import { parseArguments } from './arguments.js';
 import { dispatch } from './dispatch.js';
 import { checkMotion, RateLimiter } from './leash.js';
-import type { Leash } from './leash.js';
+import type { ApprovalDecision, Leash } from './leash.js';
 import { planMotion } from './motion-plan.js';
 import type { PlanStart } from './motion-plan.js';
 import { errorResult, fromHalResult, fromThrown, fromValue } from './result.js';
@@ -152,7 +152,14 @@ export function createToolExecutor(
       }
     }
     if (leash.approve !== undefined) {
-      const decision = await leash.approve({ tool, args: checked.args });
+      let decision: ApprovalDecision;
+      try {
+        decision = await leash.approve({ tool, args: checked.args });
+      } catch (thrown) {
+        // fail closed: a hook that breaks has not approved anything
+        const why = thrown instanceof Error ? thrown.message : String(thrown);
+        return errorResult('DENIED', `${tool.name}: the approval hook failed: ${why}`);
+      }
       if (!decision.allow) return errorResult('DENIED', `${tool.name}: denied: ${decision.reason}`);
       if (decision.args !== undefined) {
         checked = validate(config, hal, tool.call as CallName, decision.args);

@@ -20,6 +20,18 @@ describe('the leash', () => {
     expect(await x()).toBe(0);
   });
 
+  it('denies a call when the approval hook throws, and nothing moves', async () => {
+    const { run, x } = await leashed({
+      approve: () => {
+        throw new Error('hook broke');
+      },
+    });
+    const result = await run.execute({ name: 'move_forward', arguments: { distanceCm: 10 } });
+    expect(result).toMatchObject({ isError: true, code: 'DENIED' });
+    expect(result.content[0]).toMatchObject({ text: expect.stringContaining('hook broke') });
+    expect(await x()).toBe(0);
+  });
+
   it('runs the arguments the approval hook changed, validated again', async () => {
     const asked: unknown[] = [];
     const { run, x } = await leashed({
