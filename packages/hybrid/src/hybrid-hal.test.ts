@@ -284,6 +284,15 @@ describe('HybridHAL', () => {
       expect((await hal.locomotion.moveForward(1)).code).toBe('NOT_READY');
     });
 
+    it("exposes the physical robot's limits as its robotConfig, or the ones it was given", async () => {
+      const { hal, physical } = hybridRig();
+      await hal.initialize();
+      expect(hal.robotConfig).toBe(physical.robotConfig);
+      const given = { ...physical.robotConfig, maxStepsPerCommand: 1000 };
+      expect(hybridRig({ hybrid: { robotConfig: () => given } }).hal.robotConfig).toBe(given);
+      await hal.cleanup();
+    });
+
     it('fails naming the physical robot when it cannot be reached', async () => {
       const physical = new PhysicalHAL({ mode: 'physical', deviceId: 'cube-1' });
       physical.initialize = async () => {

@@ -74,6 +74,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
   readonly #options: HybridHALOptions;
   readonly #tolerance: DivergenceTolerance;
   readonly #boundary: HalBoundary;
+  readonly #config: () => RobotConfig;
   readonly #now: () => number;
   readonly #listeners = new Set<(event: DivergenceEvent) => void>();
   #ready = false;
@@ -94,9 +95,10 @@ export class HybridHAL implements HardwareAbstractionLayer {
         });
       }
     }
+    this.#config = options.robotConfig ?? (() => exposedConfig(this.physical) ?? V1_ROBOT);
     this.#boundary = new HalBoundary({
       mode: this.mode,
-      config: options.robotConfig ?? (() => exposedConfig(this.physical) ?? V1_ROBOT),
+      config: this.#config,
       isEmergencyStopped: () => this.safety.isEmergencyStopped(),
       isReady: () => this.#ready,
       now: this.#now,
@@ -208,6 +210,11 @@ export class HybridHAL implements HardwareAbstractionLayer {
   }
 
   /** True while the hybrid HAL is initialised and both robots are ready. */
+  /** The limits calls are validated against: the physical robot's (or `options.robotConfig`). */
+  get robotConfig(): RobotConfig {
+    return this.#config();
+  }
+
   isReady(): boolean {
     return this.#ready && this.physical.isReady() && this.twin.isReady();
   }

@@ -1,0 +1,89 @@
+import type { HardwareAbstractionLayer } from '@hal/types';
+import { hasCapability, CAPABILITIES } from '@hal/types';
+import { robotConfigOf } from '@hal/tools';
+import type { HalTool } from '@hal/tools';
+
+/** One resource the server lists, and how to read it. */
+export interface RobotResource {
+  uri: string;
+  name: string;
+  description: string;
+  mimeType: 'application/json' | 'image/jpeg';
+  read: () => Promise<{ text: string } | { blob: string }>;
+}
+
+/** What the server knows of the world the robot is in. */
+export interface RobotWorld {
+  /** The map of the arena (the simulator's), as JSON; absent for a robot with no map. */
+  map?: () => unknown;
+}
+
+const json = (value: unknown) => ({ text: JSON.stringify(value, null, 2) });
+
+/**
+ * The robot's resources: its state (pose, safety, readiness), what it can do (device info,
+ * limits, tools) and the map of its world, and the camera's latest frame where it has one.
+ */
+export function robotResources(
+  hal: HardwareAbstractionLayer,
+  tools: readonly HalTool[],
+  world: RobotWorld = {},
+): RobotResource[] {
+  const resources: RobotResource[] = [
+    {
+      uri: 'robot://state',
+      name: 'state',
+      description:
+        'Pose (REP-103: metres, radians, m/s, rad/s), safety status (e-stop, battery, faults) and readiness',
+      mimeType: 'application/json',
+      read: async () =>
+        json({
+          ready: hal.isReady(),
+          mode: hal.mode,
+          pose: hal.isReady() ? await hal.locomotion.getPose() : null,
+          safety: hal.safety.getSafetyStatus(),
+        }),
+    },
+    {
+      uri: 'robot://capabilities',
+      name: 'capabilities',
+      description:
+        'Who the robot is, its capability strings, its limits and the tools it is offered',
+      mimeType: 'application/json',
+      read: async () =>
+        json({
+          device: hal.getDeviceInfo(),
+          limits: robotConfigOf(hal),
+          tools: tools.map((t) => t.name),
+        }),
+    },
+    {
+      uri: 'robot://map',
+      name: 'map',
+      description:
+        world.map === undefined
+          ? 'No map: this robot has none (it reports no occupancy grid or arena)'
+          : 'The arena (REP-103 world frame, metres): its size, walls, obstacles and start poses',
+      mimeType: 'application/json',
+      read: async () =>
+        json(
+          world.map === undefined
+            ? {
+                map: null,
+                why: 'this robot has no map; scan or read the range sensors to see around it',
+              }
+            : { map: world.map() },
+        ),
+    },
+  ];
+  if (hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.camera)) {
+    resources.push({
+      uri: 'robot://camera',
+      name: 'camera',
+      description: "The camera's latest frame, a JPEG",
+      mimeType: 'image/jpeg',
+      read: async () => ({ blob: (await hal.vision.captureFrame()).replace(/^data:[^,]*,/, '') }),
+    });
+  }
+  return resources;
+}

@@ -1,0 +1,47 @@
+// Shared by the MCP tests: the server process's command line, and what a call answers.
+import { fileURLToPath } from 'node:url';
+import type { Client } from '@modelcontextprotocol/sdk/client/index.js';
+
+export const REPO_ROOT = fileURLToPath(new URL('../..', import.meta.url));
+
+/** Runs the hal-mcp command from source, as `pnpm --filter @hal/mcp start` does. */
+export function serverCommand(args: string[] = []): {
+  command: string;
+  args: string[];
+  cwd: string;
+} {
+  return {
+    command: process.execPath,
+    args: ['--conditions=@hal/source', '--import', 'tsx', 'packages/mcp/src/bin.ts', ...args],
+    cwd: REPO_ROOT,
+  };
+}
+
+export interface CallAnswer {
+  isError: boolean;
+  text: string;
+  json: Record<string, unknown>;
+  images: Array<{ data: string; mimeType: string }>;
+}
+
+/** Calls a tool and sorts out its content. */
+export async function callTool(
+  client: Client,
+  name: string,
+  args?: Record<string, unknown>,
+): Promise<CallAnswer> {
+  const result = await client.callTool({
+    name,
+    ...(args === undefined ? {} : { arguments: args }),
+  });
+  const content = result.content as Array<Record<string, unknown>>;
+  const text = String(content.find((c) => c['type'] === 'text')?.['text'] ?? '');
+  return {
+    isError: result.isError === true,
+    text,
+    json: text === '' ? {} : (JSON.parse(text) as Record<string, unknown>),
+    images: content
+      .filter((c) => c['type'] === 'image')
+      .map((c) => ({ data: String(c['data']), mimeType: String(c['mimeType']) })),
+  };
+}
