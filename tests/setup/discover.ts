@@ -143,13 +143,23 @@ function withoutHeredocs(text: string): string {
 }
 
 /**
+ * Removes what looks like a command but is not one: arithmetic `$(( ))`, and the patterns of
+ * `case` branches (`stepper-*)`, `a | b)`), which start a line inside `case ... esac`.
+ */
+function withoutNonCommands(text: string): string {
+  return text
+    .replace(/\$\(\([^()]*\)\)/g, '$ARITH')
+    .replace(/\bcase\b[\s\S]*?\besac\b/g, (block) => block.replace(/^(\s*)[^\n()]*?\)/gm, '$1'));
+}
+
+/**
  * The external commands shell scripts run (functions they define and shell built-ins left out);
  * a command held in a variable counts as the variable's default (`CXX=${ARM_CXX:-arm-none-eabi-g++}`).
  */
 export function shellCommands(scripts: { text: string; source: string }[]): UsedTool[] {
   const texts = scripts.map((s) => ({
     source: s.source,
-    text: withoutHeredocs(s.text.replace(/(^|\s)#.*$/gm, '$1')),
+    text: withoutNonCommands(withoutHeredocs(s.text.replace(/(^|\s)#.*$/gm, '$1'))),
   }));
   const functions = new Set(
     texts.flatMap((s) => [...s.text.matchAll(/^\s*([A-Za-z_]\w*)\s*\(\)/gm)].map((m) => m[1])),
@@ -158,7 +168,11 @@ export function shellCommands(scripts: { text: string; source: string }[]): Used
   for (const { text, source } of texts) {
     const assignments = shellAssignments(text);
     for (const segment of shellSegments(text)) {
-      const words = segment.trim().split(/\s+/);
+      // leading assignments first, whole (a quoted value may hold spaces)
+      const words = segment
+        .trim()
+        .replace(/^(?:[A-Za-z_]\w*=(?:"[^"]*"|'[^']*'|\S*)\s*)+/, '')
+        .split(/\s+/);
       let word = words.find((w) => !/^[A-Za-z_]\w*=/.test(w) && !SHELL_KEYWORDS.has(w));
       if (word === undefined || word === '' || word.startsWith('$SUB')) continue;
       if (word === 'for' || word === 'case' || SHELL_BUILTINS.has(word)) continue;
