@@ -9,22 +9,10 @@ import {
   World,
 } from '@hal/simulation';
 import type { JpegEncoder, RgbaImage } from '@hal/simulation';
+import { reportFigure } from './report/figures.js';
 
 const ROUNDS = 8;
 const FRAMES_PER_ROUND = 10;
-
-function report(
-  name: string,
-  value: number,
-  unit: string,
-  alternative?: string,
-  altValue?: number,
-) {
-  const ratio = altValue === undefined ? undefined : altValue / value;
-  console.log(
-    `BENCH_JSON ${JSON.stringify({ bench: 'camera', name, value, unit, alternative, altValue, ratio })}`,
-  );
-}
 
 const sharp = await loadSharpEncoder();
 if (sharp === undefined) throw new Error('sharp is not installed (pnpm install)');
@@ -97,6 +85,27 @@ console.log(
     `(${(1000 / capNew).toFixed(0)} frames/s), ${capOld.toFixed(2)} ms with jpeg-js ` +
     `(${(capOld / capNew).toFixed(1)}x)`,
 );
-report('render 320x240', renderMs, 'ms/frame');
-report('JPEG encode 320x240, sharp', newMs, 'ms/frame', 'jpeg-js', oldMs);
-report('captureFrame 320x240, sharp', capNew, 'ms/frame', 'captureFrame with jpeg-js', capOld);
+reportFigure({
+  bench: 'camera',
+  name: 'render 320x240',
+  value: renderMs,
+  unit: 'ms/frame',
+  better: 'lower',
+});
+reportFigure({
+  bench: 'camera',
+  name: 'JPEG encode 320x240, sharp',
+  value: newMs,
+  unit: 'ms/frame',
+  better: 'lower',
+  alternative: { name: 'jpeg-js', value: oldMs },
+});
+reportFigure({
+  bench: 'camera',
+  name: 'captureFrame 320x240 in Node (sharp)',
+  value: capNew,
+  unit: 'ms/frame',
+  better: 'lower',
+  alternative: { name: 'captureFrame with jpeg-js', value: capOld },
+  goal: '<= 8 ms',
+});

@@ -9,6 +9,7 @@ import { StreamableHTTPClientTransport } from '@modelcontextprotocol/sdk/client/
 import { createRobotMcpServer, serveHttp } from '@hal/mcp';
 import { SimulationHAL } from '@hal/simulation';
 import { createToolExecutor } from '@hal/tools';
+import { reportFigure } from './report/figures.js';
 
 const ROUNDS = 400;
 const WARMUP = 40;
@@ -70,17 +71,14 @@ for (const transport of ['stdio', 'http'] as const) {
     console.log(
       `  MCP over ${transport.padEnd(5)} ${label}: ${value.toFixed(1).padStart(8)} us  (${(value / directP).toFixed(0)}x the direct call)`,
     );
-    console.log(
-      `BENCH_JSON ${JSON.stringify({
-        kind: 'figure',
-        bench: 'mcp',
-        name: `tool call over ${transport} ${label}`,
-        value: Math.round(value * 10) / 10,
-        unit: 'us',
-        better: 'lower',
-        alternative: { name: `direct getPose ${label}`, value: Math.round(directP * 10) / 10 },
-      })}`,
-    );
+    reportFigure({
+      bench: 'mcp',
+      name: `tool call over ${transport} ${label}`,
+      value: Math.round(value * 10) / 10,
+      unit: 'us',
+      better: 'lower',
+      alternative: { name: `direct getPose ${label}`, value: Math.round(directP * 10) / 10 },
+    });
   }
 }
 

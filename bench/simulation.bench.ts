@@ -7,25 +7,13 @@
 import { VelocityPlan } from '@hal/kinematics';
 import { SimulationHAL, World } from '@hal/simulation';
 import { DcMotorSimulator, dcArena } from './alternatives/dc-motor-simulator.js';
+import { reportFigure, reportPoint } from './report/figures.js';
 
 const SPACING = 1.5;
 const LEFT_SPS = 1024;
 const RIGHT_SPS = 905; // circles of about 0.8 m radius, clear of the neighbours
 const ROUNDS = 5;
 const MIN_ROUND_MS = 150;
-
-function report(
-  name: string,
-  value: number,
-  unit: string,
-  alternative?: string,
-  altValue?: number,
-) {
-  const ratio = altValue === undefined ? undefined : value / altValue;
-  console.log(
-    `BENCH_JSON ${JSON.stringify({ bench: 'simulation', name, value, unit, alternative, altValue, ratio })}`,
-  );
-}
 
 function gridStart(i: number, robots: number): { x: number; y: number } {
   const side = Math.ceil(Math.sqrt(robots));
@@ -142,8 +130,50 @@ for (const robots of [1, 10, 100, 1000]) {
       `${(o / y).toFixed(1)}x); the whole world runs ${fmt(o / robots)}x real time`,
   );
   const label = `${robots} robot${robots === 1 ? '' : 's'}`;
-  report(label, o, 'robot-s/s', '10 ms DC-motor simulator, no stepper model', x);
-  report(`${label}, vs physics only`, o, 'robot-s/s', 'the same, physics step only', y);
+  const note =
+    "the alternative is a model of the replaced stack's simulator written here (bench/alternatives), not its code";
+  reportFigure({
+    bench: 'simulation',
+    name: `${label}, simulated robot-seconds per wall second`,
+    value: o,
+    unit: 'robot-s/s',
+    better: 'higher',
+    alternative: { name: '10 ms DC-motor simulator, no stepper model', value: x },
+    goal: robots === 1000 ? 'faster than real time' : robots === 10 ? undefined : '>= 10x',
+    note,
+  });
+  reportFigure({
+    bench: 'simulation',
+    name: `${label}, against the alternative's physics step only`,
+    value: o,
+    unit: 'robot-s/s',
+    better: 'higher',
+    alternative: { name: 'the same, without its per-step state snapshot', value: y },
+    note,
+  });
+  reportFigure({
+    bench: 'simulation',
+    name: `${label}, whole world against real time`,
+    value: o / robots,
+    unit: 'x real time',
+    better: 'higher',
+  });
+  for (const [series, value] of [
+    ['event stepping (ours)', o],
+    ['10 ms DC-motor simulator', x],
+  ] as const) {
+    reportPoint({
+      plot: 'simulation-robots',
+      title: 'Simulation speed by robot count',
+      series,
+      x: robots,
+      y: value,
+      xLabel: 'robots in one world',
+      yLabel: 'simulated robot-seconds per wall second',
+      logX: true,
+      logY: true,
+    });
+  }
 }
 
 // Through the HAL in fast mode (what an agent or a test sees): validated calls, whole motions.
@@ -166,4 +196,10 @@ console.log(
   `SimulationHAL, fast clock: ${fmt(calls / wallS)} motion calls/s ` +
     `(moveForward(5) and rotate(90) in turn), ${fmt(simS / wallS)}x real time`,
 );
-report('SimulationHAL fast-clock motion calls', calls / wallS, 'calls/s');
+reportFigure({
+  bench: 'simulation',
+  name: 'SimulationHAL fast-clock motion calls (moveForward(5), rotate(90))',
+  value: calls / wallS,
+  unit: 'calls/s',
+  better: 'higher',
+});
