@@ -1,51 +1,15 @@
 // The one command: hal-serve, run as a user runs it, serving PhysicalHAL to the emulated robot
 // and the embedded simulator; RemoteHAL drives each over a real WebSocket.
-import { spawn } from 'node:child_process';
-import type { ChildProcess } from 'node:child_process';
-import { createInterface } from 'node:readline';
-import { fileURLToPath } from 'node:url';
 import { RemoteHAL } from '@hal/remote';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { startHalServe as serve, stopAllHalServes } from './hal-serve.js';
 
-const CLI = fileURLToPath(new URL('../../packages/remote/src/cli/main.ts', import.meta.url));
-const children: ChildProcess[] = [];
 const hals: RemoteHAL[] = [];
-process.on('exit', () => {
-  for (const child of children) child.kill('SIGKILL');
-});
-
-/** Starts hal-serve; resolves with its URL once it prints `listening`, or rejects with its stderr. */
-function serve(args: string[], env: Record<string, string> = {}): Promise<string> {
-  const child = spawn(
-    process.execPath,
-    ['--conditions=@hal/source', '--import', 'tsx', CLI, '--port', '0', ...args],
-    { stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, ...env } },
-  );
-  children.push(child);
-  let stderr = '';
-  child.stderr!.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`hal-serve did not start: ${stderr}`)), 30_000);
-    createInterface({ input: child.stdout! }).on('line', (line) => {
-      const match = /^listening (ws:\/\/\S+)/.exec(line);
-      if (match !== null) {
-        clearTimeout(timer);
-        resolve(match[1]!);
-      }
-    });
-    child.once('exit', (code) => {
-      clearTimeout(timer);
-      reject(Object.assign(new Error(stderr), { exitCode: code }));
-    });
-  });
-}
 
 afterEach(async () => {
   await Promise.all(hals.splice(0).map((hal) => hal.cleanup()));
-  for (const child of children.splice(0)) {
-    if (child.exitCode === null) child.kill('SIGTERM');
-  }
+  stopAllHalServes();
 });
 afterAll(stopAllEmulators);
 
