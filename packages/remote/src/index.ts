@@ -5,7 +5,6 @@ export type { WebSocketConstructor, WebSocketLike } from './client/websocket.js'
 export {
   CONTROLLER_CALLS,
   MESSAGE_SCHEMAS,
-  PRIORITY_CALLS,
   REMOTE_CALLS,
   RESULT_CALLS,
   VALUE_CALLS,

@@ -80,12 +80,6 @@ export const CONTROLLER_CALLS: ReadonlySet<RemoteCallName> = new Set<RemoteCallN
   'log',
 ]);
 
-/** Calls handled on the priority path: run the moment they arrive, whoever sends them. */
-export const PRIORITY_CALLS: ReadonlySet<RemoteCallName> = new Set<RemoteCallName>([
-  'emergencyStop',
-  'stop',
-]);
-
 /** Most arguments any call takes, plus headroom. */
 export const MAX_ARGS = 8;
 

@@ -22,6 +22,8 @@ export interface ConnectionOptions {
   token: string | undefined;
   WebSocket: WebSocketConstructor | undefined;
   clientId: string;
+  /** Ask the server never to make this client the controller. */
+  watchOnly: boolean;
   connectTimeoutMs: number;
   reconnect: boolean;
   reconnectDelayMs: number;
@@ -112,6 +114,11 @@ export class Connection {
     const { ctor, headers } = await resolveWebSocket(this.#options.WebSocket);
     const token = this.#options.token;
     let url = this.#options.url;
+    if (this.#options.watchOnly) {
+      const parsed = new URL(url);
+      parsed.searchParams.set('role', 'watch');
+      url = parsed.toString();
+    }
     let socket: WebSocketLike;
     try {
       if (token !== undefined && headers) {

@@ -10,7 +10,7 @@ export interface RemoteHALOptions {
   token?: string;
   /**
    * 'auto' (default): control the robot if no one does, else watch; 'take': take control on
-   * connecting (the previous controller is told); 'watch': never control (reads, state, e-stop).
+   * connecting (the previous controller is told); 'watch': never control (reads, state, e-stop; connects with `?role=watch`).
    */
   control?: 'auto' | 'take' | 'watch';
   /** WebSocket constructor. Default `globalThis.WebSocket`, else the `ws` package. */

@@ -75,6 +75,17 @@ describe('RemoteHAL', () => {
     await vi.waitFor(() => expect(first.role).toBe('watcher'));
   });
 
+  it("with control: 'watch', never controls, even when it arrives first", async () => {
+    const { server } = await served();
+    const watcher = remote({ url: server.url, control: 'watch' });
+    await watcher.initialize();
+    expect(watcher.role).toBe('watcher');
+    expect((await watcher.locomotion.moveForward(1)).code).toBe('NOT_CONTROLLER');
+    const driver = remote({ url: server.url });
+    await driver.initialize();
+    expect(driver.role).toBe('controller');
+  });
+
   it('keeps control past the heartbeat timeout while idle, because it sends heartbeats', async () => {
     const { server } = await served({ heartbeatTimeoutMs: 300 });
     const hal = remote({ url: server.url });

@@ -47,6 +47,7 @@ export class RemoteHAL implements HardwareAbstractionLayer {
       token: options.token,
       WebSocket: options.WebSocket,
       clientId: this.#options.clientId,
+      watchOnly: this.#options.control === 'watch',
       connectTimeoutMs: this.#options.connectTimeoutMs,
       reconnect: this.#options.reconnect,
       reconnectDelayMs: this.#options.reconnectDelayMs,

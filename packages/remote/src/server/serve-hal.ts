@@ -3,6 +3,7 @@
 // others watch. See docs/remote.md.
 import { randomUUID } from 'node:crypto';
 import { createServer } from 'node:http';
+import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { HalError, MOTION_CALLS, toHalError } from '@hal/types';
 import type { CallName, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
@@ -206,11 +207,14 @@ export async function serveHal(
     }
     wss.handleUpgrade(request, socket, head, (ws) => wss.emit('connection', ws, request));
   });
-  wss.on('connection', (socket: WebSocket) => {
+  wss.on('connection', (socket: WebSocket, request: IncomingMessage) => {
+    // `?role=watch`: a client that only watches never gets control by arriving first.
+    const watchOnly =
+      new URL(request.url ?? '/', 'http://localhost').searchParams.get('role') === 'watch';
     const session: ClientSession = {
       id: randomUUID().slice(0, 8),
       socket,
-      role: controller === undefined ? 'controller' : 'watcher',
+      role: controller === undefined && !watchOnly ? 'controller' : 'watcher',
       lastSeen: Date.now(),
       subscribed: false,
       running: 0,
