@@ -97,6 +97,20 @@ describe('serveHal', () => {
       expect(hal.safety.isEmergencyStopped()).toBe(true);
     });
 
+    it('stops a long move at once when the controller itself sends it on the same socket', async () => {
+      const { sim: hal } = await rig();
+      const controller = await client();
+      const move = controller.call('moveForward', 20);
+      await new Promise((r) => setTimeout(r, 300));
+      const started = Date.now();
+      const stop = await controller.reply(controller.call('emergencyStop'));
+      expect(Date.now() - started).toBeLessThan(2000);
+      expect(stop).toMatchObject({ ok: true, value: { success: true } });
+      const moved = await controller.reply(move, 10_000);
+      expect(moved.ok && (moved.value as { success: boolean }).success).toBe(false);
+      expect((await hal.locomotion.getPose()).position.x).toBeLessThan(0.1);
+    });
+
     it('passes any reason, even one the e-stop schema would refuse, to the HAL', async () => {
       const { sim: hal } = await rig();
       await client();
