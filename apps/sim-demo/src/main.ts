@@ -9,6 +9,7 @@ import { TrajectoryPlot } from './plot.js';
 import { noteHalEvents, ResultsLog } from './results-log.js';
 import { StatusLine } from './status-line.js';
 import { TelemetryPanel } from './telemetry-panel.js';
+import { RemotePanel } from './remote-panel.js';
 import { readUrlSettings } from './url-settings.js';
 import { Viewport } from './viewport.js';
 
@@ -85,6 +86,8 @@ const telemetry = new TelemetryPanel({
   estopButton: element('estop-button'),
 });
 
+const remote = new RemotePanel(element('remote-card'), hal, log);
+
 // ---- the frame loop ------------------------------------------------------------------------------
 
 let lastTelemetry = 0;
@@ -111,6 +114,7 @@ const hooks = {
   world,
   robotId,
   goalState: () => goals.state,
+  remote: () => remote.state,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
   /** Where a world point (metres) is on the screen, in client pixels. */
   worldToClient: (x: number, y: number) => viewport.worldToClient(x, y),

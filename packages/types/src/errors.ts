@@ -35,6 +35,8 @@ export const HAL_ERROR_CODES = [
   'SESSION_MISMATCH',
   /** The request's authentication code was missing or wrong. */
   'AUTH_FAILED',
+  /** Another client controls the robot: this one may only watch (read calls, state, e-stop). */
+  'NOT_CONTROLLER',
 ] as const;
 
 /** A HAL error code (see {@link HAL_ERROR_CODES}). */

@@ -1,0 +1,57 @@
+// Builds the chosen HAL, initialises it and serves it until stopped.
+import { PhysicalHAL } from '@hal/physical';
+import { SimulationHAL } from '@hal/simulation';
+import type { HardwareAbstractionLayer } from '@hal/types';
+import type { RemoteLogger } from '../logger.js';
+import { checkBinding } from '../server/auth.js';
+import { serveHal } from '../server/index.js';
+import type { HalServer } from '../server/index.js';
+import type { ServeCommand } from './parse.js';
+
+/** Makes the HAL a command asks for (not yet initialised). */
+export function buildHal(command: ServeCommand, logger: RemoteLogger): HardwareAbstractionLayer {
+  const { hal } = command;
+  if (hal.kind === 'sim') {
+    return new SimulationHAL({ deviceId: command.deviceId, clock: 'realtime' });
+  }
+  const key = hal.key === undefined ? {} : { key: hal.key };
+  const connection =
+    hal.kind === 'udp'
+      ? { type: 'wifi' as const, host: hal.host, udpPort: hal.port, ...key }
+      : {
+          type: 'serial' as const,
+          port: hal.path,
+          ...key,
+          ...(hal.baudRate === undefined ? {} : { baudRate: hal.baudRate }),
+        };
+  return new PhysicalHAL(
+    { mode: 'physical', deviceId: command.deviceId, connection },
+    { logger, timeScale: command.timeScale },
+  );
+}
+
+/** Initialises the HAL and serves it. */
+export async function runServe(
+  command: ServeCommand,
+  logger: RemoteLogger,
+): Promise<{ hal: HardwareAbstractionLayer; server: HalServer }> {
+  const hal = buildHal(command, logger);
+  const options = {
+    host: command.host,
+    port: command.port,
+    stateRateHz: command.stateRateHz,
+    heartbeatTimeoutMs: command.heartbeatTimeoutMs,
+    logger,
+    ...(command.token === undefined ? {} : { token: command.token }),
+  };
+  // Refuse an unsafe binding before touching the robot.
+  checkBinding(command.host, command.token);
+  await hal.initialize();
+  try {
+    const server = await serveHal(hal, options);
+    return { hal, server };
+  } catch (e) {
+    await hal.cleanup();
+    throw e;
+  }
+}

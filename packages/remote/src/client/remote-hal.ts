@@ -1,0 +1,231 @@
+// A HardwareAbstractionLayer whose robot is served by serveHal() in another process. Node and
+// browser: it never imports `ws` statically.
+import {
+  HALToolResultSchema,
+  HalError,
+  MOTION_CALLS,
+  READ_RESULT_SCHEMAS,
+  failureResult,
+  isHalError,
+} from '@hal/types';
+import type {
+  CallName,
+  CommunicationInterface,
+  DeviceInfo,
+  HALLogLevel,
+  HALMode,
+  HALToolResult,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  SafetyInterface,
+  SafetyStatus,
+  VisionInterface,
+} from '@hal/types';
+import { silentRemoteLogger, writeLog } from '../logger.js';
+import type { ResultCallName, Role, ValueCallName } from '../protocol.js';
+import { Connection } from './connection.js';
+import { REMOTE_DEFAULTS } from './options.js';
+import type { RemoteHALOptions } from './options.js';
+
+const UNKNOWN_SAFETY: SafetyStatus = { emergencyStopped: false, batteryLevel: 100, errors: [] };
+
+export class RemoteHAL implements HardwareAbstractionLayer {
+  readonly locomotion: LocomotionInterface;
+  readonly vision: VisionInterface;
+  readonly communication: CommunicationInterface;
+  readonly safety: SafetyInterface;
+
+  readonly #options: Required<Omit<RemoteHALOptions, 'token' | 'WebSocket'>> &
+    Pick<RemoteHALOptions, 'token' | 'WebSocket'>;
+  readonly #link: Connection;
+  #initialized = false;
+
+  constructor(options: RemoteHALOptions) {
+    this.#options = { ...REMOTE_DEFAULTS, logger: silentRemoteLogger, ...options };
+    this.#link = new Connection({
+      url: options.url,
+      token: options.token,
+      WebSocket: options.WebSocket,
+      clientId: this.#options.clientId,
+      watchOnly: this.#options.control === 'watch',
+      connectTimeoutMs: this.#options.connectTimeoutMs,
+      reconnect: this.#options.reconnect,
+      reconnectDelayMs: this.#options.reconnectDelayMs,
+      logger: this.#options.logger,
+      onConnected: () => this.#onConnected(),
+    });
+    const result =
+      (call: ResultCallName) =>
+      (...args: unknown[]) =>
+        this.#result(call, args);
+    const value =
+      (call: ValueCallName) =>
+      (...args: unknown[]) =>
+        this.#value(call, args);
+    this.locomotion = {
+      drive: result('drive'),
+      moveTo: result('moveTo'),
+      rotate: result('rotate'),
+      moveForward: result('moveForward'),
+      moveBackward: result('moveBackward'),
+      stop: result('stop'),
+      getPose: value('getPose'),
+    } as LocomotionInterface;
+    this.vision = {
+      captureFrame: value('captureFrame'),
+      scan: value('scan'),
+      getDistanceSensors: value('getDistanceSensors'),
+      getLineSensors: value('getLineSensors'),
+      getIMU: value('getIMU'),
+    } as VisionInterface;
+    this.communication = {
+      speak: result('speak'),
+      setLED: result('setLED'),
+      playSound: result('playSound'),
+      log: (message: string, level?: HALLogLevel) => this.#remoteLog(message, level),
+    } as CommunicationInterface;
+    this.safety = {
+      emergencyStop: result('emergencyStop'),
+      resetEmergencyStop: result('resetEmergencyStop'),
+      isEmergencyStopped: () => this.#cachedSafety().emergencyStopped,
+      getSafetyStatus: () => this.#cachedSafety(),
+    } as SafetyInterface;
+  }
+
+  /** The served HAL's mode (known once connected). */
+  get mode(): HALMode {
+    return this.#link.hello?.mode ?? this.#options.mode;
+  }
+
+  /** Whether this client controls the robot or watches it. */
+  get role(): Role {
+    return this.#link.role;
+  }
+
+  /** Calls `listener` when this client gains or loses control. Returns an unsubscribe function. */
+  onRoleChange(listener: (role: Role, reason: string) => void): () => void {
+    this.#link.roleListeners.add(listener);
+    return () => this.#link.roleListeners.delete(listener);
+  }
+
+  /** Takes control of the robot; the previous controller is told and becomes a watcher. */
+  async takeControl(): Promise<void> {
+    await this.#link.request('take_control', [], this.#options.requestTimeoutMs);
+  }
+
+  async initialize(): Promise<void> {
+    if (this.isReady()) return;
+    this.#initialized = true;
+    try {
+      await this.#link.open();
+      if (this.#options.control === 'take') await this.takeControl();
+    } catch (e) {
+      this.#initialized = false;
+      this.#link.close();
+      throw isHalError(e) ? e : new HalError('NOT_CONNECTED', String(e), { cause: e });
+    }
+  }
+
+  async cleanup(): Promise<void> {
+    if (!this.#initialized) return;
+    this.#initialized = false;
+    if (this.#link.connected && this.#link.role === 'controller') {
+      // Leave the robot still: a controller going away stops its motion (the server would too).
+      await this.#link.request('stop', [], this.#options.requestTimeoutMs).catch(() => undefined);
+    }
+    this.#link.close();
+  }
+
+  isReady(): boolean {
+    return this.#initialized && this.#link.connected;
+  }
+
+  getDeviceInfo(): DeviceInfo {
+    const device = this.#link.hello?.device;
+    if (device !== undefined) return { ...device, capabilities: [...device.capabilities] };
+    return { id: this.#options.clientId, type: 'remote', mode: this.mode, capabilities: [] };
+  }
+
+  #onConnected(): void {
+    this.#link.send('hal.remote.subscribe', { state: true });
+    if (this.#options.control === 'take' && this.#initialized && this.#link.role !== 'controller') {
+      this.takeControl().catch(() => undefined);
+    }
+  }
+
+  #cachedSafety(): SafetyStatus {
+    const safety = this.#link.safety ?? UNKNOWN_SAFETY;
+    return { ...safety, errors: [...safety.errors] };
+  }
+
+  #refusal(): HalError | undefined {
+    if (!this.#initialized) {
+      return new HalError('NOT_READY', 'the remote HAL is not initialised: call initialize()');
+    }
+    if (!this.#link.connected) {
+      return new HalError('NOT_CONNECTED', `not connected to ${this.#options.url}; reconnecting`);
+    }
+    return undefined;
+  }
+
+  #timeout(call: string): number {
+    return MOTION_CALLS.includes(call as CallName)
+      ? this.#options.motionTimeoutMs
+      : this.#options.requestTimeoutMs;
+  }
+
+  async #result(call: ResultCallName, args: unknown[]): Promise<HALToolResult> {
+    const started = Date.now();
+    const refusal = this.#refusal();
+    if (refusal !== undefined) return failureResult(this.mode, Date.now(), refusal, 0);
+    try {
+      const value = await this.#link.request(call, args, this.#timeout(call));
+      const parsed = HALToolResultSchema.safeParse(value);
+      if (!parsed.success) {
+        throw new HalError('MALFORMED', `the server's "${call}" result is not a HALToolResult`);
+      }
+      return parsed.data as HALToolResult;
+    } catch (e) {
+      return failureResult(this.mode, Date.now(), e, Date.now() - started);
+    }
+  }
+
+  async #value(call: ValueCallName, args: unknown[]): Promise<never> {
+    const refusal = this.#refusal();
+    if (refusal !== undefined) throw refusal;
+    const value = await this.#link.request(call, args, this.#timeout(call));
+    const parsed = READ_RESULT_SCHEMAS[call].safeParse(value);
+    if (!parsed.success) {
+      throw new HalError('MALFORMED', `the server's "${call}" answer does not match its schema`, {
+        details: { issue: parsed.error.issues[0]?.message },
+      });
+    }
+    return parsed.data as never;
+  }
+
+  #remoteLog(message: string, level?: HALLogLevel): void {
+    try {
+      const refusal = this.#refusal();
+      if (refusal !== undefined) {
+        writeLog(
+          this.#options.logger,
+          'warn',
+          'hal:remote:client',
+          `log refused: ${refusal.message}`,
+        );
+        return;
+      }
+      this.#link
+        .request('log', [message, level], this.#options.requestTimeoutMs)
+        .catch((e: unknown) => {
+          writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'log refused', {
+            error: String(e),
+          });
+        });
+    } catch (e) {
+      writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'log failed', {
+        error: String(e),
+      });
+    }
+  }
+}
