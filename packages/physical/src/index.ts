@@ -1,7 +1,8 @@
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 
-export type { SessionState } from './session.js';
+export { DEFAULT_SAFETY_LANE } from './session.js';
+export type { SafetyLaneTiming, SessionState } from './session.js';
 
 export { MockRobot } from './mock/mock-robot.js';
 export type { MockRobotOptions } from './mock/mock-robot.js';
@@ -49,6 +50,7 @@ export {
   SetLedReplySchema,
   StatusReplySchema,
   StopReplySchema,
+  StopReportSchema,
 } from './protocol/schemas.js';
 export type {
   Command,
@@ -68,6 +70,7 @@ export type {
   SetLedReply,
   StatusReply,
   StopReply,
+  StopReport,
 } from './protocol/schemas.js';
 
 export {

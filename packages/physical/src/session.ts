@@ -29,7 +29,39 @@ export interface SessionOptions {
   onReply?: (cmd: Command, data: Record<string, unknown>) => void;
   /** Called when the state changes. */
   onStateChange?: (state: SessionState, reason: string) => void;
+  /** Timing of the safety lane (asked before every stop); default {@link DEFAULT_SAFETY_LANE}. */
+  safetyLane?: () => SafetyLaneTiming;
 }
+
+/** How the safety lane resends a `stop` or `estop` until the robot acknowledges it. */
+export interface SafetyLaneTiming {
+  /** Resend after this long without a reply, ms. */
+  resendMs: number;
+  /** Give up after this long in all, ms. */
+  totalMs: number;
+}
+
+/**
+ * Resend every 20 ms for up to the protocol's 3 x 2000 ms: at 30% loss a stop then reaches the
+ * robot within 4 sends (60 ms) 99 times in 100. Duplicates are harmless: a stop is idempotent.
+ */
+export const DEFAULT_SAFETY_LANE: SafetyLaneTiming = { resendMs: 20, totalMs: 6000 };
+
+/** A stop or e-stop the robot acknowledged, with its reply. */
+export type SafetyInterrupt =
+  | { cmd: 'stop'; reply: ReplyOf<'stop'> }
+  | { cmd: 'estop'; reply: ReplyOf<'estop'> };
+
+/** The commands of the safety lane (protocol 1.1, section 4.1). */
+export type SafetyCommand = 'stop' | 'estop';
+
+/** Commands that move the wheels: never sent once a stop issued after them went out. */
+const MOTION_COMMANDS: ReadonlySet<Command> = new Set([
+  'move_steps',
+  'move_cm',
+  'rotate_deg',
+  'drive',
+]);
 
 /** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
 const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
@@ -57,6 +89,13 @@ export function robotError(cmd: string, reply: WireReply): HalError {
  * strictly increasing `seq`, one at a time (so a retry can never arrive after a newer request and
  * be refused as stale). It sends heartbeats while idle, turns a dead link or a replaced session
  * into NOT_CONNECTED, and keeps saying `hello` until the robot answers again.
+ *
+ * `stop` and `estop` take the safety lane instead (protocol 1.1, section 4.1): sent at once,
+ * beside whatever request is pending, and resent every few ms until acknowledged. The robot
+ * executes them whatever their `seq` without advancing the session's highest `seq`, so the
+ * pending request's retries stay valid; and it refuses a motion command numbered below a stop it
+ * executed, so a move sent before a stop can never start after it. A motion command still waiting
+ * in the queue when a stop is issued is not sent at all.
  */
 export class Session {
   readonly #options: SessionOptions;
@@ -71,6 +110,10 @@ export class Session {
   #heartbeatPaused = false;
   #reconnectTimer: ReturnType<typeof setTimeout> | undefined;
   #hello: HelloReply | undefined;
+  /** Counts the stops issued; a queued motion command sent later than a stop is dropped. */
+  #safetyEpoch = 0;
+  #lastSafety: SafetyCommand = 'stop';
+  readonly #interruptWaiters = new Set<{ after: number; wake: (i: SafetyInterrupt) => void }>();
   /** Replies whose data did not match the command's schema. */
   malformedReplies = 0;
 
@@ -121,10 +164,25 @@ export class Session {
     params: RequestParams[C],
     options: RequestOptions = {},
   ): Promise<ReplyOf<C>> {
+    if (cmd === 'stop' || cmd === 'estop') {
+      // the safety lane; `options` bound its total wait (attempts x timeout)
+      const bound =
+        options.attempts !== undefined || options.timeoutMs !== undefined
+          ? {
+              resendMs: DEFAULT_SAFETY_LANE.resendMs,
+              totalMs: (options.attempts ?? 1) * (options.timeoutMs ?? DEFAULT_SAFETY_LANE.totalMs),
+            }
+          : undefined;
+      return this.safetyCommand(cmd, params as RequestParams[SafetyCommand], bound) as Promise<
+        ReplyOf<C>
+      >;
+    }
     const safety = SAFETY_COMMANDS.has(cmd);
     this.#checkUsable(cmd, safety);
+    const epoch = this.#safetyEpoch;
     return this.#exclusive(async () => {
       this.#checkUsable(cmd, safety);
+      if (MOTION_COMMANDS.has(cmd) && epoch !== this.#safetyEpoch) this.#throwOvertaken(cmd);
       const seq = this.#nextSeq();
       const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
       const reply = await this.#send(cmd, seq, bytes, { ...this.#options.request?.(), ...options });
@@ -156,6 +214,88 @@ export class Session {
       this.#options.onReply?.(cmd, data as Record<string, unknown>);
       return data;
     });
+  }
+
+  /** The number of stops issued so far (see {@link interrupted}). */
+  get safetyEpoch(): number {
+    return this.#safetyEpoch;
+  }
+
+  /**
+   * Resolves when the robot acknowledges a stop or e-stop issued after `epoch` was read. Never
+   * rejects; a stop that is never acknowledged never resolves it.
+   */
+  interrupted(epoch: number): Promise<SafetyInterrupt> {
+    return new Promise((resolve) => {
+      const waiter = {
+        after: epoch,
+        wake: (interrupt: SafetyInterrupt) => {
+          this.#interruptWaiters.delete(waiter);
+          resolve(interrupt);
+        },
+      };
+      this.#interruptWaiters.add(waiter);
+    });
+  }
+
+  /**
+   * The safety lane: sends `stop` or `estop` now, whatever request is pending, and resends it
+   * every `resendMs` until the robot answers (at most `totalMs`). Works while the link is being
+   * re-established (the robot executes a stop whatever its session). Throws NOT_CONNECTED when
+   * no session was ever opened or the link is closed, or when no reply came in time.
+   */
+  async safetyCommand<C extends SafetyCommand>(
+    cmd: C,
+    params: RequestParams[C],
+    timing?: SafetyLaneTiming,
+  ): Promise<ReplyOf<C>> {
+    if (this.#state === 'closed' || this.#sid === undefined) {
+      throw new HalError('NOT_CONNECTED', `cannot send "${cmd}": the robot is not connected`, {
+        details: { command: cmd, state: this.#state },
+      });
+    }
+    this.#safetyEpoch += 1;
+    this.#lastSafety = cmd;
+    const epoch = this.#safetyEpoch;
+    const seq = this.#nextSeq();
+    const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
+    const lane = timing ?? this.#options.safetyLane?.() ?? DEFAULT_SAFETY_LANE;
+    const resendMs = Math.max(1, lane.resendMs);
+    const attempts = Math.max(1, Math.ceil(lane.totalMs / resendMs));
+    let reply: WireReply;
+    try {
+      this.#lastRequestAt = performance.now();
+      reply = await this.#options.transport.request(seq, bytes, { timeoutMs: resendMs, attempts });
+    } catch (thrown) {
+      throw new HalError('NOT_CONNECTED', `the robot did not acknowledge "${cmd}"`, {
+        cause: thrown,
+        details: { command: cmd },
+      });
+    }
+    if (!reply.ok) throw robotError(cmd, reply);
+    const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
+    if (!parsed.success) {
+      this.malformedReplies += 1;
+      throw new HalError('MALFORMED', `the robot's "${cmd}" reply does not match the protocol`, {
+        details: { command: cmd },
+      });
+    }
+    const data = parsed.data as ReplyOf<C>;
+    this.#options.onReply?.(cmd, data as Record<string, unknown>);
+    const interrupt = { cmd, reply: data } as SafetyInterrupt;
+    for (const waiter of [...this.#interruptWaiters]) {
+      if (waiter.after < epoch) waiter.wake(interrupt);
+    }
+    return data;
+  }
+
+  #throwOvertaken(cmd: Command): never {
+    const estop = this.#lastSafety === 'estop';
+    throw new HalError(
+      estop ? 'EMERGENCY_STOPPED' : 'INTERRUPTED',
+      `"${cmd}" was not sent: ${estop ? 'an emergency stop' : 'a stop'} was issued after it`,
+      { details: { command: cmd } },
+    );
   }
 
   /** Stops the heartbeat and reconnection; later commands fail with NOT_CONNECTED. */

@@ -80,6 +80,11 @@ export type {
 } from './schemas/calls.js';
 
 export { HalBoundary } from './validation.js';
+export {
+  DEFAULT_ESTOP_REASON,
+  ESTOP_REASON_MAX_BYTES,
+  sanitizeEstopReason,
+} from './estop-reason.js';
 export type { HalBoundaryOptions } from './validation.js';
 
 export {

@@ -136,6 +136,12 @@ export class MockRobot {
     }
     const admission = this.#session.admit(envelope, this.#wire.authenticated);
     if (admission.kind === 'refuse') return this.#wire.error(envelope, admission.refusal);
+    if (admission.kind === 'overtaken') {
+      motion.contact();
+      const refused = this.#wire.error(envelope, admission.refusal);
+      this.#session.remember(envelope.seq!, refused);
+      return refused;
+    }
     if (admission.kind === 'replay') {
       motion.contact();
       return admission.reply;
