@@ -31,8 +31,8 @@ export function helloData(
 ): Omit<ReplyDataOf<'hello'>, 'sid' | 'nonce'> {
   return {
     device_id: deviceId,
-    firmware_version: '1.0.0-mock',
-    protocol_version: '1.0',
+    firmware_version: '1.1.0-mock',
+    protocol_version: '1.1',
     auth,
     capabilities: [
       'locomotion.differential:v1.0',
@@ -135,8 +135,7 @@ export function executeCommand(state: RobotState, cmd: string | undefined, r: Js
       return drive(state, r);
     case 'stop': {
       const stopped = state.motion.stop('stopped');
-      const { left, right } = state.motion.position;
-      return { stopped, left_steps: left, right_steps: right, ...stopReport(state) };
+      return { stopped, ...stopReport(state) };
     }
     case 'get_status':
       return status(state);

@@ -48,6 +48,7 @@ export class MockRobot {
   readonly #session = new SessionMemory();
   readonly #state: RobotState;
   #dropReplies = 0;
+  #dropRequests = 0;
 
   constructor(options: MockRobotOptions = {}) {
     this.deviceId = options.deviceId ?? 'cube-mock';
@@ -89,6 +90,11 @@ export class MockRobot {
     return this.#state.safety.estopped;
   }
 
+  /** Drops the next `count` requests before they reach the robot (lost requests). */
+  dropRequests(count: number): void {
+    this.#dropRequests += count;
+  }
+
   /** Drops the next `count` replies after executing their requests (lost replies). */
   dropReplies(count: number): void {
     this.#dropReplies += count;
@@ -114,6 +120,10 @@ export class MockRobot {
    */
   receive(bytes: Uint8Array): Uint8Array | undefined {
     if (this.unresponsive) return undefined;
+    if (this.#dropRequests > 0) {
+      this.#dropRequests -= 1;
+      return undefined;
+    }
     const reply = this.handle(bytes);
     if (this.#dropReplies > 0) {
       this.#dropReplies -= 1;

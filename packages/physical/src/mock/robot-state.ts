@@ -35,6 +35,8 @@ export function stopReport(state: RobotState): {
   move_outcome: string;
   move_left_steps: number;
   move_right_steps: number;
+  left_steps: number;
+  right_steps: number;
   uptime_us: number;
   stopped_us: number;
 } {
@@ -44,6 +46,8 @@ export function stopReport(state: RobotState): {
     move_outcome: motion.outcome,
     move_left_steps: motion.moveSteps.left,
     move_right_steps: motion.moveSteps.right,
+    left_steps: motion.position.left,
+    right_steps: motion.position.right,
     uptime_us: state.clock.us(),
     stopped_us: motion.restUs,
   };

@@ -152,6 +152,9 @@ export const StopReportSchema = z.object({
   move_outcome: opt(z.enum(MOVE_OUTCOMES)),
   move_left_steps: opt(int),
   move_right_steps: opt(int),
+  /** Absolute wheel positions after the stop, steps. */
+  left_steps: opt(int),
+  right_steps: opt(int),
   /** The robot's uptime when it handled this request, microseconds. */
   uptime_us: opt(int),
   /** The robot's uptime when the wheels last came to rest, microseconds. */
