@@ -82,7 +82,7 @@ TEST(RealCube, AnswersHelloAndMovesExactlyOnceWhenARequestIsRepeated) {
   if (!cube.Open()) GTEST_SKIP() << "set CUBE_UDP_ADDR=ip[:port] to run against a real cube";
   const json hello = cube.Hello();
   ASSERT_TRUE(hello.is_object()) << "no reply from the cube";
-  EXPECT_EQ(hello["protocol_version"], "1.0");
+  EXPECT_EQ(hello["protocol_version"], "1.1");
   const json before = cube.Call("get_status");
   ASSERT_TRUE(before.value("ok", false)) << before.dump();
   const int64_t left0 = before["left_steps"];

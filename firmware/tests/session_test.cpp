@@ -21,7 +21,7 @@ TEST(Hello, OpensASessionAndDescribesTheDevice) {
   EXPECT_NE(r["sid"], 0);
   EXPECT_EQ(r["cmd"], "hello");
   EXPECT_EQ(r["device_id"], "cube-test");
-  EXPECT_EQ(r["protocol_version"], "1.0");
+  EXPECT_EQ(r["protocol_version"], "1.1");
   EXPECT_EQ(r["auth"], false);
   const json caps = r["capabilities"];
   EXPECT_NE(std::find(caps.begin(), caps.end(), "locomotion.differential:v1.0"),

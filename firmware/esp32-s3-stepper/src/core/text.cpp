@@ -20,6 +20,32 @@ void CopyText(char* dst, size_t cap, const char* src, size_t len) {
   dst[n] = '\0';
 }
 
+size_t SanitizeReason(char* s, size_t len) {
+  size_t out = 0;
+  bool in_control = false;
+  for (size_t i = 0; i < len; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xC2 && i + 1 < len &&
+                    static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      if (c1) ++i;
+      if (!in_control) s[out++] = ' ';
+      in_control = true;
+      continue;
+    }
+    in_control = false;
+    s[out++] = s[i];
+  }
+  size_t start = 0;
+  while (start < out && s[start] == ' ') ++start;
+  while (out > start && s[out - 1] == ' ') --out;
+  const size_t n = out - start;
+  for (size_t i = 0; i < n; ++i) s[i] = s[start + i];
+  s[n] = '\0';
+  return n;
+}
+
 Text& Text::S(const char* s) {
   while (*s != '\0' && n_ + 1 < sizeof(buf_)) buf_[n_++] = *s++;
   buf_[n_] = '\0';
