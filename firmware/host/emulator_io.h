@@ -51,7 +51,8 @@ class EventLog : public CubeObserver {
  public:
   EventLog(Cube& cube, Clock& clock) : cube_(cube), clock_(clock) {}
   void Ready(uint16_t udp_port, const std::string& pty,
-             const std::string& device_id, double time_scale, bool auth);
+             const std::string& device_id, double time_scale, bool auth,
+             uint64_t uptime_origin_us);
   void OnMotionStarted(const MotionReport& r) override;
   void OnMotionFinished(const MotionReport& r) override;
   void OnTrip(const SafetyTrip& trip) override;

@@ -49,8 +49,7 @@ export const DEFAULT_SAFETY_LANE: SafetyLaneTiming = { resendMs: 20, totalMs: 60
 
 /** A stop or e-stop the robot acknowledged, with its reply. */
 export type SafetyInterrupt =
-  | { cmd: 'stop'; reply: ReplyOf<'stop'> }
-  | { cmd: 'estop'; reply: ReplyOf<'estop'> };
+  { cmd: 'stop'; reply: ReplyOf<'stop'> } | { cmd: 'estop'; reply: ReplyOf<'estop'> };
 
 /** The commands of the safety lane (protocol 1.1, section 4.1). */
 export type SafetyCommand = 'stop' | 'estop';

@@ -77,9 +77,7 @@ export function sanitizeEstopReason(value: unknown): string {
   const raw = asText(value);
   if (raw === undefined) return DEFAULT_ESTOP_REASON;
   // only a bounded prefix is read: a megabyte of text must not cost a megabyte of scanning
-  const text = wellFormed(raw.slice(0, ESTOP_REASON_READ_UNITS))
-    .replace(CONTROL, ' ')
-    .trim();
+  const text = wellFormed(raw.slice(0, ESTOP_REASON_READ_UNITS)).replace(CONTROL, ' ').trim();
   if (text === '') return DEFAULT_ESTOP_REASON;
   if (encoder.encode(text).length <= ESTOP_REASON_MAX_BYTES) return text;
   let bytes = 0;

@@ -104,7 +104,10 @@ describe('PhysicalHAL safety lane', () => {
     );
     hals.push(hal);
     const early = await hal.safety.emergencyStop({ not: 'text' } as unknown as string);
-    expect(early).toMatchObject({ success: true, data: { delivered: false, reason: 'emergency stop' } });
+    expect(early).toMatchObject({
+      success: true,
+      data: { delivered: false, reason: 'emergency stop' },
+    });
     expect(robot.requests).toHaveLength(0);
     await hal.initialize();
     expect(robot.estopped).toBe(true);

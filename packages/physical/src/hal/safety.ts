@@ -21,7 +21,11 @@ export function createSafety(ctx: HalContext): SafetyInterface {
           reason: reply.estop_reason,
           delivered: true,
         };
+        // protocol 1.1: the motion it ended, and the robot's clock when the wheels stopped
         if (reply.move_id !== undefined) data['moveId'] = reply.move_id;
+        if (reply.move_outcome !== undefined) data['moveOutcome'] = reply.move_outcome;
+        if (reply.move_left_steps !== undefined) data['leftSteps'] = reply.move_left_steps;
+        if (reply.move_right_steps !== undefined) data['rightSteps'] = reply.move_right_steps;
         if (reply.estop_us !== undefined) data['robotEstopUs'] = reply.estop_us;
         return data;
       }),

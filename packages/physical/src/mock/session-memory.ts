@@ -18,7 +18,12 @@ export type Admission =
   | { kind: 'overtaken'; refusal: Refusal };
 
 /** Commands that move the wheels. */
-const MOTION_COMMANDS: ReadonlySet<string> = new Set(['move_steps', 'move_cm', 'rotate_deg', 'drive']);
+const MOTION_COMMANDS: ReadonlySet<string> = new Set([
+  'move_steps',
+  'move_cm',
+  'rotate_deg',
+  'drive',
+]);
 
 /**
  * The robot's session: the current `sid`, the highest `seq` executed and the replies of the last
@@ -64,7 +69,7 @@ export class SessionMemory {
       if (seq! <= this.#lastSeq) {
         return refuse('STALE_SEQUENCE', 'stale seq', { seq, last_seq: this.#lastSeq });
       }
-      if (MOTION_COMMANDS.has(cmd) && seq! < this.#fence) {
+      if (cmd !== undefined && MOTION_COMMANDS.has(cmd) && seq! < this.#fence) {
         const estop = this.#fenceBy === 'estop';
         return {
           kind: 'overtaken',

@@ -67,9 +67,9 @@ describe('MessageCodec', () => {
 
   describe('#encode', () => {
     it('refuses a message longer than 1024 bytes with RANGE_EXCEEDED', () => {
-      expect(() => new MessageCodec().encode({ cmd: 'set_led', pattern: 'x'.repeat(1100) })).toThrow(
-        expect.objectContaining({ code: 'RANGE_EXCEEDED' }),
-      );
+      expect(() =>
+        new MessageCodec().encode({ cmd: 'set_led', pattern: 'x'.repeat(1100) }),
+      ).toThrow(expect.objectContaining({ code: 'RANGE_EXCEEDED' }));
     });
 
     it('always encodes estop: the reason is sanitized and cut, however it was given', async () => {
@@ -88,7 +88,12 @@ describe('MessageCodec', () => {
     });
 
     it('always encodes stop, dropping anything but the envelope if it would not fit', () => {
-      const bytes = new MessageCodec().encode({ cmd: 'stop', seq: 7, sid: 9, junk: 'y'.repeat(2000) });
+      const bytes = new MessageCodec().encode({
+        cmd: 'stop',
+        seq: 7,
+        sid: 9,
+        junk: 'y'.repeat(2000),
+      });
       expect(JSON.parse(new TextDecoder().decode(bytes))).toEqual({ cmd: 'stop', seq: 7, sid: 9 });
     });
   });

@@ -77,7 +77,6 @@ export const MotionReplySchema = z.object({
 });
 export type MotionReply = z.infer<typeof MotionReplySchema>;
 
-
 /** The LED patterns of `set_led`. */
 export const LED_PATTERNS = ['solid', 'blink', 'pulse', 'off'] as const;
 export type LedPattern = (typeof LED_PATTERNS)[number];

@@ -46,9 +46,13 @@ export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promis
   const details = { outcome: report.outcome, moveId: report.moveId, pose: poseData(ctx.robot()) };
   if (report.outcome === 'estop') {
     // as PhysicalHAL reports it: the e-stop has its own code
-    throw new HalError('EMERGENCY_STOPPED', `motion ${report.moveId} was cut short by the emergency stop`, {
-      details,
-    });
+    throw new HalError(
+      'EMERGENCY_STOPPED',
+      `motion ${report.moveId} was cut short by the emergency stop`,
+      {
+        details,
+      },
+    );
   }
   throw new HalError('INTERRUPTED', `motion ${report.moveId} ended early: ${report.outcome}`, {
     details,
