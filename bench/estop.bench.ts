@@ -61,6 +61,7 @@ async function runLink(name: string, faults: Faults, seed: number): Promise<void
   const now = robotClock(emulator);
   const results: Record<EstopPath, EstopTrial[]> = { lane: [], queued: [] };
   let bad = 0;
+  let rtt: ReturnType<PhysicalHAL['transportStats']>;
   try {
     for (let i = 0; i < TRIALS; i++) {
       for (const path of (i % 2 === 0 ? ['lane', 'queued'] : ['queued', 'lane']) as EstopPath[]) {
@@ -77,12 +78,12 @@ async function runLink(name: string, faults: Faults, seed: number): Promise<void
         results[path].push(trial);
       }
     }
+    rtt = hal.transportStats();
   } finally {
     await hal.cleanup();
     await proxy.close();
     await emulator.stop();
   }
-  const rtt = hal.transportStats();
   const lane = summary(results.lane);
   const queued = summary(results.queued);
   console.log(

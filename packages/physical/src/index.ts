@@ -1,8 +1,9 @@
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 
-export { DEFAULT_SAFETY_LANE } from './session.js';
-export type { SafetyLaneTiming, SessionState } from './session.js';
+export { DEFAULT_SAFETY_LANE } from './safety-lane.js';
+export type { SafetyLaneTiming } from './safety-lane.js';
+export type { SessionState } from './session.js';
 
 export { MockRobot } from './mock/mock-robot.js';
 export type { MockRobotOptions } from './mock/mock-robot.js';

@@ -5,6 +5,8 @@ import type { Logger, ScopedLogger } from './logger.js';
 import type { MessageCodec, WireReply } from './protocol/codec.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
 import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
+import { DEFAULT_SAFETY_LANE, isMotionCommand, laneAttempts, StopSignal } from './safety-lane.js';
+import type { SafetyCommand, SafetyInterrupt, SafetyLaneTiming } from './safety-lane.js';
 import type { RequestOptions, Transport } from './transport/transport.js';
 
 /** Where a session is. */
@@ -32,35 +34,6 @@ export interface SessionOptions {
   /** Timing of the safety lane (asked before every stop); default {@link DEFAULT_SAFETY_LANE}. */
   safetyLane?: () => SafetyLaneTiming;
 }
-
-/** How the safety lane resends a `stop` or `estop` until the robot acknowledges it. */
-export interface SafetyLaneTiming {
-  /** Resend after this long without a reply, ms. */
-  resendMs: number;
-  /** Give up after this long in all, ms. */
-  totalMs: number;
-}
-
-/**
- * Resend every 20 ms for up to the protocol's 3 x 2000 ms: at 30% loss a stop then reaches the
- * robot within 4 sends (60 ms) 99 times in 100. Duplicates are harmless: a stop is idempotent.
- */
-export const DEFAULT_SAFETY_LANE: SafetyLaneTiming = { resendMs: 20, totalMs: 6000 };
-
-/** A stop or e-stop the robot acknowledged, with its reply. */
-export type SafetyInterrupt =
-  { cmd: 'stop'; reply: ReplyOf<'stop'> } | { cmd: 'estop'; reply: ReplyOf<'estop'> };
-
-/** The commands of the safety lane (protocol 1.1, section 4.1). */
-export type SafetyCommand = 'stop' | 'estop';
-
-/** Commands that move the wheels: never sent once a stop issued after them went out. */
-const MOTION_COMMANDS: ReadonlySet<Command> = new Set([
-  'move_steps',
-  'move_cm',
-  'rotate_deg',
-  'drive',
-]);
 
 /** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
 const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
@@ -109,10 +82,7 @@ export class Session {
   #heartbeatPaused = false;
   #reconnectTimer: ReturnType<typeof setTimeout> | undefined;
   #hello: HelloReply | undefined;
-  /** Counts the stops issued; a queued motion command sent later than a stop is dropped. */
-  #safetyEpoch = 0;
-  #lastSafety: SafetyCommand = 'stop';
-  readonly #interruptWaiters = new Set<{ after: number; wake: (i: SafetyInterrupt) => void }>();
+  readonly #stops = new StopSignal();
   /** Replies whose data did not match the command's schema. */
   malformedReplies = 0;
 
@@ -178,10 +148,10 @@ export class Session {
     }
     const safety = SAFETY_COMMANDS.has(cmd);
     this.#checkUsable(cmd, safety);
-    const epoch = this.#safetyEpoch;
+    const epoch = this.#stops.epoch;
     return this.#exclusive(async () => {
       this.#checkUsable(cmd, safety);
-      if (MOTION_COMMANDS.has(cmd) && epoch !== this.#safetyEpoch) this.#throwOvertaken(cmd);
+      if (isMotionCommand(cmd) && epoch !== this.#stops.epoch) throw this.#stops.overtaken(cmd);
       const seq = this.#nextSeq();
       const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
       const reply = await this.#send(cmd, seq, bytes, { ...this.#options.request?.(), ...options });
@@ -217,24 +187,12 @@ export class Session {
 
   /** The number of stops issued so far (see {@link interrupted}). */
   get safetyEpoch(): number {
-    return this.#safetyEpoch;
+    return this.#stops.epoch;
   }
 
-  /**
-   * Resolves when the robot acknowledges a stop or e-stop issued after `epoch` was read. Never
-   * rejects; a stop that is never acknowledged never resolves it.
-   */
+  /** Resolves when the robot acknowledges a stop issued after `epoch` (never rejects). */
   interrupted(epoch: number): Promise<SafetyInterrupt> {
-    return new Promise((resolve) => {
-      const waiter = {
-        after: epoch,
-        wake: (interrupt: SafetyInterrupt) => {
-          this.#interruptWaiters.delete(waiter);
-          resolve(interrupt);
-        },
-      };
-      this.#interruptWaiters.add(waiter);
-    });
+    return this.#stops.interrupted(epoch);
   }
 
   /**
@@ -253,18 +211,14 @@ export class Session {
         details: { command: cmd, state: this.#state },
       });
     }
-    this.#safetyEpoch += 1;
-    this.#lastSafety = cmd;
-    const epoch = this.#safetyEpoch;
+    const epoch = this.#stops.issue(cmd);
     const seq = this.#nextSeq();
     const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
-    const lane = timing ?? this.#options.safetyLane?.() ?? DEFAULT_SAFETY_LANE;
-    const resendMs = Math.max(1, lane.resendMs);
-    const attempts = Math.max(1, Math.ceil(lane.totalMs / resendMs));
+    const lane = laneAttempts(timing ?? this.#options.safetyLane?.() ?? DEFAULT_SAFETY_LANE);
     let reply: WireReply;
     try {
       this.#lastRequestAt = performance.now();
-      reply = await this.#options.transport.request(seq, bytes, { timeoutMs: resendMs, attempts });
+      reply = await this.#options.transport.request(seq, bytes, lane);
     } catch (thrown) {
       throw new HalError('NOT_CONNECTED', `the robot did not acknowledge "${cmd}"`, {
         cause: thrown,
@@ -281,20 +235,8 @@ export class Session {
     }
     const data = parsed.data as ReplyOf<C>;
     this.#options.onReply?.(cmd, data as Record<string, unknown>);
-    const interrupt = { cmd, reply: data } as SafetyInterrupt;
-    for (const waiter of [...this.#interruptWaiters]) {
-      if (waiter.after < epoch) waiter.wake(interrupt);
-    }
+    this.#stops.acknowledged(epoch, { cmd, reply: data } as SafetyInterrupt);
     return data;
-  }
-
-  #throwOvertaken(cmd: Command): never {
-    const estop = this.#lastSafety === 'estop';
-    throw new HalError(
-      estop ? 'EMERGENCY_STOPPED' : 'INTERRUPTED',
-      `"${cmd}" was not sent: ${estop ? 'an emergency stop' : 'a stop'} was issued after it`,
-      { details: { command: cmd } },
-    );
   }
 
   /** Stops the heartbeat and reconnection; later commands fail with NOT_CONNECTED. */

@@ -1,7 +1,7 @@
 import type { HalBoundary, RobotConfig } from '@hal/types';
 import type { PoseTracker } from '../pose-tracker.js';
 import type { Command, ReplyOf, RequestParams } from '../protocol/schemas.js';
-import type { SafetyCommand, SafetyInterrupt } from '../session.js';
+import type { SafetyCommand, SafetyInterrupt } from '../safety-lane.js';
 import type { LinkTiming } from './link-timing.js';
 import type { SafetyCache } from './safety-cache.js';
 

@@ -1,6 +1,6 @@
 import type { Logger } from '../logger.js';
 import type { DeviceConfig } from '../protocol/schemas.js';
-import type { SafetyLaneTiming } from '../session.js';
+import type { SafetyLaneTiming } from '../safety-lane.js';
 import type { TransportFactory } from '../transport/transport.js';
 
 /** Options of {@link PhysicalHAL}, beside its {@link HALConfig}. */

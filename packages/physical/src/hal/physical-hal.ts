@@ -23,8 +23,10 @@ import type {
   RequestParams,
   StatusReply,
 } from '../protocol/schemas.js';
-import { DEFAULT_SAFETY_LANE, Session } from '../session.js';
-import type { SafetyInterrupt, SafetyLaneTiming, SessionState } from '../session.js';
+import { DEFAULT_SAFETY_LANE } from '../safety-lane.js';
+import type { SafetyInterrupt, SafetyLaneTiming } from '../safety-lane.js';
+import { Session } from '../session.js';
+import type { SessionState } from '../session.js';
 import type { SerialLinkStats, Transport, TransportStats } from '../transport/transport.js';
 import { createCommunication } from './communication.js';
 import type { HalContext } from './context.js';

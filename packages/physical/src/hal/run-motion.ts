@@ -1,6 +1,6 @@
 import { HalError } from '@hal/types';
 import type { MotionReply, ReplyOf, RequestParams, StatusReply } from '../protocol/schemas.js';
-import type { SafetyInterrupt } from '../session.js';
+import type { SafetyInterrupt } from '../safety-lane.js';
 import type { HalContext } from './context.js';
 
 const sleep = (ms: number) => new Promise<void>((resolve) => setTimeout(resolve, ms));
