@@ -80,12 +80,17 @@ export async function estopTrial(options: {
   const { hal, emulator, proxy, now, path } = options;
   const startedBefore = emulator.events.filter((e) => e.event === 'move_started').length;
   const moving = hal.locomotion.moveForward(40);
-  const started = await emulator.waitFor(
-    (e) =>
-      e.event === 'move_started' &&
-      emulator.events.filter((x) => x.event === 'move_started').indexOf(e) >= startedBefore,
-    10_000,
-  );
+  const started = await Promise.race([
+    emulator.waitFor(
+      (e) =>
+        e.event === 'move_started' &&
+        emulator.events.filter((x) => x.event === 'move_started').indexOf(e) >= startedBefore,
+      10_000,
+    ),
+    moving.then((move) => {
+      throw new Error(`the move ended before it started: ${move.code} ${move.error}`);
+    }),
+  ]);
   await sleep(options.runMs);
   proxy.dropNextReplies(options.lostReplies);
   const pending = hal.refreshStatus().catch(() => undefined);
