@@ -98,7 +98,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       command: (cmd, params) => this.#command(cmd, params),
       safetyCommand: async (cmd, params) => {
         const session = this.#session;
-        if (session === undefined) return undefined;
+        // no session yet (or any more): initialize() sends the host latch once one is open
+        if (session === undefined || session.sid === undefined) return undefined;
         return await session.safetyCommand(cmd, params);
       },
       safetyEpoch: () => this.#session?.safetyEpoch ?? 0,

@@ -29,9 +29,16 @@ function interruptError(interrupt: SafetyInterrupt): HalError {
  * ends the motion: the robot stopped it, or refuses it as sent before the stop, or the session
  * never sent it.) What `work` does afterwards is ignored.
  */
-async function unlessStopped<T>(ctx: HalContext, epoch: number, work: Promise<T>): Promise<T> {
+async function unlessStopped<T>(
+  ctx: HalContext,
+  epoch: number,
+  work: Promise<T>,
+  own: { stopping: boolean } = { stopping: false },
+): Promise<T> {
   work.catch(() => undefined);
   const stopped = ctx.interrupted(epoch).then((interrupt) => {
+    // the motion's own timeout stop: `work` reports TIMEOUT itself
+    if (own.stopping) return new Promise<never>(() => undefined);
     throw interruptError(interrupt);
   });
   return await Promise.race([work, stopped]);
@@ -73,13 +80,15 @@ export async function awaitMotion(
   plannedMs: number,
   epoch: number,
 ): Promise<StatusReply> {
-  return await unlessStopped(ctx, epoch, pollMotion(ctx, reply, plannedMs));
+  const own = { stopping: false };
+  return await unlessStopped(ctx, epoch, pollMotion(ctx, reply, plannedMs, own), own);
 }
 
 async function pollMotion(
   ctx: HalContext,
   reply: MotionReply,
   plannedMs: number,
+  own: { stopping: boolean },
 ): Promise<StatusReply> {
   const started = performance.now();
   const deadline = started + ctx.timing.real(plannedMs) * 1.2 + ctx.timing.motionMarginMs();
@@ -123,6 +132,7 @@ async function pollMotion(
       });
     }
     if (performance.now() >= deadline) {
+      own.stopping = true;
       await ctx.safetyCommand('stop', {}).catch(() => undefined);
       throw new HalError(
         'TIMEOUT',

@@ -124,4 +124,19 @@ describe('PhysicalHAL safety lane', () => {
     expect((await moving).code).toBe('EMERGENCY_STOPPED');
     expect(robot.estopped).toBe(true);
   });
+
+  it('fails a motion that overruns its deadline with TIMEOUT, not INTERRUPTED, and stops the robot', async () => {
+    // the robot's clock runs at half speed: the move takes twice as long as the HAL planned
+    const robot = new MockRobot({ timeScale: 0.5, hostTimeoutMs: 10_000 });
+    const hal = new PhysicalHAL(
+      { mode: 'physical', deviceId: 'cube-slow' },
+      { transport: robot.transport(), motionTimeoutMarginMs: 100 },
+    );
+    hals.push(hal);
+    await hal.initialize();
+    const move = await hal.locomotion.moveForward(1);
+    expect(move.code).toBe('TIMEOUT');
+    expect(sent(robot, 'stop').length).toBeGreaterThanOrEqual(1);
+    expect((await hal.refreshStatus()).move_outcome).toBe('stopped');
+  });
 });
