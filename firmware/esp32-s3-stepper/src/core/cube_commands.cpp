@@ -264,8 +264,8 @@ void Cube::CmdEstop(Reply& r) {
   char text[64] = "estop command";
   if (reason != nullptr && reason->type == JsonType::kString &&
       reason->str_len > 0) {
-    CopyText(text, sizeof(text), reason->str, reason->str_len);
-    if (SanitizeReason(text, std::strlen(text)) == 0) {
+    const size_t n = CopyText(text, sizeof(text), reason->str, reason->str_len);
+    if (SanitizeReason(text, n) == 0) {
       CopyText(text, sizeof(text), "estop command", 13);
     }
   }

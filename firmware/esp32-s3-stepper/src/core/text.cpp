@@ -8,8 +8,8 @@ namespace cube {
 
 bool Equals(const char* a, const char* b) { return std::strcmp(a, b) == 0; }
 
-void CopyText(char* dst, size_t cap, const char* src, size_t len) {
-  if (cap == 0) return;
+size_t CopyText(char* dst, size_t cap, const char* src, size_t len) {
+  if (cap == 0) return 0;
   size_t n = len < cap - 1 ? len : cap - 1;
   // Do not cut a UTF-8 sequence in half.
   while (n > 0 && n < len &&
@@ -18,6 +18,7 @@ void CopyText(char* dst, size_t cap, const char* src, size_t len) {
   }
   std::memcpy(dst, src, n);
   dst[n] = '\0';
+  return n;
 }
 
 size_t SanitizeReason(char* s, size_t len) {
