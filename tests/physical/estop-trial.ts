@@ -78,6 +78,11 @@ export async function estopTrial(options: {
   lostReplies: number;
 }): Promise<EstopTrial> {
   const { hal, emulator, proxy, now, path } = options;
+  // a lossy link can lose every resend of one request: wait until the session is open again
+  for (let waited = 0; hal.linkState !== 'connected'; waited += 10) {
+    if (waited > 15_000) throw new Error(`the link stayed ${hal.linkState}`);
+    await sleep(10);
+  }
   const startedBefore = emulator.events.filter((e) => e.event === 'move_started').length;
   const moving = hal.locomotion.moveForward(40);
   const started = await Promise.race([
