@@ -229,7 +229,10 @@ int main(int argc, char** argv) {
   bridge.set_link(&link);
 
   log.Ready(udp.port(), opt.pty ? pty.path() : "", opt.device_id,
-            opt.time_scale, cube::AuthModeName(robot.auth_mode()));
+            opt.time_scale, cube::AuthModeName(robot.auth_mode()),
+            robot_clock.StartSteadyUs() +
+                static_cast<uint64_t>(static_cast<double>(robot.boot_us()) /
+                                      opt.time_scale));
 
   static uint8_t buf[4096];
   static uint8_t reply[cube::kMaxMessage];

@@ -123,7 +123,7 @@ void EventLog::Emit(JsonWriter& w, char* buf) {
 
 void EventLog::Ready(uint16_t udp_port, const std::string& pty,
                      const std::string& device_id, double time_scale,
-                     const char* auth) {
+                     const char* auth, uint64_t uptime_origin_us) {
   char buf[512];
   JsonWriter w(buf, sizeof(buf) - 1);
   w.BeginObject();
@@ -141,6 +141,10 @@ void EventLog::Ready(uint16_t udp_port, const std::string& pty,
   w.String(auth);
   w.Key("protocol_version");
   w.String(kProtocolVersion);
+  // CLOCK_MONOTONIC (steady_clock) microseconds at the robot's uptime 0, so
+  // a process on this machine can read the robot's clock (at time scale 1).
+  w.Key("uptime_origin_us");
+  w.Int(static_cast<int64_t>(uptime_origin_us));
   Emit(w, buf);
 }
 
@@ -175,6 +179,8 @@ void EventLog::OnMotionStarted(const MotionReport& r) {
   w.Int(r.right_position);
   w.Key("t_ms");
   w.Uint(cube_.uptime_ms());
+  w.Key("t_us");
+  w.Int(static_cast<int64_t>(cube_.uptime_us()));
   Emit(w, buf);
 }
 

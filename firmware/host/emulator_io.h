@@ -56,7 +56,7 @@ class EventLog : public CubeObserver {
   EventLog(Cube& cube, Clock& clock) : cube_(cube), clock_(clock) {}
   void Ready(uint16_t udp_port, const std::string& pty,
              const std::string& device_id, double time_scale,
-             const char* auth);
+             const char* auth, uint64_t uptime_origin_us);
   void OnMotionStarted(const MotionReport& r) override;
   void OnMotionFinished(const MotionReport& r) override;
   void OnTrip(const SafetyTrip& trip) override;

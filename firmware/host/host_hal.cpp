@@ -25,6 +25,13 @@ uint64_t ScaledClock::NowUs() {
   return static_cast<uint64_t>(static_cast<double>(real) * scale_);
 }
 
+uint64_t ScaledClock::StartSteadyUs() const {
+  return static_cast<uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(
+          start_.time_since_epoch())
+          .count());
+}
+
 bool ParseHex(const std::string& hex, std::vector<uint8_t>* out) {
   if (hex.size() % 2 != 0) return false;
   out->clear();

@@ -35,6 +35,8 @@ class ScaledClock : public Clock {
  public:
   explicit ScaledClock(double scale = 1.0);
   uint64_t NowUs() override;
+  // steady_clock (CLOCK_MONOTONIC on Linux) at the start, microseconds.
+  uint64_t StartSteadyUs() const;
 
  private:
   std::chrono::steady_clock::time_point start_;

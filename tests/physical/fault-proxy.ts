@@ -26,6 +26,8 @@ export interface FaultProxy {
   port: number;
   toRobot: DirectionStats;
   toHost: DirectionStats;
+  /** Drops the next `count` datagrams from the robot to the host, whatever the faults say. */
+  dropNextReplies(count: number): void;
   close(): Promise<void>;
 }
 
@@ -63,6 +65,7 @@ export async function startFaultProxy(options: {
   const timers = new Set<ReturnType<typeof setTimeout>>();
   let host: RemoteInfo | undefined;
   let closed = false;
+  let dropReplies = 0;
 
   const pass = (
     message: Buffer,
@@ -102,6 +105,12 @@ export async function startFaultProxy(options: {
   robotSide.on('message', (message) => {
     const to = host;
     if (to === undefined) return;
+    if (dropReplies > 0) {
+      dropReplies -= 1;
+      toHost.received += 1;
+      toHost.dropped += 1;
+      return;
+    }
     pass(message, options.toHost, toHost, (m) => hostSide.send(m, to.port, to.address));
   });
   await Promise.all([
@@ -112,6 +121,9 @@ export async function startFaultProxy(options: {
     port: hostSide.address().port,
     toRobot,
     toHost,
+    dropNextReplies: (count) => {
+      dropReplies += count;
+    },
     close: async () => {
       closed = true;
       for (const timer of timers) clearTimeout(timer);

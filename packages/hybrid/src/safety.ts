@@ -18,7 +18,7 @@ export function createSafety(ctx: HybridContext): SafetyInterface {
         'emergencyStop',
         { reason },
         (a) => {
-          latchReason = a.reason ?? 'emergency stop';
+          latchReason = a.reason; // sanitized by the boundary: never refused
           return p.safety.emergencyStop(a.reason);
         },
         (a) => t.safety.emergencyStop(a.reason),

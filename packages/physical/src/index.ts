@@ -1,6 +1,8 @@
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 
+export { DEFAULT_SAFETY_LANE } from './safety-lane.js';
+export type { SafetyLaneTiming } from './safety-lane.js';
 export type { SessionState } from './session.js';
 
 export { MockRobot } from './mock/mock-robot.js';
@@ -50,6 +52,7 @@ export {
   SetLedReplySchema,
   StatusReplySchema,
   StopReplySchema,
+  StopReportSchema,
 } from './protocol/schemas.js';
 export type {
   AuthScheme,
@@ -70,6 +73,7 @@ export type {
   SetLedReply,
   StatusReply,
   StopReply,
+  StopReport,
 } from './protocol/schemas.js';
 
 export {

@@ -76,7 +76,12 @@ export class PoseTracker {
         this.update(data as unknown as StatusReply);
         break;
       case 'estop':
-        this.motionStopped();
+        // a 1.1 robot reports where the wheels stopped; a 1.0 one does not
+        if (typeof data['left_steps'] === 'number' && typeof data['right_steps'] === 'number') {
+          this.updateCounters(data['left_steps'], data['right_steps']);
+        } else {
+          this.motionStopped();
+        }
         break;
       case 'stop':
         this.updateCounters(Number(data['left_steps']), Number(data['right_steps']));

@@ -5,6 +5,8 @@ import type { Logger, ScopedLogger } from './logger.js';
 import type { MessageCodec, WireReply } from './protocol/codec.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
 import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
+import { DEFAULT_SAFETY_LANE, isMotionCommand, laneAttempts, StopSignal } from './safety-lane.js';
+import type { SafetyCommand, SafetyInterrupt, SafetyLaneTiming } from './safety-lane.js';
 import type { RequestOptions, Transport } from './transport/transport.js';
 
 /** Where a session is. */
@@ -29,6 +31,8 @@ export interface SessionOptions {
   onReply?: (cmd: Command, data: Record<string, unknown>) => void;
   /** Called when the state changes. */
   onStateChange?: (state: SessionState, reason: string) => void;
+  /** Timing of the safety lane (asked before every stop); default {@link DEFAULT_SAFETY_LANE}. */
+  safetyLane?: () => SafetyLaneTiming;
 }
 
 /** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
@@ -57,6 +61,13 @@ export function robotError(cmd: string, reply: WireReply): HalError {
  * strictly increasing `seq`, one at a time (so a retry can never arrive after a newer request and
  * be refused as stale). It sends heartbeats while idle, turns a dead link or a replaced session
  * into NOT_CONNECTED, and keeps saying `hello` until the robot answers again.
+ *
+ * `stop` and `estop` take the safety lane instead (protocol 1.1, section 4.1): sent at once,
+ * beside whatever request is pending, and resent every few ms until acknowledged. The robot
+ * executes them whatever their `seq` without advancing the session's highest `seq`, so the
+ * pending request's retries stay valid; and it refuses a motion command numbered below a stop it
+ * executed, so a move sent before a stop can never start after it. A motion command still waiting
+ * in the queue when a stop is issued is not sent at all.
  */
 export class Session {
   readonly #options: SessionOptions;
@@ -71,6 +82,7 @@ export class Session {
   #heartbeatPaused = false;
   #reconnectTimer: ReturnType<typeof setTimeout> | undefined;
   #hello: HelloReply | undefined;
+  readonly #stops = new StopSignal();
   /** Replies whose data did not match the command's schema. */
   malformedReplies = 0;
 
@@ -121,10 +133,25 @@ export class Session {
     params: RequestParams[C],
     options: RequestOptions = {},
   ): Promise<ReplyOf<C>> {
+    if (cmd === 'stop' || cmd === 'estop') {
+      // the safety lane; `options` bound its total wait (attempts x timeout)
+      const bound =
+        options.attempts !== undefined || options.timeoutMs !== undefined
+          ? {
+              resendMs: DEFAULT_SAFETY_LANE.resendMs,
+              totalMs: (options.attempts ?? 1) * (options.timeoutMs ?? DEFAULT_SAFETY_LANE.totalMs),
+            }
+          : undefined;
+      return this.safetyCommand(cmd, params as RequestParams[SafetyCommand], bound) as Promise<
+        ReplyOf<C>
+      >;
+    }
     const safety = SAFETY_COMMANDS.has(cmd);
     this.#checkUsable(cmd, safety);
+    const epoch = this.#stops.epoch;
     return this.#exclusive(async () => {
       this.#checkUsable(cmd, safety);
+      if (isMotionCommand(cmd) && epoch !== this.#stops.epoch) throw this.#stops.overtaken(cmd);
       const seq = this.#nextSeq();
       const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
       const reply = await this.#send(cmd, seq, bytes, { ...this.#options.request?.(), ...options });
@@ -156,6 +183,60 @@ export class Session {
       this.#options.onReply?.(cmd, data as Record<string, unknown>);
       return data;
     });
+  }
+
+  /** The number of stops issued so far (see {@link interrupted}). */
+  get safetyEpoch(): number {
+    return this.#stops.epoch;
+  }
+
+  /** Resolves when the robot acknowledges a stop issued after `epoch` (never rejects). */
+  interrupted(epoch: number): Promise<SafetyInterrupt> {
+    return this.#stops.interrupted(epoch);
+  }
+
+  /**
+   * The safety lane: sends `stop` or `estop` now, whatever request is pending, and resends it
+   * every `resendMs` until the robot answers (at most `totalMs`). Works while the link is being
+   * re-established (the robot executes a stop whatever its session). Throws NOT_CONNECTED when
+   * no session was ever opened or the link is closed, or when no reply came in time.
+   */
+  async safetyCommand<C extends SafetyCommand>(
+    cmd: C,
+    params: RequestParams[C],
+    timing?: SafetyLaneTiming,
+  ): Promise<ReplyOf<C>> {
+    if (this.#state === 'closed' || this.#sid === undefined) {
+      throw new HalError('NOT_CONNECTED', `cannot send "${cmd}": the robot is not connected`, {
+        details: { command: cmd, state: this.#state },
+      });
+    }
+    const epoch = this.#stops.issue(cmd);
+    const seq = this.#nextSeq();
+    const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
+    const lane = laneAttempts(timing ?? this.#options.safetyLane?.() ?? DEFAULT_SAFETY_LANE);
+    let reply: WireReply;
+    try {
+      this.#lastRequestAt = performance.now();
+      reply = await this.#options.transport.request(seq, bytes, lane);
+    } catch (thrown) {
+      throw new HalError('NOT_CONNECTED', `the robot did not acknowledge "${cmd}"`, {
+        cause: thrown,
+        details: { command: cmd },
+      });
+    }
+    if (!reply.ok) throw robotError(cmd, reply);
+    const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
+    if (!parsed.success) {
+      this.malformedReplies += 1;
+      throw new HalError('MALFORMED', `the robot's "${cmd}" reply does not match the protocol`, {
+        details: { command: cmd },
+      });
+    }
+    const data = parsed.data as ReplyOf<C>;
+    this.#options.onReply?.(cmd, data as Record<string, unknown>);
+    this.#stops.acknowledged(epoch, { cmd, reply: data } as SafetyInterrupt);
+    return data;
   }
 
   /** Stops the heartbeat and reconnection; later commands fail with NOT_CONNECTED. */

@@ -96,6 +96,11 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
+export {
+  DEFAULT_ESTOP_REASON,
+  ESTOP_REASON_MAX_BYTES,
+  sanitizeEstopReason,
+} from './estop-reason.js';
 export type { HalBoundaryOptions } from './validation.js';
 
 export {

@@ -133,7 +133,8 @@ export class HalBoundary {
 
   /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
   checkAllowed(call: CallName): void {
-    if (!this.#options.isReady()) {
+    // an e-stop is never refused: before initialize() or after cleanup() it still latches
+    if (call !== 'emergencyStop' && !this.#options.isReady()) {
       throw new HalError(
         'NOT_READY',
         `${call}: the HAL is not initialised; call initialize() first`,

@@ -48,6 +48,7 @@ void Cube::OnMotionStarted(const MotionReport& r) {
 }
 
 void Cube::OnMotionFinished(const MotionReport& r) {
+  rest_us_ = clock_.NowUs() - boot_us_;
   IntegratePending();
   if (observer_ != nullptr) observer_->OnMotionFinished(r);
 }
@@ -153,9 +154,14 @@ void Cube::RecordTrip(const char* reason, const char* detail) {
 }
 
 void Cube::LatchEstop(const char* reason, const char* detail, MoveOutcome why) {
-  motion_.Stop(why, clock_.NowUs());
+  const uint64_t now = clock_.NowUs();
+  motion_.Stop(why, now);
   IntegratePending();
+  // Already latched (a resent estop): the first reason and time stay, and no
+  // further trip is counted.
+  if (estop_) return;
   estop_ = true;
+  estop_us_ = now - boot_us_;
   CopyText(estop_reason_, sizeof(estop_reason_), detail, std::strlen(detail));
   RecordTrip(reason, detail);
 }

@@ -1,4 +1,4 @@
-// The stepper cube: protocol 1.0 (docs/protocol.md) on top of the motion
+// The stepper cube: protocol 1.1 (docs/protocol.md) on top of the motion
 // core. One instance per robot. Handle()/HandleOversize()/Poll() run in one
 // task; Tick() runs in the step interrupt.
 #ifndef CUBE_CORE_CUBE_H_
@@ -124,6 +124,9 @@ class Cube : private MotionListener {
   const LedState& led() const { return led_; }
   uint32_t session_id() const { return sid_; }
   uint64_t uptime_ms() const;
+  uint64_t uptime_us() const { return clock_.NowUs() - boot_us_; }
+  // The clock reading at boot (uptime 0), in the clock's own microseconds.
+  uint64_t boot_us() const { return boot_us_; }
 
  private:
   struct Remembered {
@@ -135,8 +138,12 @@ class Cube : private MotionListener {
   void OnMotionStarted(const MotionReport& r) override;
   void OnMotionFinished(const MotionReport& r) override;
   size_t Finish(Reply& reply, uint8_t* out, size_t cap);
+  // Finish(), and remember the reply under its seq, which becomes the
+  // session's highest.
+  size_t FinishRemembered(Reply& reply, uint8_t* out, size_t cap);
   void Dispatch(const char* cmd, Reply& reply);
   bool IsCommand(const char* cmd) const;
+  static bool IsMotionCommand(const char* cmd);
   void CmdHello(Reply& r);
   void CmdHeartbeat(Reply& r);
   void CmdMoveSteps(Reply& r);
@@ -158,6 +165,9 @@ class Cube : private MotionListener {
   void LatchEstop(const char* reason, const char* detail, MoveOutcome why);
   void RecordTrip(const char* reason, const char* detail);
   void WriteConfig(JsonWriter& w) const;
+  // Writes the stop report of `stop` and `estop` replies (protocol 1.1): the
+  // last motion, the wheel positions, and when the wheels came to rest.
+  void WriteStopReport(JsonWriter& w) const;
   // Writes `"led":{r,g,b,pattern}` (get_status and set_led replies).
   void WriteLed(JsonWriter& w) const;
   void IntegratePending();
@@ -184,6 +194,8 @@ class Cube : private MotionListener {
   // Safety.
   bool estop_ = false;
   char estop_reason_[64] = {};
+  uint64_t estop_us_ = 0;  // uptime when the latch was set
+  uint64_t rest_us_ = 0;   // uptime when the wheels last came to rest
   uint32_t trips_ = 0;
   SafetyTrip last_trip_;
   uint64_t last_host_us_;
@@ -192,6 +204,11 @@ class Cube : private MotionListener {
   bool session_open_ = false;
   uint32_t sid_ = 0;
   uint32_t last_seq_ = 0;
+  // The highest seq of a stop or estop executed in this session (protocol
+  // 1.1, section 4.1): a motion command numbered below it that was never
+  // executed is refused, so it cannot start after the stop.
+  uint32_t stop_fence_ = 0;
+  bool fence_by_estop_ = false;
   Remembered memory_[kReplyMemory];
   size_t memory_count_ = 0;
   size_t memory_next_ = 0;

@@ -66,6 +66,7 @@ void Cube::CmdHello(Reply& r) {
   sid_ = sid;
   session_open_ = true;
   last_seq_ = r.has_seq ? r.seq : 0;
+  stop_fence_ = 0;
   memory_count_ = 0;
   memory_next_ = 0;
   hello_has_seq_ = r.has_seq;
@@ -263,7 +264,10 @@ void Cube::CmdEstop(Reply& r) {
   char text[64] = "estop command";
   if (reason != nullptr && reason->type == JsonType::kString &&
       reason->str_len > 0) {
-    CopyText(text, sizeof(text), reason->str, reason->str_len);
+    const size_t n = CopyText(text, sizeof(text), reason->str, reason->str_len);
+    if (SanitizeReason(text, n) == 0) {
+      CopyText(text, sizeof(text), "estop command", 13);
+    }
   }
   LatchEstop("estop_command", text, MoveOutcome::kEstop);
   JsonWriter& w = r.Ok();
@@ -271,6 +275,29 @@ void Cube::CmdEstop(Reply& r) {
   w.Bool(true);
   w.Key("estop_reason");
   w.String(estop_reason_);
+  w.Key("estop_us");
+  w.Int(static_cast<int64_t>(estop_us_));
+  WriteStopReport(w);
+}
+
+void Cube::WriteStopReport(JsonWriter& w) const {
+  const MotionReport& m = motion_.report();
+  w.Key("move_id");
+  w.Uint(m.move_id);
+  w.Key("move_outcome");
+  w.String(MoveOutcomeName(m.outcome));
+  w.Key("move_left_steps");
+  w.Int(m.done_left);
+  w.Key("move_right_steps");
+  w.Int(m.done_right);
+  w.Key("left_steps");
+  w.Int(motion_.left_position());
+  w.Key("right_steps");
+  w.Int(motion_.right_position());
+  w.Key("uptime_us");
+  w.Int(static_cast<int64_t>(clock_.NowUs() - boot_us_));
+  w.Key("stopped_us");
+  w.Int(static_cast<int64_t>(rest_us_));
 }
 
 void Cube::CmdResetEstop(Reply& r) {

@@ -251,10 +251,7 @@ void Cube::CmdStop(Reply& r) {
   JsonWriter& w = r.Ok();
   w.Key("stopped");
   w.Bool(was);
-  w.Key("left_steps");
-  w.Int(motion_.left_position());
-  w.Key("right_steps");
-  w.Int(motion_.right_position());
+  WriteStopReport(w);
 }
 
 }  // namespace cube

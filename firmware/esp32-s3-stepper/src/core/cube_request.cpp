@@ -69,6 +69,25 @@ size_t Cube::Finish(Reply& reply, uint8_t* out, size_t cap) {
   return AppendMac(out, reply.size(), cap);
 }
 
+size_t Cube::FinishRemembered(Reply& reply, uint8_t* out, size_t cap) {
+  last_seq_ = reply.seq;
+  const size_t n = Finish(reply, out, cap);
+  if (n <= kMaxMessage) {
+    Remembered& m = memory_[memory_next_];
+    m.seq = reply.seq;
+    m.len = n;
+    std::memcpy(m.bytes, out, n);
+    memory_next_ = (memory_next_ + 1) % kReplyMemory;
+    if (memory_count_ < kReplyMemory) ++memory_count_;
+  }
+  return n;
+}
+
+bool Cube::IsMotionCommand(const char* cmd) {
+  return Equals(cmd, "move_steps") || Equals(cmd, "move_cm") ||
+         Equals(cmd, "rotate_deg") || Equals(cmd, "drive");
+}
+
 bool Cube::IsCommand(const char* cmd) const {
   static const char* const kCommands[] = {
       "hello",      "heartbeat", "move_steps", "move_cm",
@@ -254,6 +273,18 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
       }
       return Finish(reply, out, cap);
     }
+    if (Equals(cmd, "stop") || Equals(cmd, "estop")) {
+      // The safety lane (section 4.1): executed whatever the seq, never
+      // remembered, the session's highest seq untouched, so a request still
+      // being retried stays valid; older motion commands are fenced off.
+      if (reply.seq >= stop_fence_) {
+        stop_fence_ = reply.seq;
+        fence_by_estop_ = Equals(cmd, "estop");
+      }
+      last_host_us_ = now;
+      Dispatch(cmd, reply);
+      return Finish(reply, out, cap);
+    }
     for (size_t i = 0; i < memory_count_; ++i) {
       const Remembered& m = memory_[i];
       if (m.seq == reply.seq && m.len <= cap) {
@@ -263,7 +294,7 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
       }
     }
     if (reply.seq <= last_seq_ && safety_cmd) {
-      // A stop is never refused; it is idempotent, so not remembered.
+      // reset_estop without a key: accepted whatever the seq, not remembered.
       last_host_us_ = now;
       Dispatch(cmd, reply);
       return Finish(reply, out, cap);
@@ -281,18 +312,18 @@ size_t Cube::Handle(const uint8_t* req, size_t len, uint8_t* out, size_t cap) {
       return Finish(reply, out, cap);
     }
     last_host_us_ = now;
-    last_seq_ = reply.seq;
-    Dispatch(cmd, reply);
-    const size_t n = Finish(reply, out, cap);
-    if (n <= kMaxMessage) {
-      Remembered& m = memory_[memory_next_];
-      m.seq = reply.seq;
-      m.len = n;
-      std::memcpy(m.bytes, out, n);
-      memory_next_ = (memory_next_ + 1) % kReplyMemory;
-      if (memory_count_ < kReplyMemory) ++memory_count_;
+    if (IsMotionCommand(cmd) && reply.seq < stop_fence_) {
+      // Sent before a stop that overtook it: it must not start after it.
+      Text t;
+      t.S("\"").S(cmd).S("\" was sent before ")
+          .S(fence_by_estop_ ? "an estop" : "a stop")
+          .S(" that was already executed");
+      reply.Fail(fence_by_estop_ ? kEmergencyStopped : kInterrupted, t.c_str());
+      reply.DetailInt("stop_seq", stop_fence_);
+      return FinishRemembered(reply, out, cap);
     }
-    return n;
+    Dispatch(cmd, reply);
+    return FinishRemembered(reply, out, cap);
   }
 
   // Seed-style request: no session, no memory.

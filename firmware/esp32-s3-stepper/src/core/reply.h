@@ -18,6 +18,7 @@ constexpr const char* kInvalidParameter = "INVALID_PARAMETER";
 constexpr const char* kRangeExceeded = "RANGE_EXCEEDED";
 constexpr const char* kEmergencyStopped = "EMERGENCY_STOPPED";
 constexpr const char* kStaleSequence = "STALE_SEQUENCE";
+constexpr const char* kInterrupted = "INTERRUPTED";
 constexpr const char* kSessionMismatch = "SESSION_MISMATCH";
 constexpr const char* kAuthFailed = "AUTH_FAILED";
 constexpr const char* kHardwareError = "HARDWARE_ERROR";

@@ -8,8 +8,8 @@ namespace cube {
 
 bool Equals(const char* a, const char* b) { return std::strcmp(a, b) == 0; }
 
-void CopyText(char* dst, size_t cap, const char* src, size_t len) {
-  if (cap == 0) return;
+size_t CopyText(char* dst, size_t cap, const char* src, size_t len) {
+  if (cap == 0) return 0;
   size_t n = len < cap - 1 ? len : cap - 1;
   // Do not cut a UTF-8 sequence in half.
   while (n > 0 && n < len &&
@@ -18,6 +18,33 @@ void CopyText(char* dst, size_t cap, const char* src, size_t len) {
   }
   std::memcpy(dst, src, n);
   dst[n] = '\0';
+  return n;
+}
+
+size_t SanitizeReason(char* s, size_t len) {
+  size_t out = 0;
+  bool in_control = false;
+  for (size_t i = 0; i < len; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xC2 && i + 1 < len &&
+                    static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      if (c1) ++i;
+      if (!in_control) s[out++] = ' ';
+      in_control = true;
+      continue;
+    }
+    in_control = false;
+    s[out++] = s[i];
+  }
+  size_t start = 0;
+  while (start < out && s[start] == ' ') ++start;
+  while (out > start && s[out - 1] == ' ') --out;
+  const size_t n = out - start;
+  for (size_t i = 0; i < n; ++i) s[i] = s[start + i];
+  s[n] = '\0';
+  return n;
 }
 
 Text& Text::S(const char* s) {

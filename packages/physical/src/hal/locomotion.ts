@@ -2,7 +2,7 @@ import type { LocomotionInterface, Pose } from '@hal/types';
 import type { RequestParams } from '../protocol/schemas.js';
 import type { HalContext } from './context.js';
 import { moveTo } from './move-to.js';
-import { awaitMotion, poseData, runMotion } from './run-motion.js';
+import { awaitMotion, poseData, runMotion, sendMotion } from './run-motion.js';
 
 /** The `drive()` power that means full speed. */
 const MAX_POWER = 255;
@@ -30,7 +30,8 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         const rightSps = Math.trunc((p.right / MAX_POWER) * max);
         const params: RequestParams['drive'] = { left_sps: leftSps, right_sps: rightSps };
         if (p.durationMs !== undefined) params.duration_ms = Math.max(1, Math.round(p.durationMs));
-        const reply = await ctx.command('drive', params);
+        const epoch = ctx.safetyEpoch();
+        const reply = await sendMotion(ctx, epoch, 'drive', params);
         const data = {
           moveId: reply.move_id,
           leftSps: reply.left_sps ?? leftSps,
@@ -40,7 +41,7 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         if (params.duration_ms === undefined || reply.running === false) {
           return { ...data, running: reply.running ?? false };
         }
-        const status = await awaitMotion(ctx, reply, params.duration_ms);
+        const status = await awaitMotion(ctx, reply, params.duration_ms, epoch);
         return {
           ...data,
           running: false,

@@ -1,5 +1,6 @@
 import type { Logger } from '../logger.js';
 import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
+import type { SafetyLaneTiming } from '../safety-lane.js';
 import type { TransportFactory } from '../transport/transport.js';
 
 /** Options of {@link PhysicalHAL}, beside its {@link HALConfig}. */
@@ -32,6 +33,12 @@ export interface PhysicalHALOptions {
    * 3 x 2000 ms budget.
    */
   attempts?: number;
+  /**
+   * How `stop()` and `emergencyStop()` are resent until the robot acknowledges them, real ms.
+   * Default every 20 ms, for as long as any other request is retried (`requestTimeoutMs` x
+   * `attempts`: 6000 ms by default).
+   */
+  safetyLane?: SafetyLaneTiming;
   /** Extra time a motion may take beyond its planned duration, real ms. Default 2000. */
   motionTimeoutMarginMs?: number;
   /** Names the host software in `hello`. */

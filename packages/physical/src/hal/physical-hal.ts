@@ -23,6 +23,8 @@ import type {
   RequestParams,
   StatusReply,
 } from '../protocol/schemas.js';
+import { DEFAULT_SAFETY_LANE } from '../safety-lane.js';
+import type { SafetyInterrupt, SafetyLaneTiming } from '../safety-lane.js';
 import { Session } from '../session.js';
 import type { SessionState } from '../session.js';
 import type { SerialLinkStats, Transport, TransportStats } from '../transport/transport.js';
@@ -101,6 +103,15 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       timing: this.#timing,
       safety: this.#safety,
       command: (cmd, params) => this.#command(cmd, params),
+      safetyCommand: async (cmd, params) => {
+        const session = this.#session;
+        // no session yet (or any more): initialize() sends the host latch once one is open
+        if (session === undefined || session.sid === undefined) return undefined;
+        return await session.safetyCommand(cmd, params);
+      },
+      safetyEpoch: () => this.#session?.safetyEpoch ?? 0,
+      interrupted: (epoch) =>
+        this.#session?.interrupted(epoch) ?? new Promise<SafetyInterrupt>(() => undefined),
     };
     this.locomotion = createLocomotion(ctx);
     this.vision = createVision(ctx, this.#camera);
@@ -133,6 +144,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       heartbeatIntervalMs: () => this.#timing.heartbeatMs(),
       reconnectIntervalMs: this.#options.reconnectIntervalMs ?? 1000,
       request: () => this.#timing.request(),
+      safetyLane: () => this.#safetyLane(),
       onReply: (cmd, data) => {
         this.#tracker.observe(cmd, data);
         this.#safety.observe(cmd, data);
@@ -147,6 +159,11 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#learn(hello);
       const status = await session.command('get_status', {});
       this.#tracker.anchor(status);
+      const hostLatch = this.#safety.hostLatch;
+      if (hostLatch !== undefined && !status.safety.estop) {
+        // emergencyStop() was called before initialize() (or after a cleanup): latch the robot too
+        await session.command('estop', { reason: hostLatch });
+      }
       this.#initialized = true;
       this.#camera?.start();
       this.#log.info('connected', { deviceId: hello.device_id, transport: transport.type });
@@ -176,7 +193,9 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#session = undefined;
     this.#transport = undefined;
     if (session !== undefined && session.state === 'connected') {
-      await session.command('stop', {}, { attempts: 1 }).catch(() => undefined);
+      await session
+        .safetyCommand('stop', {}, { resendMs: DEFAULT_SAFETY_LANE.resendMs, totalMs: 500 })
+        .catch(() => undefined);
     }
     session?.close();
     await transport?.close();
@@ -246,6 +265,17 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#safety.refused(error);
       throw error;
     });
+  }
+
+  /** Resend every 20 ms, within the same total budget as any other request. */
+  #safetyLane(): SafetyLaneTiming {
+    if (this.#options.safetyLane !== undefined) return this.#options.safetyLane;
+    const { timeoutMs, attempts } = this.#timing.request();
+    const totalMs =
+      timeoutMs === undefined || attempts === undefined
+        ? DEFAULT_SAFETY_LANE.totalMs
+        : timeoutMs * attempts;
+    return { resendMs: DEFAULT_SAFETY_LANE.resendMs, totalMs };
   }
 
   #learn(hello: HelloReply): void {

@@ -1,3 +1,4 @@
+import { sanitizeEstopReason } from '@hal/types';
 import { deviceGeometry, MAX_STEPS_PER_COMMAND } from '../protocol/device-config.js';
 import type { DeviceSettings } from '../protocol/device-config.js';
 import { LED_PATTERNS } from '../protocol/schemas.js';
@@ -5,7 +6,7 @@ import type { AuthScheme, DeviceConfig, ReplyDataOf } from '../protocol/schemas.
 import { drive, moveCm, moveSteps, rotateDeg } from './motion-commands.js';
 import { integerField, isAbsent, numberField, Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
-import { emergencyStop } from './robot-state.js';
+import { emergencyStop, stopReport } from './robot-state.js';
 import type { RobotState } from './robot-state.js';
 
 /** Every configuration field `set_config` takes: its range, and whether it must be an int. */
@@ -134,8 +135,7 @@ export function executeCommand(state: RobotState, cmd: string | undefined, r: Js
       return drive(state, r);
     case 'stop': {
       const stopped = state.motion.stop('stopped');
-      const { left, right } = state.motion.position;
-      return { stopped, left_steps: left, right_steps: right };
+      return { stopped, ...stopReport(state) };
     }
     case 'get_status':
       return status(state);
@@ -144,9 +144,15 @@ export function executeCommand(state: RobotState, cmd: string | undefined, r: Js
     case 'set_led':
       return setLed(state, r);
     case 'estop': {
-      const reason = typeof r['reason'] === 'string' ? r['reason'].slice(0, 63) : 'estop command';
+      // never refused: the same rule as every HAL's (and the firmware's) for the reason
+      const reason = sanitizeEstopReason(r['reason']);
       emergencyStop(state, reason, { reason: 'estop_command', detail: reason });
-      return { estop: true, estop_reason: reason };
+      return {
+        estop: true,
+        estop_reason: state.safety.reason,
+        estop_us: state.safety.latchedUs,
+        ...stopReport(state),
+      };
     }
     case 'reset_estop': {
       const was = state.safety.reset();

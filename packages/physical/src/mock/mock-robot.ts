@@ -53,6 +53,7 @@ export class MockRobot {
   readonly #session = new SessionMemory();
   readonly #state: RobotState;
   #dropReplies = 0;
+  #dropRequests = 0;
 
   constructor(options: MockRobotOptions = {}) {
     this.deviceId = options.deviceId ?? 'cube-mock';
@@ -94,6 +95,11 @@ export class MockRobot {
     return this.#state.safety.estopped;
   }
 
+  /** Drops the next `count` requests before they reach the robot (lost requests). */
+  dropRequests(count: number): void {
+    this.#dropRequests += count;
+  }
+
   /** Drops the next `count` replies after executing their requests (lost replies). */
   dropReplies(count: number): void {
     this.#dropReplies += count;
@@ -119,6 +125,10 @@ export class MockRobot {
    */
   receive(bytes: Uint8Array): Uint8Array | undefined {
     if (this.unresponsive) return undefined;
+    if (this.#dropRequests > 0) {
+      this.#dropRequests -= 1;
+      return undefined;
+    }
     const reply = this.handle(bytes);
     if (this.#dropReplies > 0) {
       this.#dropReplies -= 1;
@@ -141,6 +151,12 @@ export class MockRobot {
     }
     const admission = this.#session.admit(envelope, this.#wire.authenticated);
     if (admission.kind === 'refuse') return this.#wire.error(envelope, admission.refusal);
+    if (admission.kind === 'overtaken') {
+      motion.contact();
+      const refused = this.#wire.error(envelope, admission.refusal);
+      this.#session.remember(envelope.seq!, refused);
+      return refused;
+    }
     if (admission.kind === 'replay') {
       motion.contact();
       return admission.reply;

@@ -42,6 +42,7 @@ export class MotionState {
   #moveLeft = 0;
   #moveRight = 0;
   #lastHostUs = 0;
+  #restUs = 0;
 
   constructor(options: MotionStateOptions) {
     this.#options = options;
@@ -69,6 +70,11 @@ export class MotionState {
   /** Steps the last motion has made on each wheel. */
   get moveSteps(): WheelPair {
     return { left: this.#moveLeft, right: this.#moveRight };
+  }
+
+  /** Robot µs when the wheels last came to rest (the end of the last motion; 0: never moved). */
+  get restUs(): number {
+    return this.#restUs;
   }
 
   /** The odometry pose, cm and radians. */
@@ -125,10 +131,12 @@ export class MotionState {
     this.#stepTo(m, until - m.startUs);
     if (until === timeoutAt && timeoutAt <= now && timeoutAt < end) {
       this.#motion = undefined;
+      this.#restUs = timeoutAt;
       this.#outcome = 'host_timeout';
       this.#options.onHostTimeout();
     } else if (until === end && end <= now) {
       this.#motion = undefined;
+      this.#restUs = end;
       this.#outcome = 'done';
     }
   }
@@ -160,6 +168,7 @@ export class MotionState {
     if (this.#motion === undefined) return false;
     this.#motion = undefined;
     this.#outcome = outcome;
+    this.#restUs = this.#options.clock.us();
     return true;
   }
 

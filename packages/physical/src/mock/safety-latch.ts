@@ -13,16 +13,28 @@ export class SafetyLatch {
   #reason = '';
   #trips = 0;
   #lastTrip: Trip | null = null;
+  #latchedUs = 0;
 
   /** Whether the emergency stop is latched. */
   get estopped(): boolean {
     return this.#estop;
   }
 
-  /** Latches the emergency stop. */
-  latch(reason: string): void {
+  /** Robot µs when the latch was last set. */
+  get latchedUs(): number {
+    return this.#latchedUs;
+  }
+
+  /** The reason stored with the latch ('' when not latched). */
+  get reason(): string {
+    return this.#reason;
+  }
+
+  /** Latches the emergency stop at robot time `nowUs`. */
+  latch(reason: string, nowUs: number): void {
     this.#estop = true;
     this.#reason = reason;
+    this.#latchedUs = nowUs;
   }
 
   /** Clears the latch; returns whether it was set. */

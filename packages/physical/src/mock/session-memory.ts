@@ -10,7 +10,20 @@ export type Admission =
   /** A retry of a remembered request: its reply, byte for byte, and no execution. */
   | { kind: 'replay'; reply: Uint8Array }
   /** Execute it; `remember` its reply under its seq; whether it counts as `contact` from the host. */
-  | { kind: 'execute'; remember: boolean; contact: boolean };
+  | { kind: 'execute'; remember: boolean; contact: boolean }
+  /**
+   * A motion command numbered below a stop already executed (protocol 1.1, section 4.1): not
+   * executed; the refusal is its reply, remembered like any other.
+   */
+  | { kind: 'overtaken'; refusal: Refusal };
+
+/** Commands that move the wheels. */
+const MOTION_COMMANDS: ReadonlySet<string> = new Set([
+  'move_steps',
+  'move_cm',
+  'rotate_deg',
+  'drive',
+]);
 
 /**
  * The robot's session: the current `sid`, the highest `seq` executed and the replies of the last
@@ -23,6 +36,9 @@ export class SessionMemory {
   readonly #replies = new Map<number, Uint8Array>();
   #helloKey = '';
   #helloReply: Uint8Array | undefined;
+  /** The highest seq of a stop or e-stop executed in this session, and which it was. */
+  #fence = 0;
+  #fenceBy: 'stop' | 'estop' = 'stop';
 
   /**
    * Applies the session rules, in order, to a request other than `hello`. `authenticated`: a key
@@ -54,6 +70,27 @@ export class SessionMemory {
       if (seq! <= this.#lastSeq) {
         return refuse('STALE_SEQUENCE', 'stale seq', { seq, last_seq: this.#lastSeq });
       }
+      if (cmd !== undefined && MOTION_COMMANDS.has(cmd) && seq! < this.#fence) {
+        const estop = this.#fenceBy === 'estop';
+        return {
+          kind: 'overtaken',
+          refusal: new Refusal(
+            estop ? 'EMERGENCY_STOPPED' : 'INTERRUPTED',
+            `"${cmd}" was sent before ${estop ? 'an estop' : 'a stop'} that was already executed`,
+            { stop_seq: this.#fence },
+          ),
+        };
+      }
+    } else if (
+      (cmd === 'stop' || cmd === 'estop') &&
+      seq !== undefined &&
+      this.#sid !== 0 &&
+      sid === this.#sid &&
+      seq >= this.#fence
+    ) {
+      // the safety lane: executed whatever its seq, never remembered; it fences older motion
+      this.#fence = seq;
+      this.#fenceBy = cmd;
     }
     // only requests that pass the session rules, and seed-style ones, count as contact
     return {
@@ -86,6 +123,7 @@ export class SessionMemory {
   open(seq: number | undefined): number {
     this.#sid = 1 + Math.floor(Math.random() * 0xfffffffe);
     this.#lastSeq = seq ?? 0;
+    this.#fence = 0;
     this.#replies.clear();
     return this.#sid;
   }
@@ -99,6 +137,7 @@ export class SessionMemory {
   /** A power cycle: no session. */
   forget(): void {
     this.#sid = 0;
+    this.#fence = 0;
     this.#helloReply = undefined;
     this.#replies.clear();
   }

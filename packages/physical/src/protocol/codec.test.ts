@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { createAuthenticator } from './auth.js';
-import { MessageCodec } from './codec.js';
+import { sanitizeEstopReason } from '@hal/types';
+import { MAX_MESSAGE_BYTES, MessageCodec } from './codec.js';
 
 const encode = (text: string) => new TextEncoder().encode(text);
 
@@ -66,9 +67,34 @@ describe('MessageCodec', () => {
 
   describe('#encode', () => {
     it('refuses a message longer than 1024 bytes with RANGE_EXCEEDED', () => {
-      expect(() => new MessageCodec().encode({ cmd: 'estop', reason: 'x'.repeat(1100) })).toThrow(
-        expect.objectContaining({ code: 'RANGE_EXCEEDED' }),
-      );
+      expect(() =>
+        new MessageCodec().encode({ cmd: 'set_led', pattern: 'x'.repeat(1100) }),
+      ).toThrow(expect.objectContaining({ code: 'RANGE_EXCEEDED' }));
+    });
+
+    it('always encodes estop: the reason is sanitized and cut, however it was given', async () => {
+      const keyed = new MessageCodec(await createAuthenticator('00112233'));
+      const reasons: unknown[] = ['x'.repeat(5000), '\u0001'.repeat(200), 42, {}, 'a\ud800'];
+      for (const codec of [new MessageCodec(), keyed]) {
+        for (const reason of reasons) {
+          const bytes = codec.encode({ cmd: 'estop', seq: 4294967295, sid: 4294967295, reason });
+          expect(bytes.length).toBeLessThanOrEqual(MAX_MESSAGE_BYTES);
+          const json = new TextDecoder().decode(bytes).replace(/#[0-9a-f]{32}$/, '');
+          const sent = JSON.parse(json) as Record<string, unknown>;
+          expect(sent['reason']).toBe(sanitizeEstopReason(reason));
+          expect(sent).toMatchObject({ cmd: 'estop', seq: 4294967295, sid: 4294967295 });
+        }
+      }
+    });
+
+    it('always encodes stop, dropping anything but the envelope if it would not fit', () => {
+      const bytes = new MessageCodec().encode({
+        cmd: 'stop',
+        seq: 7,
+        sid: 9,
+        junk: 'y'.repeat(2000),
+      });
+      expect(JSON.parse(new TextDecoder().decode(bytes))).toEqual({ cmd: 'stop', seq: 7, sid: 9 });
     });
   });
 });

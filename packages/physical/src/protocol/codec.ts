@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, sanitizeEstopReason } from '@hal/types';
 import type { MessageAuthenticator } from './auth.js';
 import { appendMac, splitMac } from './auth.js';
 import { ReplyEnvelopeSchema } from './schemas.js';
@@ -31,9 +31,41 @@ export class MessageCodec {
 
   /**
    * The bytes of one request: `{"cmd":...,"seq":...,"sid":...,<params>}` plus the MAC suffix when
-   * a key is set. Throws RANGE_EXCEEDED when the message would be longer than 1024 bytes.
+   * a key is set. Throws RANGE_EXCEEDED when the message would be longer than 1024 bytes, except
+   * for `stop` and `estop`, which always encode.
    */
   encode(message: Record<string, unknown>): Uint8Array {
+    const cmd = message['cmd'];
+    if (cmd === 'stop' || cmd === 'estop') return this.#encodeSafety(message);
+    return this.#encodeChecked(message);
+  }
+
+  /**
+   * A `stop` or `estop` always encodes (protocol section 4.1): the reason is sanitized to at most
+   * 63 UTF-8 bytes, and should the message still be too long, only the envelope and the reason
+   * are kept.
+   */
+  #encodeSafety(message: Record<string, unknown>): Uint8Array {
+    const safe: Record<string, unknown> = { ...message };
+    if (message['cmd'] === 'estop') safe['reason'] = sanitizeEstopReason(message['reason']);
+    const bytes = this.#encodeOrUndefined(safe);
+    if (bytes !== undefined) return bytes;
+    const minimal: Record<string, unknown> = { cmd: message['cmd'] };
+    for (const key of ['seq', 'sid', 'reason']) {
+      if (safe[key] !== undefined) minimal[key] = safe[key];
+    }
+    return this.#encodeChecked(minimal);
+  }
+
+  #encodeOrUndefined(message: Record<string, unknown>): Uint8Array | undefined {
+    try {
+      return this.#encodeChecked(message);
+    } catch {
+      return undefined;
+    }
+  }
+
+  #encodeChecked(message: Record<string, unknown>): Uint8Array {
     const json = encoder.encode(JSON.stringify(message));
     const bytes = this.#auth === undefined ? json : appendMac(json, this.#auth);
     if (bytes.length > MAX_MESSAGE_BYTES) {

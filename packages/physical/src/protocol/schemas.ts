@@ -91,13 +91,6 @@ export const MotionReplySchema = z.object({
 });
 export type MotionReply = z.infer<typeof MotionReplySchema>;
 
-export const StopReplySchema = z.object({
-  stopped: z.boolean(),
-  left_steps: int,
-  right_steps: int,
-});
-export type StopReply = z.infer<typeof StopReplySchema>;
-
 /** The LED patterns of `set_led`. */
 export const LED_PATTERNS = ['solid', 'blink', 'pulse', 'off'] as const;
 export type LedPattern = (typeof LED_PATTERNS)[number];
@@ -163,7 +156,38 @@ export type SetConfigReply = z.infer<typeof SetConfigReplySchema>;
 export const SetLedReplySchema = z.object({ led: LedStateSchema });
 export type SetLedReply = z.infer<typeof SetLedReplySchema>;
 
-export const EstopReplySchema = z.object({ estop: z.literal(true), estop_reason: z.string() });
+/**
+ * What a `stop` or `estop` reply tells since protocol 1.1 (absent from a 1.0 robot): the motion it
+ * ended, and on the robot's clock when the wheels came to rest.
+ */
+export const StopReportSchema = z.object({
+  move_id: opt(uint32),
+  move_outcome: opt(z.enum(MOVE_OUTCOMES)),
+  move_left_steps: opt(int),
+  move_right_steps: opt(int),
+  /** Absolute wheel positions after the stop, steps. */
+  left_steps: opt(int),
+  right_steps: opt(int),
+  /** The robot's uptime when it handled this request, microseconds. */
+  uptime_us: opt(int),
+  /** The robot's uptime when the wheels last came to rest, microseconds. */
+  stopped_us: opt(int),
+});
+export type StopReport = z.infer<typeof StopReportSchema>;
+
+export const StopReplySchema = StopReportSchema.extend({
+  stopped: z.boolean(),
+  left_steps: int,
+  right_steps: int,
+});
+export type StopReply = z.infer<typeof StopReplySchema>;
+
+export const EstopReplySchema = StopReportSchema.extend({
+  estop: z.literal(true),
+  estop_reason: z.string(),
+  /** The robot's uptime when the latch was set, microseconds (1.1). */
+  estop_us: opt(int),
+});
 export type EstopReply = z.infer<typeof EstopReplySchema>;
 
 export const ResetEstopReplySchema = z.object({

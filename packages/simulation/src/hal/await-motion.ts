@@ -10,7 +10,7 @@ export function poseData(robot: SimRobot): Record<string, number> {
 
 /**
  * Waits for a motion to end and returns its report, or throws: COLLISION (with the contact),
- * INTERRUPTED (with the outcome), or TIMEOUT (the robot is then stopped). In the fast clock the
+ * EMERGENCY_STOPPED, INTERRUPTED (with the outcome), or TIMEOUT (the robot is then stopped). In the fast clock the
  * HAL advances the world itself; otherwise it waits for whoever drives the clock.
  */
 export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promise<MotionReport> {
@@ -43,8 +43,19 @@ export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promis
       { details: { contact: c, pose: poseData(ctx.robot()), moveId: report.moveId } },
     );
   }
+  const details = { outcome: report.outcome, moveId: report.moveId, pose: poseData(ctx.robot()) };
+  if (report.outcome === 'estop') {
+    // as PhysicalHAL reports it: the e-stop has its own code
+    throw new HalError(
+      'EMERGENCY_STOPPED',
+      `motion ${report.moveId} was cut short by the emergency stop`,
+      {
+        details,
+      },
+    );
+  }
   throw new HalError('INTERRUPTED', `motion ${report.moveId} ended early: ${report.outcome}`, {
-    details: { outcome: report.outcome, moveId: report.moveId, pose: poseData(ctx.robot()) },
+    details,
   });
 }
 

@@ -24,7 +24,9 @@ export function createSafety(ctx: HalContext): SafetyInterface {
   return {
     emergencyStop: (reason) =>
       b.call('emergencyStop', { reason }, async (p) => {
-        ctx.robot().emergencyStop(p.reason ?? 'estop command');
+        // never refused: the boundary sanitized the reason, and before initialize() or after
+        // cleanup() the simulated robot still latches
+        ctx.robot().emergencyStop(p.reason);
         ctx.events.emit('safety', status());
         return { estop: true, reason: ctx.robot().emergencyStopReason };
       }),

@@ -53,8 +53,15 @@ export class RobotSafety {
 
   // ---- emergency stop ----------------------------------------------------------------------
 
-  /** `estop`: stops at once and latches until {@link reset}. */
+  /**
+   * `estop`: stops at once and latches until {@link reset}. While already latched it only stops:
+   * the first reason is kept and no trip is counted (protocol 1.1: a resent stop is harmless).
+   */
   emergencyStop(reason: string): void {
+    if (this.#latched) {
+      this.#hooks.stopMotion('estop');
+      return;
+    }
     this.#trip('estop_command', reason);
   }
 

@@ -8,6 +8,7 @@ import {
 } from '../robot-config.js';
 import type { RobotConfig } from '../robot-config.js';
 import { createReadSchemas } from './reads.js';
+import { ESTOP_REASON_MAX_BYTES, sanitizeEstopReason } from '../estop-reason.js';
 
 /** Rounds a limit down so the number quoted to users is never above the true limit. */
 function floorTo(value: number, decimals: number): number {
@@ -110,8 +111,15 @@ export function createCallSchemas(config: RobotConfig) {
       .object({ soundId: z.string().min(1).max(100).describe('Sound effect id') })
       .describe('Play a sound effect'),
     emergencyStop: z
-      .object({ reason: z.string().max(200).optional().describe('Why, up to 200 characters') })
-      .describe('Stop everything and latch until reset'),
+      .object({
+        // never refused for its argument: any value becomes a stored reason (estop-reason.ts)
+        reason: z
+          .preprocess(sanitizeEstopReason, z.string().max(ESTOP_REASON_MAX_BYTES))
+          .describe(
+            `Why (optional text; control characters become spaces, cut to ${ESTOP_REASON_MAX_BYTES} UTF-8 bytes)`,
+          ),
+      })
+      .describe('Stop everything and latch until reset; never refused for its argument'),
     resetEmergencyStop: z.object({}).describe('Clear a latched emergency stop'),
   } as const;
 }

@@ -1,6 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { CAPABILITIES, hasCapability, parseCapability } from '../capabilities.js';
 import { isHalError } from '../errors.js';
+import { describeEstopContract } from './contract-estop.js';
 import type { HalErrorCode } from '../errors.js';
 import type { HardwareAbstractionLayer } from '../interfaces.js';
 import { DeviceInfoSchema, PoseSchema, SafetyStatusSchema } from '../pose.js';
@@ -228,6 +229,8 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         },
       );
     });
+
+    describeEstopContract(() => hal, timeout);
 
     describe('motion (REP-103: x forward, y left, yaw counter-clockwise)', () => {
       it('moveForward(10) ends 0.1 m ahead and moveBackward(10) returns', { timeout }, async () => {

@@ -31,6 +31,7 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
 
   #ready = false;
   #estop = false;
+  #estopReason: string | undefined;
   #x = 0;
   #y = 0;
   #yaw = 0;
@@ -110,19 +111,22 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
     };
     this.safety = {
       emergencyStop: (reason) =>
-        b.call('stop', {}, async () => {
+        b.call('emergencyStop', { reason }, async (p) => {
           this.#estop = true;
-          return reason === undefined ? {} : { reason };
+          this.#estopReason = p.reason;
+          return { estop: true, reason: p.reason };
         }),
       isEmergencyStopped: () => this.#estop,
       resetEmergencyStop: () =>
-        b.call('stop', {}, async () => {
+        b.call('resetEmergencyStop', {}, async () => {
           this.#estop = false;
+          this.#estopReason = undefined;
         }),
       getSafetyStatus: (): SafetyStatus => ({
         emergencyStopped: this.#estop,
         batteryLevel: 100,
         errors: [],
+        ...(this.#estopReason === undefined ? {} : { emergencyStopReason: this.#estopReason }),
       }),
     };
   }

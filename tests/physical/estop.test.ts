@@ -1,0 +1,95 @@
+// The e-stop against the real emulator over real UDP, on a clean and on a lossy link, with a
+// robot driving and a get_status stuck retrying: the stop is never queued behind it, the robot
+// stops and latches, the running move resolves EMERGENCY_STOPPED, and few steps follow the call
+// (measured on the robot's clock). Generous bounds; the figures are in bench/estop.bench.ts.
+import { PhysicalHAL } from '@hal/physical';
+import { afterAll, describe, expect, it } from 'vitest';
+import { startEmulator, stopAllEmulators } from './emulator.js';
+import type { Faults } from './fault-proxy.js';
+import { startFaultProxy } from './fault-proxy.js';
+import { estopTrial, robotClock, setAcceleration, TRIAL_ACCELERATION } from './estop-trial.js';
+
+afterAll(stopAllEmulators);
+
+const TRIALS = 8;
+// A stuck get_status holds the request queue for at least one 500 ms resend: the stop must not
+// wait for it. Generous for a loaded machine, and still well below what the queue would cost.
+const BOUND_MS = 400;
+
+async function rig(faults: Faults) {
+  // the default host timeout: the HAL resends every 500 ms, as it would on a real robot
+  const emulator = await startEmulator({ pty: false });
+  await setAcceleration(emulator.udpPort, TRIAL_ACCELERATION);
+  const proxy = await startFaultProxy({
+    robotPort: emulator.udpPort,
+    seed: 20261130,
+    toRobot: faults,
+    toHost: faults,
+  });
+  const hal = new PhysicalHAL({
+    mode: 'physical',
+    deviceId: 'cube-estop',
+    connection: { type: 'wifi', host: '127.0.0.1', udpPort: proxy.port },
+  });
+  await hal.initialize();
+  return { emulator, proxy, hal, now: robotClock(emulator) };
+}
+
+describe('emergencyStop() against the emulator over UDP', () => {
+  for (const [link, faults] of [
+    ['a clean link', {}],
+    ['a link losing 30% both ways', { drop: 0.3 }],
+  ] as Array<[string, Faults]>) {
+    it(`stops a driving robot at once on ${link}, however the pending status request fares`, async () => {
+      const { emulator, proxy, hal, now } = await rig(faults);
+      try {
+        for (let i = 0; i < TRIALS; i++) {
+          const trial = await estopTrial({
+            hal,
+            emulator,
+            proxy,
+            now,
+            path: 'lane',
+            runMs: 30 + 10 * i,
+            lostReplies: 2,
+          });
+          expect(trial.estop.success, JSON.stringify(trial.estop)).toBe(true);
+          expect(trial.move.code, JSON.stringify(trial.move)).toBe('EMERGENCY_STOPPED');
+          expect(trial.estop.data?.['moveOutcome']).toBe('estop');
+          expect(trial.robotLatencyMs).toBeGreaterThanOrEqual(0);
+          expect(trial.robotLatencyMs).toBeLessThan(BOUND_MS);
+          // 1024 steps/s: at most one step per ms after the call
+          expect(trial.stepsAfterCall).toBeLessThanOrEqual(Math.ceil(trial.robotLatencyMs) + 1);
+          expect(trial.estop.data?.['leftSteps']).toBeGreaterThan(0);
+        }
+        // latched, and nothing moved after the last stop
+        const finished = emulator.events.filter((e) => e.event === 'move_finished');
+        expect(finished).toHaveLength(TRIALS);
+        expect(finished.every((e) => e['outcome'] === 'estop')).toBe(true);
+        expect(emulator.events.filter((e) => e.event === 'move_started')).toHaveLength(TRIALS);
+      } finally {
+        await hal.cleanup();
+        await proxy.close();
+        await emulator.stop();
+      }
+    }, 60_000);
+  }
+
+  it('latches the robot and reports a sanitized reason, whatever the reason was', async () => {
+    const { emulator, proxy, hal } = await rig({});
+    try {
+      const result = await hal.safety.emergencyStop(`${'\u0001'.repeat(200)}${'é'.repeat(80)}`);
+      expect(result.success).toBe(true);
+      expect(result.data?.['reason']).toBe('é'.repeat(31));
+      const status = await hal.refreshStatus();
+      expect(status.safety.estop).toBe(true);
+      expect(status.safety.estop_reason).toBe('é'.repeat(31));
+      expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+      expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+    } finally {
+      await hal.cleanup();
+      await proxy.close();
+      await emulator.stop();
+    }
+  });
+});
