@@ -8,6 +8,7 @@ import type {
   ScanResult,
 } from './pose.js';
 import type { HALToolResult } from './result.js';
+import type { RobotConfig } from './robot-config.js';
 
 /*
  * The five-subsystem contract. Every implementation (simulation, physical, hybrid) must:
@@ -179,4 +180,10 @@ export interface HardwareAbstractionLayer {
   isReady(): boolean;
   /** Who the robot is and which capability strings it offers. */
   getDeviceInfo(): DeviceInfo;
+  /**
+   * Optional: the geometry and limits this HAL validates calls against (for a physical robot, the
+   * limits it reported when the session opened). Tools read their parameter bounds from it; a HAL
+   * without it is taken to be the V1 robot.
+   */
+  readonly robotConfig?: RobotConfig;
 }

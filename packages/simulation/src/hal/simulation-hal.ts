@@ -5,6 +5,7 @@ import type {
   HALConfig,
   HardwareAbstractionLayer,
   LocomotionInterface,
+  RobotConfig,
   SafetyInterface,
   VisionInterface,
 } from '@hal/types';
@@ -95,6 +96,11 @@ export class SimulationHAL implements HardwareAbstractionLayer {
   /** The simulated robot this HAL drives (looked up by id: a map change re-creates it). */
   get robot(): SimRobot {
     return this.world.robot(this.#robotId);
+  }
+
+  /** The geometry and limits of the simulated robot, which every call is validated against. */
+  get robotConfig(): RobotConfig {
+    return this.robot.config;
   }
 
   /** Messages passed to `communication.log`, oldest first (the last 1000). */

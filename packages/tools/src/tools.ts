@@ -1,0 +1,73 @@
+import { createCallSchemas, hasCapability } from '@hal/types';
+import type { CallName, HardwareAbstractionLayer, ReadCallName } from '@hal/types';
+import type { z } from 'zod';
+import { TOOL_CATALOG } from './catalog.js';
+import type { ToolSafety } from './catalog.js';
+import { toolParameters } from './json-schema.js';
+import type { JsonSchemaObject } from './json-schema.js';
+import { robotConfigOf } from './robot-config.js';
+
+/** One HAL call as an LLM tool. */
+export interface HalTool {
+  /** Stable, snake_case, e.g. 'move_forward', 'get_pose', 'emergency_stop'. */
+  name: string;
+  /** The HAL call it runs. */
+  call: CallName | ReadCallName;
+  /** What it does, with units, frame (REP-103) and limits. */
+  description: string;
+  /** JSON Schema (type 'object'); bounds are the robot's own reported limits. */
+  inputSchema: JsonSchemaObject;
+  /** Never blocked by the leash, approval or the rate limit. */
+  safety?: ToolSafety;
+  /** Whether the call moves the robot (refused while e-stopped; subject to the leash). */
+  motion: boolean;
+}
+
+/** Which tools {@link halTools} lists, by name. */
+export interface HalToolsOptions {
+  /** Only these tools (those the robot can run). */
+  include?: string[];
+  /** Not these tools. */
+  exclude?: string[];
+}
+
+function describe(summary: string, schema: z.ZodType, parameters: JsonSchemaObject): string {
+  const own = schema.description;
+  const limits = Object.entries(parameters.properties)
+    .map(([name, p]) =>
+      typeof p['description'] === 'string' ? `${name}: ${p['description']}` : '',
+    )
+    .filter((line) => line !== '');
+  return [summary, own === undefined ? '' : `${own}.`, ...limits.map((l) => `${l}.`)]
+    .filter((part) => part !== '')
+    .join(' ');
+}
+
+/**
+ * The tools an LLM may be offered for this HAL: every call the robot can run (by
+ * `getDeviceInfo().capabilities`, so call it after `initialize()`), with parameter bounds from the
+ * robot's own limits. The emergency stop is always offered.
+ */
+export function halTools(hal: HardwareAbstractionLayer, options: HalToolsOptions = {}): HalTool[] {
+  const schemas = createCallSchemas(robotConfigOf(hal));
+  const offered = hal.getDeviceInfo().capabilities;
+  return TOOL_CATALOG.filter(
+    (entry) =>
+      (entry.requires === undefined ||
+        entry.safety !== undefined ||
+        hasCapability(offered, entry.requires)) &&
+      (options.include === undefined || options.include.includes(entry.name)) &&
+      !(options.exclude ?? []).includes(entry.name),
+  ).map((entry) => {
+    const schema = schemas[entry.call] as z.ZodType;
+    const inputSchema = toolParameters(schema);
+    return {
+      name: entry.name,
+      call: entry.call as CallName | ReadCallName,
+      description: describe(entry.summary, schema, inputSchema),
+      inputSchema,
+      ...(entry.safety === undefined ? {} : { safety: entry.safety }),
+      motion: entry.motion,
+    };
+  });
+}
