@@ -31,6 +31,9 @@ export interface LoopParts {
 
 const STOPPED = Symbol('stopped');
 
+/** How long the run waits for the stop it runs at its end (a custom executor might hang). */
+const STOP_TIMEOUT_MS = 10_000;
+
 /** Resolves with the promise's value, or STOPPED as soon as `signal` aborts. */
 function unlessStopped<T>(promise: Promise<T>, signal: AbortSignal): Promise<T | typeof STOPPED> {
   if (signal.aborted) return Promise.resolve(STOPPED);
@@ -84,8 +87,13 @@ export async function agentLoop(settings: AgentSettings, parts: LoopParts): Prom
       emit({ type: 'tool_call', step, id, name: stopTool.name, arguments: '{}' });
       const t0 = Date.now();
       try {
-        const result = await executor.execute({ id, name: stopTool.name, arguments: {} });
-        emit(resultEvent(step, id, stopTool.name, result, Date.now() - t0));
+        const result = await unlessStopped(
+          executor.execute({ id, name: stopTool.name, arguments: {} }),
+          AbortSignal.timeout(STOP_TIMEOUT_MS),
+        );
+        if (result === STOPPED)
+          settings.logger.error('the stop tool did not answer in time', { ms: STOP_TIMEOUT_MS });
+        else emit(resultEvent(step, id, stopTool.name, result, Date.now() - t0));
       } catch (cause) {
         // The executors of @hal/tools never throw; one of the caller's own might.
         settings.logger.error('the stop tool threw', { error: errorMessage(cause) });
