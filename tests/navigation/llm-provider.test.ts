@@ -9,8 +9,8 @@ import {
 import type { DecisionContext, NavigationDecision } from '@hal/navigation';
 import { SimulationHAL, World } from '@hal/simulation';
 import { afterEach, describe, expect, it } from 'vitest';
-import { startFakeOpenAIServer } from './fake-openai-server.js';
-import type { FakeOpenAIServer, ScriptedReply } from './fake-openai-server.js';
+import { startFakeOpenAIServer } from '../helpers/fake-openai-server.js';
+import type { FakeOpenAIServer, ScriptedReply } from '../helpers/fake-openai-server.js';
 
 const FRAME = 'data:image/jpeg;base64,/9j/AAAA';
 const valid: NavigationDecision = {

@@ -6,6 +6,7 @@ import { element } from './dom.js';
 import { GoalDriver } from './goal-driver.js';
 import { KeyboardTeleop } from './keyboard-teleop.js';
 import { TrajectoryPlot } from './plot.js';
+import { AgentPanel } from './panels/agent-panel.js';
 import { noteHalEvents, ResultsLog } from './results-log.js';
 import { StatusLine } from './status-line.js';
 import { TelemetryPanel } from './telemetry-panel.js';
@@ -80,6 +81,8 @@ new DemoControls({
   gridToggle,
 });
 
+const agent = new AgentPanel(element('agent-panel'), hal);
+
 const telemetry = new TelemetryPanel({
   list: element('telemetry'),
   badge: element('safety-badge'),
@@ -115,6 +118,7 @@ const hooks = {
   robotId,
   goalState: () => goals.state,
   remote: () => remote.state,
+  agentRunning: () => agent.running,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
   /** Where a world point (metres) is on the screen, in client pixels. */
   worldToClient: (x: number, y: number) => viewport.worldToClient(x, y),

@@ -1,0 +1,23 @@
+// One line per agent event, for a terminal.
+import type { AgentEvent } from '@hal/agent';
+
+const clip = (text: string, n = 160) => (text.length > n ? `${text.slice(0, n)}...` : text);
+
+export function describeEvent(e: AgentEvent): string {
+  switch (e.type) {
+    case 'step_started':
+      return `step ${e.step} (${(e.elapsedMs / 1000).toFixed(1)} s)`;
+    case 'assistant_text':
+      return `  model: ${clip(e.text)}`;
+    case 'tool_call':
+      return `  call ${e.name} ${e.arguments}`;
+    case 'tool_result':
+      return `  ${e.isError ? 'error' : 'result'} ${e.name}${e.code === undefined ? '' : ` ${e.code}`}: ${clip(e.text)}${e.image ? ' [image]' : ''}`;
+    case 'retry':
+      return `  retry ${e.attempt} in ${e.delayMs} ms: ${clip(e.reason)}`;
+    case 'error':
+      return `  endpoint error ${e.error.code}: ${clip(e.error.message)}`;
+    case 'done':
+      return `done: ${e.reason} after ${e.steps} steps, ${(e.elapsedMs / 1000).toFixed(1)} s`;
+  }
+}

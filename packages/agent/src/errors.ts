@@ -1,0 +1,50 @@
+/** Why an agent run failed (see {@link AgentError}). */
+export type AgentErrorCode =
+  /** An option is missing or wrong (no model, bad URL, a cap that is not a positive number). */
+  | 'CONFIG'
+  /** The endpoint answered with an HTTP error (the status is in `details`). */
+  | 'HTTP'
+  /** The endpoint could not be reached. */
+  | 'NETWORK'
+  /** The endpoint gave no answer within the request timeout. */
+  | 'TIMEOUT'
+  /** The endpoint answered with something that is not a chat completion. */
+  | 'BAD_REPLY';
+
+/** The error class of the agent package: a literal `code`, `details`, and a `cause`. */
+export class AgentError extends Error {
+  override readonly name = 'AgentError';
+  readonly code: AgentErrorCode;
+  readonly details: Record<string, unknown> | undefined;
+
+  constructor(
+    code: AgentErrorCode,
+    message: string,
+    options: { details?: Record<string, unknown>; cause?: unknown } = {},
+  ) {
+    super(message, options.cause === undefined ? undefined : { cause: options.cause });
+    this.code = code;
+    this.details = options.details;
+  }
+}
+
+/** The message of anything thrown: an Error's message, else its string form. */
+export function errorMessage(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
+
+/** A logger the package writes through (it never uses the console). */
+export interface AgentLogger {
+  debug(message: string, fields?: Record<string, unknown>): void;
+  info(message: string, fields?: Record<string, unknown>): void;
+  warn(message: string, fields?: Record<string, unknown>): void;
+  error(message: string, fields?: Record<string, unknown>): void;
+}
+
+/** A logger that drops everything: the default. */
+export const SILENT_LOGGER: AgentLogger = Object.freeze({
+  debug: () => undefined,
+  info: () => undefined,
+  warn: () => undefined,
+  error: () => undefined,
+});

@@ -1,0 +1,101 @@
+// examples/llm-agent run as a user runs it, in its own Node process: against the fake endpoint,
+// driving the simulator (the default) and the emulated robot over UDP (HAL_UDP_HOST).
+import { spawn } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { distanceToSteps } from '@hal/kinematics';
+import { afterAll, describe, expect, it } from 'vitest';
+import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { call, serve } from './fixtures.js';
+
+afterAll(stopAllEmulators);
+
+const APP = fileURLToPath(new URL('../../examples/llm-agent/', import.meta.url));
+
+/** Runs the app with `env` and the goal; kills it after `timeoutMs`. */
+function runApp(
+  env: Record<string, string>,
+  goal: string,
+  timeoutMs = 60_000,
+): Promise<{ code: number | string; stdout: string; stderr: string }> {
+  return new Promise((resolve) => {
+    const child = spawn(
+      process.execPath,
+      ['--conditions=@hal/source', '--import', 'tsx', 'main.ts', goal],
+      // Only what the app needs: no endpoint or robot settings leak in from the test's shell.
+      {
+        cwd: APP,
+        env: { PATH: process.env['PATH'] ?? '', ...env },
+        stdio: ['ignore', 'pipe', 'pipe'],
+      },
+    );
+    let stdout = '';
+    let stderr = '';
+    child.stdout.on('data', (chunk: Buffer) => (stdout += chunk.toString()));
+    child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
+    const timer = setTimeout(() => child.kill('SIGKILL'), timeoutMs);
+    child.once('exit', (code, signal) => {
+      clearTimeout(timer);
+      resolve({ code: code ?? signal ?? 'unknown', stdout, stderr });
+    });
+  });
+}
+
+describe('examples/llm-agent', () => {
+  it('drives the simulator to the goal the model plans, printing each call and result', async () => {
+    const s = await serve([
+      { content: 'First I check where I am.', toolCalls: [call('get_pose')] },
+      { content: null, toolCalls: [call('move_forward', { distanceCm: 25 })] },
+      { content: 'I drove 25 cm forward.' },
+    ]);
+    const run = await runApp(
+      { OPENAI_BASE_URL: s.baseUrl, OPENAI_MODEL: 'fake-model', OPENAI_API_KEY: 'sk-app' },
+      'Drive 25 cm forward.',
+    );
+    expect(run.stderr).toBe('');
+    expect(run.code).toBe(0);
+    expect(run.stdout).toContain('robot: simulator, map "obstacles"');
+    expect(run.stdout).toContain('call move_forward {"distanceCm":25}');
+    expect(run.stdout).toMatch(/result move_forward: \{"success":true/);
+    expect(run.stdout).toContain('done: completed after 3 steps');
+    // The robot started at x -1.8 m facing +x.
+    expect(run.stdout).toContain('pose: x -1.550 m, y 0.000 m');
+    expect(s.requests[0]?.headers['authorization']).toBe('Bearer sk-app');
+    expect(s.requests[0]?.body.messages?.[1]).toMatchObject({ content: 'Drive 25 cm forward.' });
+  });
+
+  it('refuses to start without a model, saying which variable to set', async () => {
+    const run = await runApp({}, 'Anything.');
+    expect(run.code).toBe(2);
+    expect(run.stderr).toContain('OPENAI_MODEL');
+  });
+
+  it('drives the emulated robot over UDP when HAL_UDP_HOST is set', async () => {
+    const emulator = await startEmulator({ pty: false });
+    try {
+      const s = await serve([
+        { content: null, toolCalls: [call('move_forward', { distanceCm: 10 })] },
+        { content: 'Moved 10 cm.' },
+      ]);
+      const run = await runApp(
+        {
+          OPENAI_BASE_URL: s.baseUrl,
+          OPENAI_MODEL: 'fake-model',
+          HAL_UDP_HOST: '127.0.0.1',
+          HAL_UDP_PORT: String(emulator.udpPort),
+        },
+        'Move 10 cm forward.',
+      );
+      expect(run.stderr).toBe('');
+      expect(run.code).toBe(0);
+      expect(run.stdout).toContain(`robot: robot at udp://127.0.0.1:${emulator.udpPort}`);
+      expect(run.stdout).toContain('pose: x 0.100 m');
+      // The robot itself moved: its firmware core reports one finished 10 cm move.
+      const moves = emulator.events.filter((e) => e.event === 'move_finished');
+      expect(moves).toHaveLength(1);
+      const steps = distanceToSteps(10);
+      expect(moves[0]).toMatchObject({ left_steps: steps, right_steps: steps });
+    } finally {
+      await emulator.stop();
+    }
+  });
+});
