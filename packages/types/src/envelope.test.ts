@@ -52,36 +52,47 @@ describe('envelope', () => {
 });
 
 describe('subjects', () => {
-  it('addresses a device right after the version', () => {
+  it('builds the spec subjects as written for the default device, and dev.{device} ones for a fleet', () => {
+    expect(buildSubject({ domain: 'motor', type: 'differential', action: 'cmd' })).toBe(
+      'hal.v1.motor.differential.cmd',
+    );
     expect(
-      buildSubject({ device: 'cube-01', domain: 'locomotion', type: 'pose', action: 'update' }),
-    ).toBe('hal.v1.cube-01.locomotion.pose.update');
-    expect(parseSubject('hal.v1.cube-01.safety.estop.set')).toEqual({
+      buildSubject({ device: 'cube-01', domain: 'sensor', type: 'imu', action: 'data' }),
+    ).toBe('hal.v1.dev.cube-01.sensor.imu.data');
+    expect(parseSubject('hal.v1.system.health.req')).toEqual({
+      domain: 'system',
+      type: 'health',
+      action: 'req',
+      major: 1,
+    });
+    expect(parseSubject('hal.v1.dev.cube-01.safety.estop.cmd')).toEqual({
       device: 'cube-01',
       domain: 'safety',
       type: 'estop',
-      action: 'set',
+      action: 'cmd',
       major: 1,
     });
   });
 
-  it('builds wildcard subscriptions only when asked', () => {
+  it('builds wildcard subscriptions only when asked, with ">" last', () => {
     expect(
       buildSubject(
-        { device: '*', domain: 'safety', type: 'estop', action: '>' },
+        { device: '*', domain: 'sensor', type: 'imu', action: 'data' },
         { wildcards: true },
       ),
-    ).toBe('hal.v1.*.safety.estop.>');
+    ).toBe('hal.v1.dev.*.sensor.imu.data');
     expect(() =>
-      buildSubject({ device: '*', domain: 'safety', type: 'estop', action: 'set' }),
+      buildSubject({ device: '*', domain: 'safety', type: 'estop', action: 'cmd' }),
     ).toThrow(HalError);
     expect(() =>
       buildSubject({ device: 'a', domain: '>', type: 'estop', action: 'set' }, { wildcards: true }),
     ).toThrow(/may only be last/);
+    expect(() => buildSubject({ domain: 'dev', type: 'x', action: 'y' })).toThrow(/may not be "dev"/);
   });
 
   it('refuses subjects that are not ours', () => {
     expect(() => parseSubject('hal.cube.locomotion.pose.update')).toThrow(HalError);
-    expect(() => parseSubject('hal.v1.cube 01.locomotion.pose.update')).toThrow(HalError);
+    expect(() => parseSubject('hal.v1.dev.cube 01.locomotion.pose.update')).toThrow(HalError);
+    expect(() => parseSubject('hal.v1.cube-01.locomotion.pose.update')).toThrow(HalError);
   });
 });

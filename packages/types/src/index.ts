@@ -109,6 +109,7 @@ export {
 export type { Capability } from './capabilities.js';
 
 export {
+  DEVICE_SUBJECT_TOKEN,
   EnvelopeSchema,
   HAL_MAJOR,
   HAL_MINOR,
