@@ -63,6 +63,7 @@ export async function serveHalOnNats(
   const { nc, owned } = await resolveConnection(options);
   const gateway = new Gateway(nc, owned, hal, options);
   gateway.start();
+  await nc.flush(); // the server has every subscription: the first request finds a responder
   return gateway;
 }
 
