@@ -29,13 +29,19 @@ function figure(
   alternative?: { name: string; value: number },
 ): void {
   const round = (x: number) => Math.round(x * 10) / 10;
-  const alt = alternative ? { alternative: { ...alternative, value: round(alternative.value) } } : {};
+  const alt = alternative
+    ? { alternative: { ...alternative, value: round(alternative.value) } }
+    : {};
   const line = { kind: 'figure', bench: 'nats', name, value: round(value), unit, better, ...alt };
   console.log(`BENCH_JSON ${JSON.stringify(line)}`);
 }
 
 /** setLED round trips, a direct call and a NATS call alternating, so both see the same load. */
-async function interleaved(label: string, direct: HardwareAbstractionLayer, remote: HardwareAbstractionLayer) {
+async function interleaved(
+  label: string,
+  direct: HardwareAbstractionLayer,
+  remote: HardwareAbstractionLayer,
+) {
   const times = { direct: [] as number[], nats: [] as number[] };
   for (let i = 0; i < WARMUP + ROUNDS; i++) {
     for (const [path, hal] of [
@@ -53,14 +59,21 @@ async function interleaved(label: string, direct: HardwareAbstractionLayer, remo
     const d = percentile(times.direct, p);
     const n = percentile(times.nats, p);
     console.log(`${label}: p${p} direct ${us(d)}, through NATS ${us(n)} (${(n / d).toFixed(1)}x)`);
-    figure(`${label} command p${p} through NATS`, n * 1000, 'us', 'lower', { name: 'direct call', value: d * 1000 });
+    figure(`${label} command p${p} through NATS`, n * 1000, 'us', 'lower', {
+      name: 'direct call',
+      value: d * 1000,
+    });
   }
 }
 
 async function latency(url: string): Promise<void> {
   const sim = new SimulationHAL();
   await sim.initialize();
-  const simGateway = await serveHalOnNats(sim, { servers: url, deviceId: 'bench-sim', stateRateHz: STATE_HZ });
+  const simGateway = await serveHalOnNats(sim, {
+    servers: url,
+    deviceId: 'bench-sim',
+    stateRateHz: STATE_HZ,
+  });
   const simRemote = new NatsHAL({ servers: url, deviceId: 'bench-sim' });
   await simRemote.initialize();
   await interleaved('simulated robot', sim, simRemote);
@@ -75,7 +88,11 @@ async function latency(url: string): Promise<void> {
     connection: { type: 'wifi', host: '127.0.0.1', udpPort: emulator.udpPort },
   });
   await robot.initialize();
-  const robotGateway = await serveHalOnNats(robot, { servers: url, deviceId: 'bench-cube', stateRateHz: STATE_HZ });
+  const robotGateway = await serveHalOnNats(robot, {
+    servers: url,
+    deviceId: 'bench-cube',
+    stateRateHz: STATE_HZ,
+  });
   const robotRemote = new NatsHAL({ servers: url, deviceId: 'bench-cube' });
   await robotRemote.initialize();
   await interleaved('emulated robot', robot, robotRemote);
@@ -103,7 +120,11 @@ async function stateRate(url: string, count: number): Promise<number> {
   const watcher = await openConnection({ servers: url });
   await new Promise((resolve) => setTimeout(resolve, 500));
   let received = 0;
-  const sub = watcher.subscribe('hal.v1.dev.*.motor.differential.state', { callback: () => (received += 1) });
+  const sub = watcher.subscribe('hal.v1.dev.*.motor.differential.state', {
+    callback: () => {
+      received += 1;
+    },
+  });
   const seconds = 2;
   await new Promise((resolve) => setTimeout(resolve, seconds * 1000));
   sub.unsubscribe();
@@ -125,7 +146,12 @@ async function capacity(url: string): Promise<void> {
     served = count;
   }
   console.log(`one gateway process serves ${served} simulated robots at ${STATE_HZ} Hz state`);
-  figure(`simulated robots served at ${STATE_HZ} Hz state by one gateway process`, served, 'robots', 'higher');
+  figure(
+    `simulated robots served at ${STATE_HZ} Hz state by one gateway process`,
+    served,
+    'robots',
+    'higher',
+  );
 }
 
 const server = await startNatsServer();

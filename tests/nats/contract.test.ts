@@ -56,7 +56,11 @@ describeHalContract('NatsHAL through nats-server to SimulationHAL', {
 
 describeHalContract('NatsHAL through nats-server to PhysicalHAL and the emulated robot', {
   create: async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000, pty: false });
+    const emulator = await startEmulator({
+      timeScale: TIME_SCALE,
+      hostTimeoutMs: 10_000,
+      pty: false,
+    });
     const device = new PhysicalHAL(
       {
         mode: 'physical',

@@ -18,7 +18,9 @@ export function natsServerPath(): string {
   for (const candidate of ['nats-server', '/usr/sbin/nats-server']) {
     if (spawnSync(candidate, ['--version']).status === 0) return candidate;
   }
-  throw new Error('nats-server not found: install it with scripts/setup.sh (Debian package nats-server)');
+  throw new Error(
+    'nats-server not found: install it with scripts/setup.sh (Debian package nats-server)',
+  );
 }
 
 /** A free TCP port on 127.0.0.1. */

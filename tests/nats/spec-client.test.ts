@@ -20,7 +20,10 @@ import type { NatsServer } from './nats-server.js';
 
 const json = (value: unknown) => new TextEncoder().encode(JSON.stringify(value));
 const parse = (data: Uint8Array) =>
-  JSON.parse(new TextDecoder().decode(data)) as { device_id: string; payload: Record<string, unknown> };
+  JSON.parse(new TextDecoder().decode(data)) as {
+    device_id: string;
+    payload: Record<string, unknown>;
+  };
 const envelope = (schema: string, payload: unknown) =>
   json(makeEnvelope({ schema, device_id: 'spec-client' }, payload));
 
@@ -35,7 +38,10 @@ afterAll(async () => {
   await stopAllNatsServers();
 });
 
-async function served(deviceId: string, options: { defaultDevice?: boolean; clock?: 'realtime' } = {}) {
+async function served(
+  deviceId: string,
+  options: { defaultDevice?: boolean; clock?: 'realtime' } = {},
+) {
   const hal = new SimulationHAL(options.clock === undefined ? {} : { clock: options.clock });
   await hal.initialize();
   const gateway = await serveHalOnNats(hal, {
@@ -66,157 +72,216 @@ function first(subject: string, timeoutMs = 5000): Promise<Uint8Array> {
 }
 
 describe('a spec-only client', () => {
-  it('streams IMU and state, drives with motor.differential.cmd and asks for health on the bare subjects', { timeout: 20_000 }, async () => {
-    const device = await served('cube-spec');
-    try {
-      const imu = parse(await first('hal.v1.sensor.imu.data'));
-      expect(imu.device_id).toBe('cube-spec');
-      expect(ImuDataSchema.parse(imu.payload).source).toBe('simulation');
+  it(
+    'streams IMU and state, drives with motor.differential.cmd and asks for health on the bare subjects',
+    { timeout: 20_000 },
+    async () => {
+      const device = await served('cube-spec');
+      try {
+        const imu = parse(await first('hal.v1.sensor.imu.data'));
+        expect(imu.device_id).toBe('cube-spec');
+        expect(ImuDataSchema.parse(imu.payload).source).toBe('simulation');
 
-      const ack = parse(
-        (
-          await nc.request(
-            'hal.v1.motor.differential.cmd',
-            envelope('tafylabs/hal/motor/differential/1.0', {
-              linear_vel_m_per_s: 0.04,
-              angular_vel_rad_per_s: 0,
-              duration_ms: 1000,
-              stop_action: 'brake',
-              unknown_field: 'ignored',
-            }),
-            { timeout: 5000 },
-          )
-        ).data,
-      );
-      expect(ack.payload).toMatchObject({ ok: true });
-      const pose = await device.hal.locomotion.getPose();
-      expect(pose.position.x).toBeGreaterThan(0.005);
+        const ack = parse(
+          (
+            await nc.request(
+              'hal.v1.motor.differential.cmd',
+              envelope('tafylabs/hal/motor/differential/1.0', {
+                linear_vel_m_per_s: 0.04,
+                angular_vel_rad_per_s: 0,
+                duration_ms: 1000,
+                stop_action: 'brake',
+                unknown_field: 'ignored',
+              }),
+              { timeout: 5000 },
+            )
+          ).data,
+        );
+        expect(ack.payload).toMatchObject({ ok: true });
+        const pose = await device.hal.locomotion.getPose();
+        expect(pose.position.x).toBeGreaterThan(0.005);
 
-      const state = DifferentialStateSchema.parse(parse(await first('hal.v1.motor.differential.state')).payload);
-      expect(state.x_m).toBeCloseTo(pose.position.x, 3);
+        const state = DifferentialStateSchema.parse(
+          parse(await first('hal.v1.motor.differential.state')).payload,
+        );
+        expect(state.x_m).toBeCloseTo(pose.position.x, 3);
 
-      const health = parse(
-        (await nc.request('hal.v1.system.health.req', envelope('h', { include_diagnostics: true }), { timeout: 5000 })).data,
-      );
-      expect(HealthSchema.parse(health.payload).status).toBe('healthy');
+        const health = parse(
+          (
+            await nc.request(
+              'hal.v1.system.health.req',
+              envelope('h', { include_diagnostics: true }),
+              { timeout: 5000 },
+            )
+          ).data,
+        );
+        expect(HealthSchema.parse(health.payload).status).toBe('healthy');
 
-      const caps = parse((await nc.request('hal.v1.system.capability.req', envelope('c', {}), { timeout: 5000 })).data);
-      expect(CapabilityAnnouncementSchema.parse(caps.payload).caps).toContain(CAPABILITIES.differentialDrive);
+        const caps = parse(
+          (await nc.request('hal.v1.system.capability.req', envelope('c', {}), { timeout: 5000 }))
+            .data,
+        );
+        expect(CapabilityAnnouncementSchema.parse(caps.payload).caps).toContain(
+          CAPABILITIES.differentialDrive,
+        );
 
-      const frame = parse((await nc.request('hal.v1.camera.frame.req', envelope('f', { format: 'jpeg' }), { timeout: 5000 })).data);
-      expect(Buffer.from(String(frame.payload['data']), 'base64').subarray(0, 2)).toEqual(Buffer.from([0xff, 0xd8]));
-    } finally {
-      await device.close();
-    }
-  });
+        const frame = parse(
+          (
+            await nc.request('hal.v1.camera.frame.req', envelope('f', { format: 'jpeg' }), {
+              timeout: 5000,
+            })
+          ).data,
+        );
+        expect(Buffer.from(String(frame.payload['data']), 'base64').subarray(0, 2)).toEqual(
+          Buffer.from([0xff, 0xd8]),
+        );
+      } finally {
+        await device.close();
+      }
+    },
+  );
 
-  it('gets the standard error shape for a command beyond the robot, and nothing moves', { timeout: 20_000 }, async () => {
-    const device = await served('cube-err');
-    try {
-      const reply = parse(
-        (
-          await nc.request(
-            'hal.v1.motor.differential.cmd',
-            envelope('m', { linear_vel_m_per_s: 10, angular_vel_rad_per_s: 0 }),
-            { timeout: 5000 },
-          )
-        ).data,
-      );
-      expect(reply.payload['error']).toMatchObject({ code: 'RANGE_EXCEEDED', details: { parameter: 'linear_vel_m_per_s' } });
-      const malformed = parse((await nc.request('hal.v1.motor.differential.cmd', json({ not: 'an envelope' }), { timeout: 5000 })).data);
-      expect(malformed.payload['error']).toMatchObject({ code: 'MALFORMED' });
-      expect((await device.hal.locomotion.getPose()).position.x).toBe(0);
-    } finally {
-      await device.close();
-    }
-  });
+  it(
+    'gets the standard error shape for a command beyond the robot, and nothing moves',
+    { timeout: 20_000 },
+    async () => {
+      const device = await served('cube-err');
+      try {
+        const reply = parse(
+          (
+            await nc.request(
+              'hal.v1.motor.differential.cmd',
+              envelope('m', { linear_vel_m_per_s: 10, angular_vel_rad_per_s: 0 }),
+              { timeout: 5000 },
+            )
+          ).data,
+        );
+        expect(reply.payload['error']).toMatchObject({
+          code: 'RANGE_EXCEEDED',
+          details: { parameter: 'linear_vel_m_per_s' },
+        });
+        const malformed = parse(
+          (
+            await nc.request('hal.v1.motor.differential.cmd', json({ not: 'an envelope' }), {
+              timeout: 5000,
+            })
+          ).data,
+        );
+        expect(malformed.payload['error']).toMatchObject({ code: 'MALFORMED' });
+        expect((await device.hal.locomotion.getPose()).position.x).toBe(0);
+      } finally {
+        await device.close();
+      }
+    },
+  );
 });
 
 describe('fleet addressing: hal.v1.dev.{device}', () => {
-  it('reaches each device on its own subjects, and says who sent each message', { timeout: 20_000 }, async () => {
-    const a = await served('cube-a', { defaultDevice: false });
-    const b = await served('cube-b', { defaultDevice: false });
-    try {
-      const senders = new Set<string>();
-      await new Promise<void>((resolve, reject) => {
-        const timer = setTimeout(() => reject(new Error('not both devices streamed')), 5000);
-        const sub = nc.subscribe('hal.v1.dev.*.motor.differential.state', {
-          callback: (_e, msg) => {
-            senders.add(parse(msg.data).device_id);
-            if (senders.size === 2) {
-              clearTimeout(timer);
-              sub.unsubscribe();
-              resolve();
-            }
-          },
+  it(
+    'reaches each device on its own subjects, and says who sent each message',
+    { timeout: 20_000 },
+    async () => {
+      const a = await served('cube-a', { defaultDevice: false });
+      const b = await served('cube-b', { defaultDevice: false });
+      try {
+        const senders = new Set<string>();
+        await new Promise<void>((resolve, reject) => {
+          const timer = setTimeout(() => reject(new Error('not both devices streamed')), 5000);
+          const sub = nc.subscribe('hal.v1.dev.*.motor.differential.state', {
+            callback: (_e, msg) => {
+              senders.add(parse(msg.data).device_id);
+              if (senders.size === 2) {
+                clearTimeout(timer);
+                sub.unsubscribe();
+                resolve();
+              }
+            },
+          });
         });
-      });
-      expect([...senders].sort()).toEqual(['cube-a', 'cube-b']);
-      const hal = new NatsHAL({ servers: server.url, deviceId: 'cube-b' });
-      await hal.initialize();
-      expect((await hal.locomotion.moveForward(2)).success).toBe(true);
-      await hal.cleanup();
-      expect((await b.hal.locomotion.getPose()).position.x).toBeCloseTo(0.02, 3);
-      expect((await a.hal.locomotion.getPose()).position.x).toBe(0);
-    } finally {
-      await a.close();
-      await b.close();
-    }
-  });
+        expect([...senders].sort()).toEqual(['cube-a', 'cube-b']);
+        const hal = new NatsHAL({ servers: server.url, deviceId: 'cube-b' });
+        await hal.initialize();
+        expect((await hal.locomotion.moveForward(2)).success).toBe(true);
+        await hal.cleanup();
+        expect((await b.hal.locomotion.getPose()).position.x).toBeCloseTo(0.02, 3);
+        expect((await a.hal.locomotion.getPose()).position.x).toBe(0);
+      } finally {
+        await a.close();
+        await b.close();
+      }
+    },
+  );
 });
 
 describe('priority and repeats', () => {
-  it('runs an e-stop with Priority: high at once, ahead of a long move and queued requests', { timeout: 30_000 }, async () => {
-    const device = await served('cube-prio', { clock: 'realtime' });
-    const call = (request_id: string, name: string, args: unknown[], priority?: 'high') => {
-      const h = headers();
-      if (priority !== undefined) h.set('Priority', priority);
-      return nc
-        .request('hal.v1.dev.cube-prio.hal.call.req', envelope('call', { request_id, call: name, args }), {
-          timeout: 20_000,
-          headers: h,
-        })
-        .then((msg) => HalCallReplySchema.parse(parse(msg.data).payload));
-    };
-    try {
-      const finished: string[] = [];
-      const long = call('long', 'locomotion.moveForward', [20]).then((r) => (finished.push('long'), r));
-      await new Promise((resolve) => setTimeout(resolve, 200));
-      const queued = [1, 2, 3].map((i) =>
-        call(`queued-${i}`, 'locomotion.moveForward', [1]).then((r) => (finished.push(`queued-${i}`), r)),
-      );
-      const started = Date.now();
-      const estop = await call('estop', 'safety.emergencyStop', ['test'], 'high');
-      finished.push('estop');
-      // A 20 cm move takes over 4 s; the e-stop did not wait for it.
-      expect(Date.now() - started).toBeLessThan(2000);
-      expect(estop.result).toMatchObject({ success: true });
-      expect(estop.emergency_stopped).toBe(true);
-      const rest = await Promise.all([long, ...queued]);
-      expect(finished[0]).toBe('estop');
-      expect(rest[0]?.result).toMatchObject({ success: false });
-      for (const r of rest.slice(1)) expect(r.result).toMatchObject({ success: false, code: 'EMERGENCY_STOPPED' });
-      expect((await device.hal.locomotion.getPose()).position.x).toBeLessThan(0.05);
-    } finally {
-      await device.close();
-    }
-  });
-
-  it('answers a repeated request id from the first execution instead of running it again', { timeout: 20_000 }, async () => {
-    const device = await served('cube-repeat');
-    try {
-      const send = () =>
-        nc.request(
-          'hal.v1.dev.cube-repeat.hal.call.req',
-          envelope('call', { request_id: 'same-id', call: 'locomotion.moveForward', args: [3] }),
-          { timeout: 5000 },
+  it(
+    'runs an e-stop with Priority: high at once, ahead of a long move and queued requests',
+    { timeout: 30_000 },
+    async () => {
+      const device = await served('cube-prio', { clock: 'realtime' });
+      const call = (request_id: string, name: string, args: unknown[], priority?: 'high') => {
+        const h = headers();
+        if (priority !== undefined) h.set('Priority', priority);
+        return nc
+          .request(
+            'hal.v1.dev.cube-prio.hal.call.req',
+            envelope('call', { request_id, call: name, args }),
+            {
+              timeout: 20_000,
+              headers: h,
+            },
+          )
+          .then((msg) => HalCallReplySchema.parse(parse(msg.data).payload));
+      };
+      try {
+        const finished: string[] = [];
+        const long = call('long', 'locomotion.moveForward', [20]).then(
+          (r) => (finished.push('long'), r),
         );
-      await send();
-      await send();
-      expect((await device.hal.locomotion.getPose()).position.x).toBeCloseTo(0.03, 3);
-      expect(HAL_MAJOR).toBe(1);
-    } finally {
-      await device.close();
-    }
-  });
+        await new Promise((resolve) => setTimeout(resolve, 200));
+        const queued = [1, 2, 3].map((i) =>
+          call(`queued-${i}`, 'locomotion.moveForward', [1]).then(
+            (r) => (finished.push(`queued-${i}`), r),
+          ),
+        );
+        const started = Date.now();
+        const estop = await call('estop', 'safety.emergencyStop', ['test'], 'high');
+        finished.push('estop');
+        // A 20 cm move takes over 4 s; the e-stop did not wait for it.
+        expect(Date.now() - started).toBeLessThan(2000);
+        expect(estop.result).toMatchObject({ success: true });
+        expect(estop.emergency_stopped).toBe(true);
+        const rest = await Promise.all([long, ...queued]);
+        expect(finished[0]).toBe('estop');
+        expect(rest[0]?.result).toMatchObject({ success: false });
+        for (const r of rest.slice(1))
+          expect(r.result).toMatchObject({ success: false, code: 'EMERGENCY_STOPPED' });
+        expect((await device.hal.locomotion.getPose()).position.x).toBeLessThan(0.05);
+      } finally {
+        await device.close();
+      }
+    },
+  );
+
+  it(
+    'answers a repeated request id from the first execution instead of running it again',
+    { timeout: 20_000 },
+    async () => {
+      const device = await served('cube-repeat');
+      try {
+        const send = () =>
+          nc.request(
+            'hal.v1.dev.cube-repeat.hal.call.req',
+            envelope('call', { request_id: 'same-id', call: 'locomotion.moveForward', args: [3] }),
+            { timeout: 5000 },
+          );
+        await send();
+        await send();
+        expect((await device.hal.locomotion.getPose()).position.x).toBeCloseTo(0.03, 3);
+        expect(HAL_MAJOR).toBe(1);
+      } finally {
+        await device.close();
+      }
+    },
+  );
 });

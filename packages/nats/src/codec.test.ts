@@ -28,6 +28,8 @@ describe('messages', () => {
       HalError,
     );
     const data = encodeMessage('s', 'client-1', [], { linear_vel_m_per_s: 'fast' });
-    expect(() => decodeMessage(data, DifferentialCommandSchema)).toThrow(/linear_vel_m_per_s|expected number/);
+    expect(() => decodeMessage(data, DifferentialCommandSchema)).toThrow(
+      /linear_vel_m_per_s|expected number/,
+    );
   });
 });

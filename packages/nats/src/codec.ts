@@ -12,11 +12,16 @@ export function encodeMessage(
   caps: readonly string[],
   payload: unknown,
 ): Uint8Array {
-  return encoder.encode(JSON.stringify(makeEnvelope({ schema, device_id: deviceId, caps }, payload)));
+  return encoder.encode(
+    JSON.stringify(makeEnvelope({ schema, device_id: deviceId, caps }, payload)),
+  );
 }
 
 /** Decodes an envelope and checks its payload; MALFORMED for anything else. */
-export function decodeMessage<S extends z.ZodType>(data: Uint8Array, payload: S): Envelope<z.output<S>> {
+export function decodeMessage<S extends z.ZodType>(
+  data: Uint8Array,
+  payload: S,
+): Envelope<z.output<S>> {
   let raw: unknown;
   try {
     raw = JSON.parse(decoder.decode(data));
@@ -42,7 +47,9 @@ export function encodeArgs(args: readonly unknown[]): unknown[] {
 }
 
 function isTagged(value: unknown, tag: string): boolean {
-  return typeof value === 'object' && value !== null && (value as Record<string, unknown>)[TAG] === tag;
+  return (
+    typeof value === 'object' && value !== null && (value as Record<string, unknown>)[TAG] === tag
+  );
 }
 
 /** The inverse of {@link encodeArgs}. */

@@ -37,5 +37,10 @@ export async function readImu(hal: HardwareAbstractionLayer): Promise<ImuData | 
 export async function readRange(hal: HardwareAbstractionLayer): Promise<RangeData | undefined> {
   if (!hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.rangeSensors)) return undefined;
   const range = await hal.vision.getDistanceSensors();
-  return { front_m: range.front, left_m: range.left, right_m: range.right, source: range.source ?? 'sensor' };
+  return {
+    front_m: range.front,
+    left_m: range.left,
+    right_m: range.right,
+    source: range.source ?? 'sensor',
+  };
 }

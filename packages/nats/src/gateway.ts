@@ -299,7 +299,11 @@ class Gateway implements HalGateway {
     if (this.#streaming || this.#closed || !this.hal.isReady()) return;
     this.#streaming = true;
     try {
-      this.#publish('differentialState', SCHEMAS.differentialState, await readDifferentialState(this.hal, this.#robot));
+      this.#publish(
+        'differentialState',
+        SCHEMAS.differentialState,
+        await readDifferentialState(this.hal, this.#robot),
+      );
       const imu = await readImu(this.hal);
       if (imu !== undefined) this.#publish('imuData', SCHEMAS.imu, imu);
       const range = await readRange(this.hal);

@@ -73,9 +73,20 @@ export class NatsHAL implements HardwareAbstractionLayer {
     this.#clientId = options.clientId ?? `nats-hal-${process.pid}-${(sequence += 1)}`;
     this.#log = options.logger ?? silentNatsLogger;
     if (options.deviceId !== undefined) subjectFor('call', options.deviceId); // checks the id
-    this.#info = { id: options.deviceId ?? 'default', type: 'nats', mode: this.mode, capabilities: [] };
-    const result = (call: string) => (...args: unknown[]) => this.#result(call, args);
-    const value = <T>(call: string) => (...args: unknown[]) => this.#value<T>(call, args);
+    this.#info = {
+      id: options.deviceId ?? 'default',
+      type: 'nats',
+      mode: this.mode,
+      capabilities: [],
+    };
+    const result =
+      (call: string) =>
+      (...args: unknown[]) =>
+        this.#result(call, args);
+    const value =
+      <T>(call: string) =>
+      (...args: unknown[]) =>
+        this.#value<T>(call, args);
     this.locomotion = {
       drive: result('locomotion.drive'),
       moveTo: result('locomotion.moveTo'),

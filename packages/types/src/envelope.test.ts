@@ -56,9 +56,9 @@ describe('subjects', () => {
     expect(buildSubject({ domain: 'motor', type: 'differential', action: 'cmd' })).toBe(
       'hal.v1.motor.differential.cmd',
     );
-    expect(
-      buildSubject({ device: 'cube-01', domain: 'sensor', type: 'imu', action: 'data' }),
-    ).toBe('hal.v1.dev.cube-01.sensor.imu.data');
+    expect(buildSubject({ device: 'cube-01', domain: 'sensor', type: 'imu', action: 'data' })).toBe(
+      'hal.v1.dev.cube-01.sensor.imu.data',
+    );
     expect(parseSubject('hal.v1.system.health.req')).toEqual({
       domain: 'system',
       type: 'health',
@@ -87,7 +87,9 @@ describe('subjects', () => {
     expect(() =>
       buildSubject({ device: 'a', domain: '>', type: 'estop', action: 'set' }, { wildcards: true }),
     ).toThrow(/may only be last/);
-    expect(() => buildSubject({ domain: 'dev', type: 'x', action: 'y' })).toThrow(/may not be "dev"/);
+    expect(() => buildSubject({ domain: 'dev', type: 'x', action: 'y' })).toThrow(
+      /may not be "dev"/,
+    );
   });
 
   it('refuses subjects that are not ours', () => {
