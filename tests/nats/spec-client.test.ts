@@ -25,7 +25,10 @@ const parse = (data: Uint8Array) =>
     payload: Record<string, unknown>;
   };
 const envelope = (schema: string, payload: unknown) =>
-  json(makeEnvelope({ schema, device_id: 'spec-client' }, payload));
+  json({
+    ...makeEnvelope({ schema, device_id: 'spec-client' }, payload),
+    ts: new Date().toISOString(), // as the spec writes it
+  });
 
 let server: NatsServer;
 let nc: NatsConnection;

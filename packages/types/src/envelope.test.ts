@@ -92,6 +92,15 @@ describe('subjects', () => {
     );
   });
 
+  it("accepts the spec's ISO 8601 ts as well as ms since the epoch, and nothing else", () => {
+    const base = { hal_major: 1, hal_minor: 0, schema: 's', device_id: 'd', caps: [], payload: {} };
+    expect(EnvelopeSchema.safeParse({ ...base, ts: '2024-03-14T10:30:00.000Z' }).success).toBe(
+      true,
+    );
+    expect(EnvelopeSchema.safeParse({ ...base, ts: 1710412200000 }).success).toBe(true);
+    expect(EnvelopeSchema.safeParse({ ...base, ts: 'yesterday' }).success).toBe(false);
+  });
+
   it('refuses subjects that are not ours', () => {
     expect(() => parseSubject('hal.cube.locomotion.pose.update')).toThrow(HalError);
     expect(() => parseSubject('hal.v1.dev.cube 01.locomotion.pose.update')).toThrow(HalError);

@@ -29,7 +29,11 @@ export const EnvelopeSchema = z
     schema: z.string().min(1).describe('Payload schema name, e.g. hal.locomotion.pose'),
     device_id: z.string().regex(DEVICE_ID).describe('The sender: the robot, or the client id'),
     caps: z.array(z.string()).describe('Capability strings of the device'),
-    ts: z.number().describe('Time the message was made, ms since the Unix epoch'),
+    ts: z
+      .union([z.number(), z.iso.datetime({ offset: true })])
+      .describe(
+        'Time the message was made: ms since the Unix epoch (what we send) or an ISO 8601 string (as the spec writes it)',
+      ),
     payload: z.unknown().describe('The message body'),
   })
   .describe('HAL message envelope');
