@@ -51,6 +51,23 @@ describe('a device that disappears', () => {
   );
 });
 
+describe('a device that is not there', () => {
+  it(
+    'fails initialize() with NOT_CONNECTED at once rather than waiting out the call timeout',
+    { timeout: 20_000 },
+    async () => {
+      const server = await startNatsServer();
+      const hal = new NatsHAL({ servers: server.url, deviceId: 'nobody-home' });
+      cleanups.push(() => hal.cleanup());
+      const started = Date.now();
+      await expect(hal.initialize()).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
+      expect(Date.now() - started).toBeLessThan(5000);
+      expect(hal.isReady()).toBe(false);
+      expect((await hal.locomotion.moveForward(1)).code).toBe('NOT_READY');
+    },
+  );
+});
+
 describe('the NATS server restarted mid-run', () => {
   it(
     'reconnects the gateway and the client, and runs no command twice',

@@ -179,6 +179,107 @@ describe('a spec-only client', () => {
   );
 });
 
+describe('fire and forget, e-stop and absence on the spec subjects', () => {
+  it(
+    'drives on a published command, latches an e-stop published with Priority: high, and resets on request',
+    { timeout: 20_000 },
+    async () => {
+      const device = await served('cube-ff');
+      try {
+        nc.publish(
+          'hal.v1.motor.differential.cmd',
+          envelope('m', { linear_vel_m_per_s: 0.04, angular_vel_rad_per_s: 0, duration_ms: 500 }),
+        );
+        await nc.flush();
+        const deadline = Date.now() + 5000;
+        while ((await device.hal.locomotion.getPose()).position.x === 0 && Date.now() < deadline) {
+          await new Promise((resolve) => setTimeout(resolve, 20));
+        }
+        expect((await device.hal.locomotion.getPose()).position.x).toBeGreaterThan(0);
+
+        const high = headers();
+        high.set('Priority', 'high');
+        nc.publish('hal.v1.safety.estop.cmd', envelope('e', { reason: 'spec client' }), {
+          headers: high,
+        });
+        await nc.flush();
+        while (!device.hal.safety.isEmergencyStopped() && Date.now() < deadline) {
+          await new Promise((resolve) => setTimeout(resolve, 20));
+        }
+        expect(device.hal.safety.isEmergencyStopped()).toBe(true);
+        const refused = parse(
+          (
+            await nc.request(
+              'hal.v1.motor.differential.cmd',
+              envelope('m', {
+                linear_vel_m_per_s: 0.01,
+                angular_vel_rad_per_s: 0,
+                duration_ms: 100,
+              }),
+              { timeout: 5000 },
+            )
+          ).data,
+        );
+        expect(refused.payload['error']).toMatchObject({ code: 'EMERGENCY_STOPPED' });
+        const reset = parse(
+          (await nc.request('hal.v1.safety.estop.reset', envelope('r', {}), { timeout: 5000 }))
+            .data,
+        );
+        expect(reset.payload).toMatchObject({ ok: true, emergency_stopped: false });
+        expect(device.hal.safety.isEmergencyStopped()).toBe(false);
+      } finally {
+        await device.close();
+      }
+    },
+  );
+
+  it(
+    'announces capabilities, and answers a camera request NOT_IMPLEMENTED without a camera, streaming no IMU',
+    { timeout: 20_000 },
+    async () => {
+      const hal = new SimulationHAL({
+        features: { camera: false, imu: false, rangeSensors: false },
+      });
+      await hal.initialize();
+      const gateway = await serveHalOnNats(hal, {
+        servers: server.url,
+        deviceId: 'cube-bare',
+        defaultDevice: false,
+        announceIntervalMs: 100,
+      });
+      try {
+        const imu: string[] = [];
+        const sub = nc.subscribe('hal.v1.dev.cube-bare.sensor.>', {
+          callback: (_e, msg) => {
+            imu.push(msg.subject);
+          },
+        });
+        const announced = CapabilityAnnouncementSchema.parse(
+          parse(await first('hal.v1.dev.cube-bare.system.capability.announce')).payload,
+        );
+        expect(announced.caps).not.toContain(CAPABILITIES.camera);
+        expect(announced.caps).not.toContain(CAPABILITIES.imu);
+        const frame = parse(
+          (
+            await nc.request('hal.v1.dev.cube-bare.camera.frame.req', envelope('f', {}), {
+              timeout: 5000,
+            })
+          ).data,
+        );
+        expect(frame.payload['error']).toMatchObject({ code: 'NOT_IMPLEMENTED' });
+        // Several state periods have passed (the announcement and the frame request took a while).
+        await first('hal.v1.dev.cube-bare.motor.differential.state');
+        await first('hal.v1.dev.cube-bare.motor.differential.state');
+        sub.unsubscribe();
+        expect(imu).toEqual([]);
+      } finally {
+        await gateway.close();
+        await hal.cleanup();
+      }
+    },
+  );
+});
+
 describe('fleet addressing: hal.v1.dev.{device}', () => {
   it(
     'reaches each device on its own subjects, and says who sent each message',
