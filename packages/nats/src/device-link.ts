@@ -1,7 +1,7 @@
 import { HAL_ERROR_CODES, HalError } from '@hal/types';
 import type { HalErrorCode, HalErrorPayload } from '@hal/types';
 import { errors, headers as natsHeaders } from '@nats-io/transport-node';
-import type { NatsConnection, Subscription } from '@nats-io/transport-node';
+import type { NatsConnection, Status, Subscription } from '@nats-io/transport-node';
 import type { z } from 'zod';
 import { decodeMessage, encodeMessage } from './codec.js';
 import { subjectFor } from './subjects.js';
@@ -47,11 +47,13 @@ export class DeviceLink {
   #lastSeen = 0;
   #connected = true;
   readonly #subs: Subscription[] = [];
+  readonly #status: AsyncIterator<Status>;
 
   constructor(
     readonly nc: NatsConnection,
     readonly options: DeviceLinkOptions,
   ) {
+    this.#status = nc.status()[Symbol.asyncIterator]();
     void this.#watchStatus();
   }
 
@@ -79,10 +81,13 @@ export class DeviceLink {
   close(): void {
     for (const sub of this.#subs) sub.unsubscribe();
     this.#subs.length = 0;
+    void this.#status.return?.();
   }
 
   async #watchStatus(): Promise<void> {
-    for await (const status of this.nc.status()) {
+    for (;;) {
+      const { value: status, done } = await this.#status.next();
+      if (done === true) return;
       if (status.type === 'disconnect') this.#connected = false;
       if (status.type === 'reconnect') {
         this.#connected = true;

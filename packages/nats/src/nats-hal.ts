@@ -45,6 +45,7 @@ export type NatsHALOptions = NatsConnectionSource & {
 };
 
 let sequence = 0;
+const STOP_ON_CLEANUP_MS = 2000;
 
 /**
  * A {@link HardwareAbstractionLayer} that drives a device through NATS: every call goes to the
@@ -159,7 +160,8 @@ export class NatsHAL implements HardwareAbstractionLayer {
   async cleanup(): Promise<void> {
     const link = this.#link;
     if (!this.#ready || link === undefined) return;
-    await this.#result('locomotion.stop', []).catch(() => undefined);
+    // Bounded: a device that is gone must not hold up cleanup for the whole call timeout.
+    await this.#result('locomotion.stop', [], STOP_ON_CLEANUP_MS);
     this.#ready = false;
     this.#link = undefined;
     link.close();
@@ -193,7 +195,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
     };
   }
 
-  async #call(call: string, args: unknown[]) {
+  async #call(call: string, args: unknown[], timeoutMs?: number) {
     const link = this.#link;
     if (!this.#ready || link === undefined) {
       throw new HalError('NOT_READY', `${call}: the HAL is not initialised (call initialize())`);
@@ -203,17 +205,20 @@ export class NatsHAL implements HardwareAbstractionLayer {
       SCHEMAS.call,
       { request_id: `${this.#clientId}-${(sequence += 1)}`, call, args: encodeArgs(args) },
       HalCallReplySchema,
-      { priority: call === 'safety.emergencyStop' || call === 'locomotion.stop' },
+      {
+        priority: call === 'safety.emergencyStop' || call === 'locomotion.stop',
+        ...(timeoutMs === undefined ? {} : { timeoutMs }),
+      },
     );
     this.#estopped = reply.emergency_stopped;
     if (reply.error !== undefined) throw errorFromPayload(reply.error);
     return reply;
   }
 
-  async #result(call: string, args: unknown[]): Promise<HALToolResult> {
+  async #result(call: string, args: unknown[], timeoutMs?: number): Promise<HALToolResult> {
     const started = Date.now();
     try {
-      const reply = await this.#call(call, args);
+      const reply = await this.#call(call, args, timeoutMs);
       const result = HALToolResultSchema.safeParse(reply.result);
       if (!result.success) throw new HalError('MALFORMED', `${call}: the device sent no result`);
       return result.data as HALToolResult;
