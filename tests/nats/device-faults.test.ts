@@ -3,6 +3,8 @@
 // executed twice (executions are counted on the served HAL).
 import { NatsHAL, serveHalOnNats } from '@hal/nats';
 import { SimulationHAL } from '@hal/simulation';
+import { makeEnvelope } from '@hal/types';
+import { connect } from '@nats-io/transport-node';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startHostProcess, stopAllHostProcesses } from '../physical/host-process.js';
 import { startNatsServer, stopAllNatsServers } from './nats-server.js';
@@ -107,6 +109,60 @@ describe('the NATS server restarted mid-run', () => {
       expect(executions).toEqual(['forward 5', 'forward 1', 'forward 2']);
       const pose = await hal.locomotion.getPose();
       expect(pose.position.x).toBeCloseTo(0.08, 2);
+    },
+  );
+});
+
+describe('a controller that vanishes during an open-ended drive', () => {
+  it(
+    'has its drive stopped by the gateway, while a NatsHAL that keeps its heartbeat keeps driving',
+    { timeout: 40_000 },
+    async () => {
+      const server = await startNatsServer();
+      const device = new SimulationHAL({ clock: 'realtime' });
+      await device.initialize();
+      cleanups.push(() => device.cleanup());
+      const gateway = await serveHalOnNats(device, {
+        servers: server.url,
+        deviceId: 'sim-watch',
+        controllerTimeoutMs: 800,
+      });
+      cleanups.push(() => gateway.close());
+
+      // A client that starts a drive with no end and then says nothing more (as if it crashed).
+      const nc = await connect({ servers: server.url });
+      const call = makeEnvelope(
+        { schema: 'call', device_id: 'vanishing-agent' },
+        { request_id: 'open-drive', call: 'locomotion.drive', args: [100, 100] },
+      );
+      await nc.request(
+        'hal.v1.dev.sim-watch.hal.call.req',
+        new TextEncoder().encode(JSON.stringify(call)),
+        {
+          timeout: 5000,
+        },
+      );
+      await nc.close();
+      const started = Date.now();
+      await new Promise((resolve) => setTimeout(resolve, 300));
+      expect((await device.locomotion.getPose()).velocity.linear).toBeGreaterThan(0);
+      while (
+        (await device.locomotion.getPose()).velocity.linear > 0 &&
+        Date.now() - started < 10_000
+      ) {
+        await new Promise((resolve) => setTimeout(resolve, 50));
+      }
+      expect((await device.locomotion.getPose()).velocity.linear).toBe(0);
+      expect(Date.now() - started).toBeLessThan(10_000);
+
+      // NatsHAL heartbeats: its open-ended drive outlives the controller timeout.
+      const hal = new NatsHAL({ servers: server.url, deviceId: 'sim-watch', heartbeatMs: 200 });
+      cleanups.push(() => hal.cleanup());
+      await hal.initialize();
+      expect((await hal.locomotion.drive(100, 100)).success).toBe(true);
+      await new Promise((resolve) => setTimeout(resolve, 1600));
+      expect((await device.locomotion.getPose()).velocity.linear).toBeGreaterThan(0);
+      expect((await hal.locomotion.stop()).success).toBe(true);
     },
   );
 });

@@ -3,6 +3,7 @@ import type { HalErrorPayload, HardwareAbstractionLayer, RobotConfig } from '@ha
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
 import { decodeArgs, decodeMessage, encodeMessage } from './codec.js';
 import { CommandQueue } from './command-queue.js';
+import { ControllerWatchdog } from './controller-watchdog.js';
 import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
 import { wheelPowersFor } from './drive-mapping.js';
@@ -33,6 +34,11 @@ export type GatewayOptions = NatsConnectionSource & {
   defaultDevice?: boolean;
   /** State stream rate, Hz (10..100; 0 turns the streams off). Default 20. */
   stateRateHz?: number;
+  /**
+   * An open-ended drive (no duration) is stopped when its controller has sent nothing (command or
+   * heartbeat) for this long, ms. Default 3000.
+   */
+  controllerTimeoutMs?: number;
   /** How often the capability announcement is repeated, ms. Default 5000. */
   announceIntervalMs?: number;
   /** Geometry and limits for mapping body velocities onto wheels. Default the V1 robot. */
@@ -77,6 +83,7 @@ class Gateway implements HalGateway {
   readonly #isDefault: boolean;
   readonly #robot: RobotConfig;
   readonly #log: NatsLogger;
+  readonly #watchdog: ControllerWatchdog;
   #streaming = false;
   #closed = false;
 
@@ -91,6 +98,10 @@ class Gateway implements HalGateway {
     this.#robot = options.robot ?? V1_ROBOT;
     this.#log = options.logger ?? silentNatsLogger;
     subjectFor('call', this.deviceId); // refuses a bad device id before anything is served
+    this.#watchdog = new ControllerWatchdog(options.controllerTimeoutMs ?? 3000, (client) => {
+      this.#log.warn('controller went quiet during an open-ended drive: stopping', { client });
+      void this.hal.locomotion.stop();
+    });
   }
 
   start(): void {
@@ -102,6 +113,9 @@ class Gateway implements HalGateway {
     this.#serve('capabilityReq', (m) => this.#reply(m, SCHEMAS.capabilities, this.#announcement()));
     this.#serve('cameraFrame', (m) => this.#onCamera(m));
     this.#serve('log', (m) => this.#onLog(m));
+    this.#serve('heartbeat', async (m) => {
+      this.#watchdog.heard(decodeMessage(m.data, z.unknown()).device_id);
+    });
     const rate = this.options.stateRateHz ?? 20;
     if (rate !== 0 && !(rate >= 10 && rate <= 100)) {
       throw new HalError('RANGE_EXCEEDED', `"stateRateHz" must be 0 or 10..100, got ${rate}`);
@@ -119,6 +133,7 @@ class Gateway implements HalGateway {
   async close(): Promise<void> {
     if (this.#closed) return;
     this.#closed = true;
+    this.#watchdog.close();
     for (const timer of this.#timers) clearInterval(timer);
     for (const sub of this.#subs) sub.unsubscribe();
     if (this.owned) await this.nc.close();
@@ -173,10 +188,13 @@ class Gateway implements HalGateway {
   }
 
   async #onCall(msg: Msg): Promise<void> {
-    const call = decodeMessage(msg.data, HalCallSchema).payload;
+    const envelope = decodeMessage(msg.data, HalCallSchema);
+    const call = envelope.payload;
     const id = call.request_id;
+    this.#watchdog.heard(envelope.device_id);
     let reply = this.#replies.get(id);
     if (reply === undefined) {
+      this.#watch(envelope.device_id, call.call, call.args.length < 3);
       reply = this.#execute(call.call, decodeArgs(call.args), this.#priority(msg)).then((body) =>
         this.#encode(SCHEMAS.callReply, { request_id: id, ...body }),
       );
@@ -216,9 +234,16 @@ class Gateway implements HalGateway {
   }
 
   async #onDrive(msg: Msg): Promise<void> {
-    const command = decodeMessage(msg.data, DifferentialCommandSchema).payload;
+    const envelope = decodeMessage(msg.data, DifferentialCommandSchema);
+    const command = envelope.payload;
+    this.#watchdog.heard(envelope.device_id);
     const { left, right } = wheelPowersFor(command, this.#robot);
     const stop = left === 0 && right === 0 && command.duration_ms === undefined;
+    this.#watch(
+      envelope.device_id,
+      stop ? 'locomotion.stop' : 'locomotion.drive',
+      command.duration_ms === undefined,
+    );
     const result = await (stop
       ? this.hal.locomotion.stop()
       : this.#queue.run(
@@ -231,6 +256,14 @@ class Gateway implements HalGateway {
       });
     }
     await this.#reply(msg, SCHEMAS.ack, { ok: true, left_power: left, right_power: right });
+  }
+
+  /** Keeps the watchdog on an open-ended drive, and off once any other motion or stop replaces it. */
+  #watch(client: string, call: string, noDuration: boolean): void {
+    if (call === 'locomotion.drive' && noDuration) this.#watchdog.openEnded(client);
+    else if (call.startsWith('locomotion.') && call !== 'locomotion.getPose')
+      this.#watchdog.ended();
+    else if (call === 'safety.emergencyStop') this.#watchdog.ended();
   }
 
   async #onEstop(msg: Msg): Promise<void> {

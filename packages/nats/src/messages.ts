@@ -128,6 +128,7 @@ export const SCHEMAS = Object.freeze({
   health: 'hal/system/health/resp/1.0',
   capabilities: 'hal/system/capability/1.0',
   estop: 'hal/safety/estop/cmd/1.0',
+  heartbeat: 'hal/system/heartbeat/1.0',
   call: 'hal/hal/call/req/1.0',
   callReply: 'hal/hal/call/resp/1.0',
   ack: 'hal/ack/1.0',

@@ -41,6 +41,11 @@ export type NatsHALOptions = NatsConnectionSource & {
   attemptTimeoutMs?: number;
   /** The device is offline after this long without a word from it, ms. Default 3000. */
   offlineAfterMs?: number;
+  /**
+   * How often to tell the gateway this controller is alive, ms (it stops an open-ended drive of a
+   * controller that goes quiet). Default 1000.
+   */
+  heartbeatMs?: number;
   logger?: NatsLogger;
 };
 
@@ -65,6 +70,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
   #link: DeviceLink | undefined;
   #nc: { nc: NatsConnection; owned: boolean } | undefined;
   #ready = false;
+  #heartbeat: NodeJS.Timeout | undefined;
   #info: DeviceInfo;
   #estopped = false;
   #safety: SafetyStatus = { emergencyStopped: false, batteryLevel: 100, errors: [] };
@@ -154,6 +160,12 @@ export class NatsHAL implements HardwareAbstractionLayer {
     }
     this.#link = link;
     this.#ready = true;
+    const beat = encodeMessage(SCHEMAS.heartbeat, this.#clientId, [], {});
+    const subject = subjectFor('heartbeat', this.#options.deviceId);
+    this.#heartbeat = setInterval(() => {
+      if (!link.nc.isClosed()) link.nc.publish(subject, beat);
+    }, this.#options.heartbeatMs ?? 1000);
+    this.#heartbeat.unref();
   }
 
   /** Stops the device's wheels (best effort) and lets go of NATS. Safe to call twice. */
@@ -164,6 +176,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
     await this.#result('locomotion.stop', [], STOP_ON_CLEANUP_MS);
     this.#ready = false;
     this.#link = undefined;
+    clearInterval(this.#heartbeat);
     link.close();
     if (this.#nc?.owned === true) await this.#nc.nc.close();
     this.#nc = undefined;

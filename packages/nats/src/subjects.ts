@@ -14,6 +14,7 @@ export const SUBJECTS = Object.freeze({
   estopReset: ['safety', 'estop', 'reset'],
   call: ['hal', 'call', 'req'],
   log: ['hal', 'log', 'pub'],
+  heartbeat: ['system', 'heartbeat', 'pub'],
 } as const);
 export type SubjectName = keyof typeof SUBJECTS;
 

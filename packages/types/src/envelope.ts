@@ -37,9 +37,18 @@ export const EnvelopeSchema = z
     payload: z.unknown().describe('The message body'),
   })
   .describe('HAL message envelope');
-export type Envelope<P = unknown> = Omit<z.infer<typeof EnvelopeSchema>, 'payload'> & {
+// Written out: Omit<> over the loose schema's index signature would erase the named fields.
+export interface Envelope<P = unknown> {
+  hal_major: number;
+  hal_minor: number;
+  schema: string;
+  /** The sender: the robot on what a device publishes, the client's id on what a client sends. */
+  device_id: string;
+  caps: string[];
+  /** ms since the Unix epoch, or an ISO 8601 string from a client that writes the spec's form. */
+  ts: number | string;
   payload: P;
-};
+}
 
 /** Wraps a payload in an envelope of this library's version. */
 export function makeEnvelope<P>(
