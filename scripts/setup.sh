@@ -16,6 +16,7 @@ apt_packages=(
   clang libclang-rt-14-dev # libFuzzer targets for the firmware's parsers (ASan, UBSan)
   chromium # the browser demo's end-to-end test
   socat # serial link tools: the docs' smoke checks and the serial fault-injection test
+  nats-server # the NATS broker the gateway tests and the NATS benchmark start on 127.0.0.1
 )
 
 missing=()

@@ -115,6 +115,12 @@ export const SYSTEM_TOOLS: readonly SystemTool[] = [
     package: 'socat',
     why: "docs/firmware.md's smoke checks of a cube or the emulator",
   },
+  {
+    kind: 'command',
+    name: 'nats-server',
+    package: 'nats-server',
+    why: 'the NATS broker the gateway tests and bench/nats.bench.ts start on 127.0.0.1',
+  },
 ];
 
 /**

@@ -52,36 +52,58 @@ describe('envelope', () => {
 });
 
 describe('subjects', () => {
-  it('addresses a device right after the version', () => {
-    expect(
-      buildSubject({ device: 'cube-01', domain: 'locomotion', type: 'pose', action: 'update' }),
-    ).toBe('hal.v1.cube-01.locomotion.pose.update');
-    expect(parseSubject('hal.v1.cube-01.safety.estop.set')).toEqual({
+  it('builds the spec subjects as written for the default device, and dev.{device} ones for a fleet', () => {
+    expect(buildSubject({ domain: 'motor', type: 'differential', action: 'cmd' })).toBe(
+      'hal.v1.motor.differential.cmd',
+    );
+    expect(buildSubject({ device: 'cube-01', domain: 'sensor', type: 'imu', action: 'data' })).toBe(
+      'hal.v1.dev.cube-01.sensor.imu.data',
+    );
+    expect(parseSubject('hal.v1.system.health.req')).toEqual({
+      domain: 'system',
+      type: 'health',
+      action: 'req',
+      major: 1,
+    });
+    expect(parseSubject('hal.v1.dev.cube-01.safety.estop.cmd')).toEqual({
       device: 'cube-01',
       domain: 'safety',
       type: 'estop',
-      action: 'set',
+      action: 'cmd',
       major: 1,
     });
   });
 
-  it('builds wildcard subscriptions only when asked', () => {
+  it('builds wildcard subscriptions only when asked, with ">" last', () => {
     expect(
       buildSubject(
-        { device: '*', domain: 'safety', type: 'estop', action: '>' },
+        { device: '*', domain: 'sensor', type: 'imu', action: 'data' },
         { wildcards: true },
       ),
-    ).toBe('hal.v1.*.safety.estop.>');
+    ).toBe('hal.v1.dev.*.sensor.imu.data');
     expect(() =>
-      buildSubject({ device: '*', domain: 'safety', type: 'estop', action: 'set' }),
+      buildSubject({ device: '*', domain: 'safety', type: 'estop', action: 'cmd' }),
     ).toThrow(HalError);
     expect(() =>
       buildSubject({ device: 'a', domain: '>', type: 'estop', action: 'set' }, { wildcards: true }),
     ).toThrow(/may only be last/);
+    expect(() => buildSubject({ domain: 'dev', type: 'x', action: 'y' })).toThrow(
+      /may not be "dev"/,
+    );
+  });
+
+  it("accepts the spec's ISO 8601 ts as well as ms since the epoch, and nothing else", () => {
+    const base = { hal_major: 1, hal_minor: 0, schema: 's', device_id: 'd', caps: [], payload: {} };
+    expect(EnvelopeSchema.safeParse({ ...base, ts: '2024-03-14T10:30:00.000Z' }).success).toBe(
+      true,
+    );
+    expect(EnvelopeSchema.safeParse({ ...base, ts: 1710412200000 }).success).toBe(true);
+    expect(EnvelopeSchema.safeParse({ ...base, ts: 'yesterday' }).success).toBe(false);
   });
 
   it('refuses subjects that are not ours', () => {
     expect(() => parseSubject('hal.cube.locomotion.pose.update')).toThrow(HalError);
-    expect(() => parseSubject('hal.v1.cube 01.locomotion.pose.update')).toThrow(HalError);
+    expect(() => parseSubject('hal.v1.dev.cube 01.locomotion.pose.update')).toThrow(HalError);
+    expect(() => parseSubject('hal.v1.cube-01.locomotion.pose.update')).toThrow(HalError);
   });
 });

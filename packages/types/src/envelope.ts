@@ -27,15 +27,28 @@ export const EnvelopeSchema = z
     hal_major: z.number().int().nonnegative().describe('Major version of the message format'),
     hal_minor: z.number().int().nonnegative().describe('Minor version of the message format'),
     schema: z.string().min(1).describe('Payload schema name, e.g. hal.locomotion.pose'),
-    device_id: z.string().regex(DEVICE_ID).describe('Sending or addressed robot'),
+    device_id: z.string().regex(DEVICE_ID).describe('The sender: the robot, or the client id'),
     caps: z.array(z.string()).describe('Capability strings of the device'),
-    ts: z.number().describe('Time the message was made, ms since the Unix epoch'),
+    ts: z
+      .union([z.number(), z.iso.datetime({ offset: true })])
+      .describe(
+        'Time the message was made: ms since the Unix epoch (what we send) or an ISO 8601 string (as the spec writes it)',
+      ),
     payload: z.unknown().describe('The message body'),
   })
   .describe('HAL message envelope');
-export type Envelope<P = unknown> = Omit<z.infer<typeof EnvelopeSchema>, 'payload'> & {
+// Written out: Omit<> over the loose schema's index signature would erase the named fields.
+export interface Envelope<P = unknown> {
+  hal_major: number;
+  hal_minor: number;
+  schema: string;
+  /** The sender: the robot on what a device publishes, the client's id on what a client sends. */
+  device_id: string;
+  caps: string[];
+  /** ms since the Unix epoch, or an ISO 8601 string from a client that writes the spec's form. */
+  ts: number | string;
   payload: P;
-};
+}
 
 /** Wraps a payload in an envelope of this library's version. */
 export function makeEnvelope<P>(
@@ -87,37 +100,51 @@ export function parseEnvelope<S extends z.ZodType>(
   return { ...envelope.data, payload: body.data };
 }
 
-/** The parts of a subject: `hal.v{major}.{device}.{domain}.{type}.{action}`. */
+/**
+ * The parts of a subject. One addressing scheme (docs/nats.md): the spec's subjects
+ * `hal.v{major}.{domain}.{type}.{action}` as written address the default device (the one a
+ * spec-only client talks to); `hal.v{major}.dev.{device}.{domain}.{type}.{action}` addresses one
+ * device of a fleet, so `hal.v1.dev.cube-01.>` is everything about one robot and
+ * `hal.v1.dev.*.sensor.imu.data` one stream of every robot. `dev` is therefore not a domain.
+ */
 export interface SubjectParts {
-  /** The addressed robot, or `*` (one level) / omitted with `>` as action for subscriptions. */
-  device: string;
+  /** The addressed robot (`*` in a subscription: every robot); omitted: the default device. */
+  device?: string | undefined;
   domain: string;
   type: string;
   action: string;
   major?: number;
 }
 
+/** The token after `hal.v{major}` that introduces a device id. */
+export const DEVICE_SUBJECT_TOKEN = 'dev';
+
 function subjectToken(name: string, value: string, allowWildcard: boolean): string {
   if (allowWildcard && (value === '*' || value === '>')) return value;
   const ok = name === 'device' ? DEVICE_ID.test(value) : TOKEN.test(value);
   if (!ok)
     throw new HalError('INVALID_PARAMETER', `subject "${name}" token is invalid: "${value}"`);
+  if (name === 'domain' && value === DEVICE_SUBJECT_TOKEN) {
+    throw new HalError('INVALID_PARAMETER', `subject "domain" may not be "${value}"`);
+  }
   return value;
 }
 
 /**
- * Builds a subject. One addressing scheme: the device id comes right after the version, so
- * `hal.v1.cube-01.>` is everything about one robot and `hal.v1.*.safety.estop.*` one thing about all.
+ * Builds a subject: `hal.v1.motor.differential.cmd` for the default device, or
+ * `hal.v1.dev.cube-01.motor.differential.cmd` with `device: 'cube-01'`.
  */
 export function buildSubject(parts: SubjectParts, options: { wildcards?: boolean } = {}): string {
   const wild = options.wildcards ?? false;
   const major = parts.major ?? HAL_MAJOR;
   const tokens = [
-    subjectToken('device', parts.device, wild),
     subjectToken('domain', parts.domain, wild),
     subjectToken('type', parts.type, wild),
     subjectToken('action', parts.action, wild),
   ];
+  if (parts.device !== undefined) {
+    tokens.unshift(DEVICE_SUBJECT_TOKEN, subjectToken('device', parts.device, wild));
+  }
   const gt = tokens.indexOf('>');
   if (gt >= 0 && gt !== tokens.length - 1) {
     throw new HalError('INVALID_PARAMETER', 'subject wildcard ">" may only be last');
@@ -126,17 +153,21 @@ export function buildSubject(parts: SubjectParts, options: { wildcards?: boolean
 }
 
 /** Splits a concrete subject into its parts; throws INVALID_PARAMETER if it is not one of ours. */
-export function parseSubject(subject: string): Required<SubjectParts> {
+export function parseSubject(subject: string): SubjectParts & { major: number } {
   const tokens = subject.split('.');
   const match = /^v(\d+)$/.exec(tokens[1] ?? '');
-  if (tokens.length !== 6 || tokens[0] !== 'hal' || match === null) {
+  const addressed = tokens.length === 7 && tokens[2] === DEVICE_SUBJECT_TOKEN;
+  if (tokens[0] !== 'hal' || match === null || (tokens.length !== 5 && !addressed)) {
     throw new HalError(
       'INVALID_PARAMETER',
-      `"${subject}" is not a hal.v{major}.{device}.{domain}.{type}.{action} subject`,
+      `"${subject}" is not a hal.v{major}[.dev.{device}].{domain}.{type}.{action} subject`,
     );
   }
-  const [, , device = '', domain = '', type = '', action = ''] = tokens;
-  const parts = { device, domain, type, action, major: Number(match[1]) };
+  const [domain = '', type = '', action = ''] = tokens.slice(-3);
+  const major = Number(match[1]);
+  const parts: SubjectParts & { major: number } = addressed
+    ? { device: tokens[3] ?? '', domain, type, action, major }
+    : { domain, type, action, major };
   buildSubject(parts);
   return parts;
 }

@@ -114,6 +114,7 @@ export {
 export type { Capability } from './capabilities.js';
 
 export {
+  DEVICE_SUBJECT_TOKEN,
   EnvelopeSchema,
   HAL_MAJOR,
   HAL_MINOR,

@@ -1,0 +1,64 @@
+import { HalError, makeEnvelope, parseEnvelope } from '@hal/types';
+import type { Envelope } from '@hal/types';
+import type { z } from 'zod';
+
+const encoder = new TextEncoder();
+const decoder = new TextDecoder();
+
+/** Encodes a payload in an envelope sent by `deviceId`. */
+export function encodeMessage(
+  schema: string,
+  deviceId: string,
+  caps: readonly string[],
+  payload: unknown,
+): Uint8Array {
+  return encoder.encode(
+    JSON.stringify(makeEnvelope({ schema, device_id: deviceId, caps }, payload)),
+  );
+}
+
+/** Decodes an envelope and checks its payload; MALFORMED for anything else. */
+export function decodeMessage<S extends z.ZodType>(
+  data: Uint8Array,
+  payload: S,
+): Envelope<z.output<S>> {
+  let raw: unknown;
+  try {
+    raw = JSON.parse(decoder.decode(data));
+  } catch (cause) {
+    throw new HalError('MALFORMED', 'message is not JSON', { cause });
+  }
+  return parseEnvelope(raw, payload);
+}
+
+// JSON has no NaN, Infinity or undefined; call arguments keep them, so a NaN power is refused
+// for being NaN (INVALID_PARAMETER), exactly as a local call would be.
+const TAG = '$hal';
+
+/** Call arguments as JSON values, keeping NaN, +-Infinity and undefined. */
+export function encodeArgs(args: readonly unknown[]): unknown[] {
+  const out = args.map((arg) => {
+    if (arg === undefined) return { [TAG]: 'undefined' };
+    if (typeof arg === 'number' && !Number.isFinite(arg)) return { [TAG]: String(arg) };
+    return arg;
+  });
+  while (out.length > 0 && isTagged(out[out.length - 1], 'undefined')) out.pop();
+  return out;
+}
+
+function isTagged(value: unknown, tag: string): boolean {
+  return (
+    typeof value === 'object' && value !== null && (value as Record<string, unknown>)[TAG] === tag
+  );
+}
+
+/** The inverse of {@link encodeArgs}. */
+export function decodeArgs(args: readonly unknown[]): unknown[] {
+  return args.map((arg) => {
+    if (typeof arg !== 'object' || arg === null) return arg;
+    const tag = (arg as Record<string, unknown>)[TAG];
+    if (tag === 'undefined') return undefined;
+    if (tag === 'NaN' || tag === 'Infinity' || tag === '-Infinity') return Number(tag);
+    return arg;
+  });
+}

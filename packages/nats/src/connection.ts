@@ -1,0 +1,48 @@
+import { connect } from '@nats-io/transport-node';
+import type { ConnectionOptions, NatsConnection } from '@nats-io/transport-node';
+
+/** How to reach NATS: servers and credentials, passed through to nats.js. */
+export interface NatsConnectOptions {
+  /** e.g. `nats://127.0.0.1:4222`, or a list for a cluster. */
+  servers: string | string[];
+  /** User/password authentication. */
+  user?: string;
+  pass?: string;
+  /** Token authentication. */
+  token?: string;
+  /** TLS: `{ caFile, certFile, keyFile }` as nats.js takes them; the server must be configured. */
+  tls?: ConnectionOptions['tls'];
+  /** A name shown in the server's connection list. */
+  name?: string;
+  /** Wait between reconnect attempts, ms. Default 250. */
+  reconnectTimeWaitMs?: number;
+}
+
+/** Either an open connection (shared, not closed by us) or how to open one. */
+export type NatsConnectionSource = { connection: NatsConnection } | NatsConnectOptions;
+
+/** Opens a connection that reconnects for ever (the owner closes it). */
+export async function openConnection(options: NatsConnectOptions): Promise<NatsConnection> {
+  const config: ConnectionOptions = {
+    servers: options.servers,
+    reconnect: true,
+    maxReconnectAttempts: -1,
+    reconnectTimeWait: options.reconnectTimeWaitMs ?? 250,
+    waitOnFirstConnect: false,
+    timeout: 5000,
+  };
+  if (options.user !== undefined) config.user = options.user;
+  if (options.pass !== undefined) config.pass = options.pass;
+  if (options.token !== undefined) config.token = options.token;
+  if (options.tls !== undefined) config.tls = options.tls;
+  if (options.name !== undefined) config.name = options.name;
+  return connect(config);
+}
+
+/** The connection to use and whether we own (and must close) it. */
+export async function resolveConnection(
+  source: NatsConnectionSource,
+): Promise<{ nc: NatsConnection; owned: boolean }> {
+  if ('connection' in source) return { nc: source.connection, owned: false };
+  return { nc: await openConnection(source), owned: true };
+}

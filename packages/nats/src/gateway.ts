@@ -1,0 +1,358 @@
+import { HalError, V1_ROBOT, isHalError, toHalError } from '@hal/types';
+import type { HalErrorPayload, HardwareAbstractionLayer, RobotConfig } from '@hal/types';
+import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
+import { decodeArgs, decodeMessage, encodeMessage } from './codec.js';
+import { CommandQueue } from './command-queue.js';
+import { ControllerWatchdog } from './controller-watchdog.js';
+import type { NatsConnectionSource } from './connection.js';
+import { resolveConnection } from './connection.js';
+import { wheelPowersFor } from './drive-mapping.js';
+import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
+import { HAL_CALLS } from './hal-calls.js';
+import type { NatsLogger } from './logger.js';
+import { silentNatsLogger } from './logger.js';
+import {
+  CameraFrameRequestSchema,
+  DifferentialCommandSchema,
+  HalCallSchema,
+  HealthRequestSchema,
+  SCHEMAS,
+} from './messages.js';
+import type { CapabilityAnnouncement, Health, HalCallReply } from './messages.js';
+import { subjectFor } from './subjects.js';
+import type { SubjectName } from './subjects.js';
+import { z } from 'zod';
+
+export type GatewayOptions = NatsConnectionSource & {
+  /** The device id used in `hal.v1.dev.{deviceId}...` subjects and as the envelope's sender. */
+  deviceId: string;
+  /**
+   * Whether this gateway also answers the spec's bare subjects (`hal.v1.motor.differential.cmd`)
+   * and streams on them: the device a spec-only client talks to. Default true; in a fleet exactly
+   * one device (or none) is the default.
+   */
+  defaultDevice?: boolean;
+  /** State stream rate, Hz (10..100; 0 turns the streams off). Default 20. */
+  stateRateHz?: number;
+  /**
+   * An open-ended drive (no duration) is stopped when its controller has sent nothing (command or
+   * heartbeat) for this long, ms. Default 3000.
+   */
+  controllerTimeoutMs?: number;
+  /** How often the capability announcement is repeated, ms. Default 5000. */
+  announceIntervalMs?: number;
+  /** Geometry and limits for mapping body velocities onto wheels. Default the V1 robot. */
+  robot?: RobotConfig;
+  logger?: NatsLogger;
+};
+
+/** A HAL served on NATS. The HAL stays the caller's: `close()` does not clean it up. */
+export interface HalGateway {
+  readonly deviceId: string;
+  /** Stops serving (and closes the connection if the gateway opened it). */
+  close(): Promise<void>;
+}
+
+const DEDUP_ENTRIES = 1024;
+
+/**
+ * Serves `hal` on NATS: the spec's subjects (differential drive, state, IMU and range streams,
+ * camera frames, health, capabilities, e-stop) and `hal.call.req`, the whole HAL contract for
+ * {@link NatsHAL}. Commands run one at a time; stop, e-stop and anything sent with the header
+ * `Priority: high` run at once, ahead of the queue. A call repeated with the same `request_id`
+ * (a client retrying after a reconnect) is answered from the first execution, never run twice.
+ */
+export async function serveHalOnNats(
+  hal: HardwareAbstractionLayer,
+  options: GatewayOptions,
+): Promise<HalGateway> {
+  const { nc, owned } = await resolveConnection(options);
+  const gateway = new Gateway(nc, owned, hal, options);
+  gateway.start();
+  await nc.flush(); // the server has every subscription: the first request finds a responder
+  return gateway;
+}
+
+class Gateway implements HalGateway {
+  readonly deviceId: string;
+  readonly #queue = new CommandQueue();
+  readonly #subs: Subscription[] = [];
+  readonly #timers: NodeJS.Timeout[] = [];
+  readonly #replies = new Map<string, Promise<Uint8Array>>();
+  readonly #started = Date.now();
+  readonly #isDefault: boolean;
+  readonly #robot: RobotConfig;
+  readonly #log: NatsLogger;
+  readonly #watchdog: ControllerWatchdog;
+  #streaming = false;
+  #closed = false;
+
+  constructor(
+    readonly nc: NatsConnection,
+    readonly owned: boolean,
+    readonly hal: HardwareAbstractionLayer,
+    readonly options: GatewayOptions,
+  ) {
+    this.deviceId = options.deviceId;
+    this.#isDefault = options.defaultDevice ?? true;
+    this.#robot = options.robot ?? V1_ROBOT;
+    this.#log = options.logger ?? silentNatsLogger;
+    subjectFor('call', this.deviceId); // refuses a bad device id before anything is served
+    this.#watchdog = new ControllerWatchdog(options.controllerTimeoutMs ?? 3000, (client) => {
+      this.#log.warn('controller went quiet during an open-ended drive: stopping', { client });
+      void this.hal.locomotion.stop();
+    });
+  }
+
+  start(): void {
+    this.#serve('call', (m) => this.#onCall(m));
+    this.#serve('differentialCmd', (m) => this.#onDrive(m));
+    this.#serve('estop', (m) => this.#onEstop(m));
+    this.#serve('estopReset', (m) => this.#onEstopReset(m));
+    this.#serve('health', (m) => this.#onHealth(m));
+    this.#serve('capabilityReq', (m) => this.#reply(m, SCHEMAS.capabilities, this.#announcement()));
+    this.#serve('cameraFrame', (m) => this.#onCamera(m));
+    this.#serve('log', (m) => this.#onLog(m));
+    this.#serve('heartbeat', async (m) => {
+      this.#watchdog.heard(decodeMessage(m.data, z.unknown()).device_id);
+    });
+    const rate = this.options.stateRateHz ?? 20;
+    if (rate !== 0 && !(rate >= 10 && rate <= 100)) {
+      throw new HalError('RANGE_EXCEEDED', `"stateRateHz" must be 0 or 10..100, got ${rate}`);
+    }
+    if (rate > 0) this.#timers.push(setInterval(() => void this.#stream(), 1000 / rate));
+    this.#publish('capabilityAnnounce', SCHEMAS.capabilities, this.#announcement());
+    this.#timers.push(
+      setInterval(
+        () => this.#publish('capabilityAnnounce', SCHEMAS.capabilities, this.#announcement()),
+        this.options.announceIntervalMs ?? 5000,
+      ),
+    );
+  }
+
+  async close(): Promise<void> {
+    if (this.#closed) return;
+    this.#closed = true;
+    this.#watchdog.close();
+    for (const timer of this.#timers) clearInterval(timer);
+    for (const sub of this.#subs) sub.unsubscribe();
+    if (this.owned) await this.nc.close();
+  }
+
+  #serve(name: SubjectName, handler: (msg: Msg) => Promise<void>): void {
+    const subjects = [subjectFor(name, this.deviceId)];
+    if (this.#isDefault) subjects.push(subjectFor(name));
+    for (const subject of subjects) {
+      this.#subs.push(
+        this.nc.subscribe(subject, {
+          callback: (error, msg) => {
+            if (error !== null) {
+              this.#log.warn('subscription failed', { subject, error: error.message });
+              return;
+            }
+            handler(msg).catch((thrown: unknown) => this.#fail(msg, thrown));
+          },
+        }),
+      );
+    }
+  }
+
+  #caps(): string[] {
+    return this.hal.getDeviceInfo().capabilities;
+  }
+
+  #encode(schema: string, payload: unknown): Uint8Array {
+    return encodeMessage(schema, this.deviceId, this.#caps(), payload);
+  }
+
+  #publish(name: SubjectName, schema: string, payload: unknown): void {
+    if (this.#closed || this.nc.isClosed()) return;
+    const data = this.#encode(schema, payload);
+    this.nc.publish(subjectFor(name, this.deviceId), data);
+    if (this.#isDefault) this.nc.publish(subjectFor(name), data);
+  }
+
+  async #reply(msg: Msg, schema: string, payload: unknown): Promise<void> {
+    if (msg.reply !== undefined && msg.reply !== '') msg.respond(this.#encode(schema, payload));
+  }
+
+  /** Answers a failed message with the spec's error body, or logs it when nobody asked. */
+  #fail(msg: Msg, thrown: unknown): void {
+    const error = errorPayload(thrown);
+    this.#log.debug('message refused', { subject: msg.subject, code: error.code });
+    void this.#reply(msg, SCHEMAS.error, { error });
+  }
+
+  #priority(msg: Msg): boolean {
+    return msg.headers?.get('Priority').toLowerCase() === 'high';
+  }
+
+  async #onCall(msg: Msg): Promise<void> {
+    const envelope = decodeMessage(msg.data, HalCallSchema);
+    const call = envelope.payload;
+    const id = call.request_id;
+    this.#watchdog.heard(envelope.device_id);
+    let reply = this.#replies.get(id);
+    if (reply === undefined) {
+      this.#watch(envelope.device_id, call.call, call.args.length < 3);
+      reply = this.#execute(call.call, decodeArgs(call.args), this.#priority(msg)).then((body) =>
+        this.#encode(SCHEMAS.callReply, { request_id: id, ...body }),
+      );
+      this.#replies.set(id, reply);
+      if (this.#replies.size > DEDUP_ENTRIES) {
+        const oldest = this.#replies.keys().next().value;
+        if (oldest !== undefined) this.#replies.delete(oldest);
+      }
+    }
+    const data = await reply;
+    if (msg.reply !== undefined && msg.reply !== '') msg.respond(data);
+  }
+
+  async #execute(
+    name: string,
+    args: unknown[],
+    priority: boolean,
+  ): Promise<Omit<HalCallReply, 'request_id'>> {
+    const spec = HAL_CALLS[name];
+    const safety = () => ({ emergency_stopped: this.hal.safety.isEmergencyStopped() });
+    if (spec === undefined) {
+      return {
+        error: { code: 'UNKNOWN_COMMAND', message: `"call" is not a HAL call: "${name}"` },
+        ...safety(),
+      };
+    }
+    const run = async (): Promise<Omit<HalCallReply, 'request_id'>> => {
+      try {
+        const out = await spec.invoke(this.hal, args);
+        return spec.kind === 'result' ? { result: out, ...safety() } : { value: out, ...safety() };
+      } catch (thrown) {
+        return { error: errorPayload(thrown), ...safety() };
+      }
+    };
+    if (spec.lane === 'queue') return this.#queue.run(run, priority);
+    return run();
+  }
+
+  async #onDrive(msg: Msg): Promise<void> {
+    const envelope = decodeMessage(msg.data, DifferentialCommandSchema);
+    const command = envelope.payload;
+    this.#watchdog.heard(envelope.device_id);
+    const { left, right } = wheelPowersFor(command, this.#robot);
+    const stop = left === 0 && right === 0 && command.duration_ms === undefined;
+    this.#watch(
+      envelope.device_id,
+      stop ? 'locomotion.stop' : 'locomotion.drive',
+      command.duration_ms === undefined,
+    );
+    const result = await (stop
+      ? this.hal.locomotion.stop()
+      : this.#queue.run(
+          () => this.hal.locomotion.drive(left, right, command.duration_ms),
+          this.#priority(msg),
+        ));
+    if (!result.success) {
+      throw new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'drive failed', {
+        details: result.details ?? {},
+      });
+    }
+    await this.#reply(msg, SCHEMAS.ack, { ok: true, left_power: left, right_power: right });
+  }
+
+  /** Keeps the watchdog on an open-ended drive, and off once any other motion or stop replaces it. */
+  #watch(client: string, call: string, noDuration: boolean): void {
+    if (call === 'locomotion.drive' && noDuration) this.#watchdog.openEnded(client);
+    else if (call.startsWith('locomotion.') && call !== 'locomotion.getPose')
+      this.#watchdog.ended();
+    else if (call === 'safety.emergencyStop') this.#watchdog.ended();
+  }
+
+  async #onEstop(msg: Msg): Promise<void> {
+    const body = decodeMessage(msg.data, z.looseObject({ reason: z.string().optional() })).payload;
+    const result = await this.hal.safety.emergencyStop(body.reason);
+    await this.#reply(msg, SCHEMAS.ack, { ok: result.success, emergency_stopped: true });
+  }
+
+  async #onEstopReset(msg: Msg): Promise<void> {
+    const result = await this.hal.safety.resetEmergencyStop();
+    if (!result.success) throw new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? '');
+    await this.#reply(msg, SCHEMAS.ack, { ok: true, emergency_stopped: false });
+  }
+
+  async #onHealth(msg: Msg): Promise<void> {
+    const request = decodeMessage(msg.data, HealthRequestSchema).payload;
+    const status = this.hal.safety.getSafetyStatus();
+    const health: Health = {
+      status: !this.hal.isReady()
+        ? 'not_ready'
+        : status.emergencyStopped
+          ? 'emergency_stopped'
+          : status.errors.length > 0
+            ? 'degraded'
+            : 'healthy',
+      uptime_s: (Date.now() - this.#started) / 1000,
+      mode: this.hal.mode,
+      battery_percent: status.batteryLevel,
+    };
+    if (status.temperature !== undefined) health.temperature_celsius = status.temperature;
+    if (request.include_diagnostics === true) health.diagnostics = { errors: status.errors };
+    await this.#reply(msg, SCHEMAS.health, health);
+  }
+
+  async #onCamera(msg: Msg): Promise<void> {
+    decodeMessage(msg.data, CameraFrameRequestSchema);
+    const url = await this.hal.vision.captureFrame();
+    const data = url.slice(url.indexOf(',') + 1);
+    await this.#reply(msg, SCHEMAS.cameraFrame, {
+      format: 'jpeg',
+      data,
+      timestamp_ms: Date.now(),
+    });
+  }
+
+  async #onLog(msg: Msg): Promise<void> {
+    const body = decodeMessage(
+      msg.data,
+      z.looseObject({ message: z.unknown(), level: z.unknown().optional() }),
+    ).payload;
+    this.hal.communication.log(body.message as string, body.level as 'info' | undefined);
+  }
+
+  #announcement(): CapabilityAnnouncement {
+    const info = this.hal.getDeviceInfo();
+    return {
+      device_type: info.type,
+      mode: info.mode,
+      caps: info.capabilities,
+      state_rate_hz: this.options.stateRateHz ?? 20,
+    };
+  }
+
+  /** One tick of the streams; a tick still reading when the next is due is not overlapped. */
+  async #stream(): Promise<void> {
+    if (this.#streaming || this.#closed || !this.hal.isReady()) return;
+    this.#streaming = true;
+    try {
+      this.#publish(
+        'differentialState',
+        SCHEMAS.differentialState,
+        await readDifferentialState(this.hal, this.#robot),
+      );
+      const imu = await readImu(this.hal);
+      if (imu !== undefined) this.#publish('imuData', SCHEMAS.imu, imu);
+      const range = await readRange(this.hal);
+      if (range !== undefined) this.#publish('rangeData', SCHEMAS.range, range);
+    } catch (thrown) {
+      this.#log.debug('state read failed', { error: toHalError(thrown).message });
+    } finally {
+      this.#streaming = false;
+    }
+  }
+}
+
+/** The spec's error shape for anything thrown. */
+export function errorPayload(thrown: unknown): HalErrorPayload {
+  const error = isHalError(thrown) ? thrown : toHalError(thrown);
+  const payload: HalErrorPayload = { code: error.code, message: error.message };
+  if (error.details !== undefined) payload.details = error.details;
+  return payload;
+}

@@ -1,0 +1,42 @@
+export { serveHalOnNats, errorPayload } from './gateway.js';
+export type { GatewayOptions, HalGateway } from './gateway.js';
+export { NatsHAL } from './nats-hal.js';
+export type { NatsHALOptions } from './nats-hal.js';
+export { openConnection } from './connection.js';
+export type { NatsConnectOptions, NatsConnectionSource } from './connection.js';
+export { SUBJECTS, subjectFor } from './subjects.js';
+export type { SubjectName } from './subjects.js';
+export { wheelPowersFor, wheelVelocities } from './drive-mapping.js';
+export type { WheelPowers } from './drive-mapping.js';
+export { CommandQueue } from './command-queue.js';
+export { encodeMessage, decodeMessage } from './codec.js';
+export { errorFromPayload } from './device-link.js';
+export {
+  AckSchema,
+  CameraFrameRequestSchema,
+  CameraFrameSchema,
+  CapabilityAnnouncementSchema,
+  DifferentialCommandSchema,
+  DifferentialStateSchema,
+  ErrorReplySchema,
+  HalCallReplySchema,
+  HalCallSchema,
+  HealthRequestSchema,
+  HealthSchema,
+  ImuDataSchema,
+  RangeDataSchema,
+  SCHEMAS,
+} from './messages.js';
+export type {
+  CameraFrame,
+  CapabilityAnnouncement,
+  DifferentialCommand,
+  DifferentialState,
+  HalCall,
+  HalCallReply,
+  Health,
+  ImuData,
+  RangeData,
+} from './messages.js';
+export { silentNatsLogger } from './logger.js';
+export type { NatsLogger } from './logger.js';

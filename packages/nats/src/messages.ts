@@ -1,0 +1,136 @@
+import { HalErrorPayloadSchema } from '@hal/types';
+import { z } from 'zod';
+
+/*
+ * The spec's payloads (docs/nats.md), each inside the Tafy envelope. Fields carry their units in
+ * their names; readers ignore fields they do not know (loose objects).
+ */
+
+/** `motor.differential.cmd`: drive at a body velocity, optionally for a time. */
+export const DifferentialCommandSchema = z.looseObject({
+  linear_vel_m_per_s: z.number().describe('Forward speed, m/s (negative: backwards)'),
+  angular_vel_rad_per_s: z.number().describe('Turn rate, rad/s, counter-clockwise positive'),
+  duration_ms: z
+    .number()
+    .optional()
+    .describe('Stop after this many ms; without it, drive until the next command or stop'),
+  stop_action: z
+    .enum(['brake', 'coast'])
+    .optional()
+    .describe('How to stop when duration_ms ends; both stop the steppers at once'),
+});
+export type DifferentialCommand = z.infer<typeof DifferentialCommandSchema>;
+
+/** `motor.differential.state`, streamed at the gateway's state rate (10-100 Hz). */
+export const DifferentialStateSchema = z.looseObject({
+  left_vel_m_per_s: z.number().describe('Left wheel ground speed, m/s'),
+  right_vel_m_per_s: z.number().describe('Right wheel ground speed, m/s'),
+  linear_vel_m_per_s: z.number().describe('Body forward speed, m/s'),
+  angular_vel_rad_per_s: z.number().describe('Body turn rate, rad/s'),
+  x_m: z.number().describe('Pose x, metres (REP-103 world frame)'),
+  y_m: z.number().describe('Pose y, metres'),
+  yaw_rad: z.number().describe('Heading, radians, counter-clockwise positive'),
+  emergency_stopped: z.boolean().describe('Whether the emergency stop is latched'),
+  timestamp_ms: z.number().describe('When the state was read, ms since the Unix epoch'),
+});
+export type DifferentialState = z.infer<typeof DifferentialStateSchema>;
+
+const Xyz = z.looseObject({ x: z.number(), y: z.number(), z: z.number() });
+
+/** `sensor.imu.data`, streamed only by a device that offers an IMU. */
+export const ImuDataSchema = z.looseObject({
+  accel_m_per_s2: Xyz.describe('Acceleration, m/s^2'),
+  gyro_rad_per_s: Xyz.describe('Rotation rate, rad/s'),
+  heading_rad: z.number().describe('Heading, radians'),
+  source: z.string().describe('Where the reading comes from: sensor, odometry, simulation'),
+});
+export type ImuData = z.infer<typeof ImuDataSchema>;
+
+/** `sensor.range.data`, streamed only by a device that offers range sensors. */
+export const RangeDataSchema = z.looseObject({
+  front_m: z.number().describe('Range ahead, metres'),
+  left_m: z.number().describe('Range to the left, metres'),
+  right_m: z.number().describe('Range to the right, metres'),
+  source: z.string(),
+});
+export type RangeData = z.infer<typeof RangeDataSchema>;
+
+/** `camera.frame.req`; the reply is {@link CameraFrameSchema}. Size and quality are advisory. */
+export const CameraFrameRequestSchema = z.looseObject({
+  format: z.literal('jpeg').optional(),
+  width: z.number().optional(),
+  height: z.number().optional(),
+  quality: z.number().optional(),
+});
+
+export const CameraFrameSchema = z.looseObject({
+  format: z.literal('jpeg'),
+  data: z.string().describe('Base64 JPEG bytes'),
+  timestamp_ms: z.number(),
+});
+export type CameraFrame = z.infer<typeof CameraFrameSchema>;
+
+/** `system.health.req`; the reply is {@link HealthSchema}. */
+export const HealthRequestSchema = z.looseObject({ include_diagnostics: z.boolean().optional() });
+
+export const HealthSchema = z.looseObject({
+  status: z.enum(['healthy', 'degraded', 'emergency_stopped', 'not_ready']),
+  uptime_s: z.number().describe('Seconds since the gateway started serving'),
+  mode: z.string().describe('simulation, physical or hybrid'),
+  battery_percent: z.number().optional(),
+  temperature_celsius: z.number().optional(),
+  diagnostics: z.looseObject({ errors: z.array(z.string()) }).optional(),
+});
+export type Health = z.infer<typeof HealthSchema>;
+
+/** `system.capability.announce` (published) and the reply to `system.capability.req`. */
+export const CapabilityAnnouncementSchema = z.looseObject({
+  device_type: z.string(),
+  mode: z.string(),
+  caps: z.array(z.string()),
+  state_rate_hz: z.number(),
+});
+export type CapabilityAnnouncement = z.infer<typeof CapabilityAnnouncementSchema>;
+
+/** The spec's error body, as a reply: `{ "error": { code, message, details } }`. */
+export const ErrorReplySchema = z.looseObject({ error: HalErrorPayloadSchema });
+
+/** An acknowledgement of a command sent with a reply inbox. */
+export const AckSchema = z.looseObject({ ok: z.literal(true) });
+
+/** `hal.call.req`: one call of the HAL contract, for NatsHAL. */
+export const HalCallSchema = z.looseObject({
+  request_id: z.string().min(1).max(128).describe('Unique per call; a retry repeats it'),
+  call: z.string().describe('e.g. locomotion.moveTo'),
+  args: z.array(z.unknown()),
+});
+export type HalCall = z.infer<typeof HalCallSchema>;
+
+/** The reply to `hal.call.req`: a result, a value, or an error; plus the safety state after it. */
+export const HalCallReplySchema = z.looseObject({
+  request_id: z.string(),
+  result: z.unknown().optional(),
+  value: z.unknown().optional(),
+  error: HalErrorPayloadSchema.optional(),
+  emergency_stopped: z.boolean(),
+});
+export type HalCallReply = z.infer<typeof HalCallReplySchema>;
+
+/** Schema names written into the envelope's `schema` field. */
+export const SCHEMAS = Object.freeze({
+  differentialCommand: 'hal/motor/differential/cmd/1.0',
+  differentialState: 'hal/motor/differential/state/1.0',
+  imu: 'hal/sensor/imu/data/1.0',
+  range: 'hal/sensor/range/data/1.0',
+  cameraRequest: 'hal/camera/frame/req/1.0',
+  cameraFrame: 'hal/camera/frame/resp/1.0',
+  healthRequest: 'hal/system/health/req/1.0',
+  health: 'hal/system/health/resp/1.0',
+  capabilities: 'hal/system/capability/1.0',
+  estop: 'hal/safety/estop/cmd/1.0',
+  heartbeat: 'hal/system/heartbeat/1.0',
+  call: 'hal/hal/call/req/1.0',
+  callReply: 'hal/hal/call/resp/1.0',
+  ack: 'hal/ack/1.0',
+  error: 'hal/error/1.0',
+} as const);
