@@ -2,7 +2,7 @@ import { fc, it } from '@fast-check/vitest';
 import { MockRobot, PhysicalHAL } from '@hal/physical';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { HalError } from '@hal/types';
+import { HalError, sanitizeEstopReason } from '@hal/types';
 import { afterAll, beforeAll, describe, expect, it as plainIt } from 'vitest';
 import { HAL_CALLS, isToolResult, REFUSABLE_CALLS } from './hal-calls.js';
 import type { HalCall } from './hal-calls.js';
@@ -127,12 +127,14 @@ describe.each(SUBJECTS)('%s', (_name, make) => {
     );
 
     it.prop([fc.oneof(fc.string({ maxLength: 300 }), fc.anything())], { numRuns: 40 })(
-      'answers emergencyStop with any reason with a result that says whether it latched',
+      'latches the emergency stop whatever its reason, and reports the reason as stored',
       async (reason) => {
         const before = s.motions();
         const stop = await s.hal.safety.emergencyStop(reason as string);
         expect(isToolResult(stop, s.hal.mode), fc.stringify(stop)).toBe(true);
-        expect(s.hal.safety.isEmergencyStopped()).toBe(stop.success);
+        expect(stop.success, fc.stringify(stop)).toBe(true);
+        expect(s.hal.safety.isEmergencyStopped()).toBe(true);
+        expect(stop.data?.['reason']).toBe(sanitizeEstopReason(reason));
         const reset = await s.hal.safety.resetEmergencyStop();
         expect(reset.success, fc.stringify(reset)).toBe(true);
         expect(s.hal.safety.isEmergencyStopped()).toBe(false);

@@ -23,8 +23,9 @@ const notANumber = fc.oneof(notANumberGiven, fc.constant(undefined));
 const outside = (min: number, max: number, far = 1e12) =>
   fc.oneof(
     notANumberGiven,
-    fc.double({ min: -far, max: min, noNaN: true, maxExcluded: true }),
-    fc.double({ min: max, max: far, noNaN: true, minExcluded: true }),
+    // the filters drop -0 next to a bound of 0: fast-check orders -0 below 0, JavaScript does not
+    fc.double({ min: -far, max: min, noNaN: true, maxExcluded: true }).filter((v) => v < min),
+    fc.double({ min: max, max: far, noNaN: true, minExcluded: true }).filter((v) => v > max),
   );
 const inside = (min: number, max: number) =>
   fc.double({ min, max, noNaN: true, minExcluded: true, maxExcluded: true });
