@@ -19,6 +19,7 @@ import {
   TRIAL_ACCELERATION,
 } from '../tests/physical/estop-trial.js';
 import type { EstopPath, EstopTrial } from '../tests/physical/estop-trial.js';
+import { reportFigure } from './report/figures.js';
 
 const TRIALS = Number(process.env['ESTOP_TRIALS'] ?? 200);
 const LOST_REPLIES = 2;
@@ -44,7 +45,7 @@ function summary(trials: EstopTrial[]): {
   };
 }
 
-async function runLink(name: string, faults: Faults, seed: number): Promise<void> {
+async function runLink(name: string, faults: Faults, seed: number, lossy: boolean): Promise<void> {
   // the default host timeout: the HAL resends a request every 500 ms, as on a real robot
   const emulator: Emulator = await startEmulator({ pty: false });
   await setAcceleration(emulator.udpPort, TRIAL_ACCELERATION);
@@ -122,9 +123,53 @@ async function runLink(name: string, faults: Faults, seed: number): Promise<void
       `  trials that failed or could not run (${failures.length}): ${failures.join('; ')}`,
     );
   }
+  const roundTrip =
+    rtt === undefined
+      ? 'the round trip was not measured'
+      : `round trip through the link measured in this run: p50 ${fmt(rtt.rttP50Ms)}, p99 ${fmt(rtt.rttP99Ms)}`;
+  const trialsNote =
+    `${results.lane.length} lane and ${results.queued.length} queued trials on the robot's clock, ` +
+    `interleaved, ${LOST_REPLIES} get_status replies lost at the call; ${bad} did not stop and latch, ` +
+    `${failures.length} failed or could not run`;
+  const alternative = (stat: string, value: number) => ({
+    name: `queued path (old: the stop waits for the pending request), ${stat}`,
+    value,
+  });
+  for (const [stat, lanePercentile, queuedPercentile] of [
+    ['p50', lane.p50, queued.p50],
+    ['p99', lane.p99, queued.p99],
+  ] as const) {
+    const p99 = stat === 'p99';
+    reportFigure({
+      bench: 'estop',
+      name: `${name}: emergencyStop() call to motors stopped, safety lane, ${stat}`,
+      value: lanePercentile,
+      unit: 'ms',
+      better: 'lower',
+      alternative: alternative(stat, queuedPercentile),
+      goal: !p99 ? undefined : lossy ? '< 100 ms' : 'within one round trip plus one step period',
+      note: p99
+        ? `${trialsNote}; ${roundTrip}; one step period ${fmt(STEP_PERIOD_MS)}`
+        : trialsNote,
+    });
+  }
+  for (const [stat, lanePercentile, queuedPercentile] of [
+    ['p50', lane.steps50, queued.steps50],
+    ['p99', lane.steps99, queued.steps99],
+  ] as const) {
+    reportFigure({
+      bench: 'estop',
+      name: `${name}: steps after the emergencyStop() call, safety lane, ${stat}`,
+      value: lanePercentile,
+      unit: 'steps',
+      better: 'lower',
+      alternative: alternative(stat, queuedPercentile),
+      note: trialsNote,
+    });
+  }
 }
 
 // ESTOP_LINKS=clean or =lossy runs one link only
 const links = process.env['ESTOP_LINKS'] ?? 'clean,lossy';
-if (links.includes('clean')) await runLink('clean link', {}, 1);
-if (links.includes('lossy')) await runLink('30 % loss both ways', { drop: 0.3 }, 2);
+if (links.includes('clean')) await runLink('clean link', {}, 1, false);
+if (links.includes('lossy')) await runLink('30 % loss both ways', { drop: 0.3 }, 2, true);

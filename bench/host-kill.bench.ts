@@ -4,14 +4,10 @@
 // calls hal.cleanup(), which sends stop), interleaved, with the ratio.
 import { startEmulator } from '../tests/physical/emulator.js';
 import { endHostDuringDrive } from '../tests/physical/host-kill.js';
+import { percentile, reportFigure } from './report/figures.js';
 
 const TRIALS = Number(process.env['KILL_TRIALS'] ?? 8);
 const HOST_TIMEOUT_MS = 500;
-
-function percentile(samples: number[], p: number): number {
-  const sorted = [...samples].sort((a, b) => a - b);
-  return sorted[Math.min(sorted.length - 1, Math.ceil((p / 100) * sorted.length) - 1)] ?? 0;
-}
 
 const emulator = await startEmulator({ hostTimeoutMs: HOST_TIMEOUT_MS, pty: false });
 const delays: Record<'SIGKILL' | 'SIGTERM', number[]> = { SIGKILL: [], SIGTERM: [] };
@@ -42,3 +38,23 @@ console.log(`  SIGTERM (cleanup, stop):  ${line('SIGTERM')}`);
 console.log(
   `  ratio kill/term p50: ${(percentile(delays.SIGKILL, 50) / Math.max(0.1, percentile(delays.SIGTERM, 50))).toFixed(0)}x`,
 );
+for (const [stat, of] of [
+  ['p50', (d: number[]) => percentile(d, 50)],
+  ['max', (d: number[]) => Math.max(...d)],
+] as const) {
+  reportFigure({
+    bench: 'host-kill',
+    name: `host killed (SIGKILL) during an endless drive, end of the host to motors stopped, ${stat}`,
+    value: of(delays.SIGKILL),
+    unit: 'ms',
+    better: 'lower',
+    alternative: {
+      name: `host ended with SIGTERM (cleanup sends stop), ${stat}`,
+      value: of(delays.SIGTERM),
+    },
+    goal: `host timeout + 50 ms (${HOST_TIMEOUT_MS + 50} ms)`,
+    note:
+      `SIGKILL is stopped by the robot's host timeout (${HOST_TIMEOUT_MS} ms here), so it is expected to be ` +
+      `slower than SIGTERM; robot clock, ${TRIALS} trials each, interleaved`,
+  });
+}

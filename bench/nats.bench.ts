@@ -10,31 +10,13 @@ import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { startNatsServer } from '../tests/nats/nats-server.js';
+import { percentile, reportFigure } from './report/figures.js';
 
 const ROUNDS = 1000;
 const WARMUP = 100;
 const STATE_HZ = 20;
 
-function percentile(samples: number[], p: number): number {
-  const sorted = [...samples].sort((a, b) => a - b);
-  return sorted[Math.min(sorted.length - 1, Math.ceil((p / 100) * sorted.length) - 1)] ?? 0;
-}
 const us = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
-
-function figure(
-  name: string,
-  value: number,
-  unit: string,
-  better: 'lower' | 'higher',
-  alternative?: { name: string; value: number },
-): void {
-  const round = (x: number) => Math.round(x * 10) / 10;
-  const alt = alternative
-    ? { alternative: { ...alternative, value: round(alternative.value) } }
-    : {};
-  const line = { kind: 'figure', bench: 'nats', name, value: round(value), unit, better, ...alt };
-  console.log(`BENCH_JSON ${JSON.stringify(line)}`);
-}
 
 /** setLED round trips, a direct call and a NATS call alternating, so both see the same load. */
 async function interleaved(
@@ -59,9 +41,13 @@ async function interleaved(
     const d = percentile(times.direct, p);
     const n = percentile(times.nats, p);
     console.log(`${label}: p${p} direct ${us(d)}, through NATS ${us(n)} (${(n / d).toFixed(1)}x)`);
-    figure(`${label} command p${p} through NATS`, n * 1000, 'us', 'lower', {
-      name: 'direct call',
-      value: d * 1000,
+    reportFigure({
+      bench: 'nats',
+      name: `${label} command p${p} through NATS`,
+      value: n * 1000,
+      unit: 'us',
+      better: 'lower',
+      alternative: { name: 'direct call', value: d * 1000 },
     });
   }
 }
@@ -154,12 +140,13 @@ async function capacity(url: string): Promise<void> {
   console.log(
     `one gateway process serves ${served} simulated robots at ${STATE_HZ} Hz state${bound}`,
   );
-  figure(
-    `simulated robots served at ${STATE_HZ} Hz state by one gateway process`,
-    served,
-    'robots',
-    'higher',
-  );
+  reportFigure({
+    bench: 'nats',
+    name: `simulated robots served at ${STATE_HZ} Hz state by one gateway process`,
+    value: served,
+    unit: 'robots',
+    better: 'higher',
+  });
 }
 
 const server = await startNatsServer();

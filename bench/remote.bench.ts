@@ -1,18 +1,14 @@
 // The cost of the WebSocket hop: one call through RemoteHAL (client, socket on 127.0.0.1, server,
 // envelope and zod checks both ways) beside the same call made directly on the same HAL, the two
-// interleaved in one run. Prints p50/p99 and the ratio, and BENCH_JSON figure lines.
+// interleaved in one run. Prints p50/p99 and the ratio, and reports them as figures.
 import { RemoteHAL } from '@hal/remote';
 import { serveHal } from '@hal/remote/server';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { percentile, reportFigure } from './report/figures.js';
 
 const ROUNDS = 2000;
 const WARMUP = 200;
-
-function percentile(samples: number[], p: number): number {
-  const sorted = [...samples].sort((a, b) => a - b);
-  return sorted[Math.min(sorted.length - 1, Math.ceil((p / 100) * sorted.length) - 1)] ?? 0;
-}
 
 const fmt = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
 
@@ -68,17 +64,14 @@ for (const [name, call] of CALLS) {
     ['p50', r50, d50],
     ['p99', r99, d99],
   ] as const) {
-    console.log(
-      `BENCH_JSON ${JSON.stringify({
-        kind: 'figure',
-        bench: 'remote',
-        name: `${name} through RemoteHAL ${stat}`,
-        value: Number((value * 1000).toFixed(1)),
-        unit: 'us',
-        better: 'lower',
-        alternative: { name: `${name} direct ${stat}`, value: Number((base * 1000).toFixed(1)) },
-      })}`,
-    );
+    reportFigure({
+      bench: 'remote',
+      name: `${name} through RemoteHAL ${stat}`,
+      value: value * 1000,
+      unit: 'us',
+      better: 'lower',
+      alternative: { name: `${name} direct ${stat}`, value: base * 1000 },
+    });
   }
 }
 

@@ -4,6 +4,7 @@
 // after warm-up and at the end. SOAK_COUNT and SOAK_ROUNDS change the size.
 import { runSoak } from '../tests/physical/soak.js';
 import type { SoakLink, SoakReport } from '../tests/physical/soak.js';
+import { reportFigure } from './report/figures.js';
 
 const COUNT = Number(process.env['SOAK_COUNT'] ?? 10_000);
 const ROUNDS = Number(process.env['SOAK_ROUNDS'] ?? 2);
@@ -40,3 +41,63 @@ const p50 = (link: SoakLink) => median(reports.filter((r) => r.link === link).ma
 console.log(
   `ratio serial/udp: throughput ${(rate('serial') / rate('udp')).toFixed(2)}x, p50 latency ${(p50('serial') / p50('udp')).toFixed(2)}x`,
 );
+
+// The figures, per link: the median of the rounds for speed and latency, the round whose memory
+// grew most for RSS, and the lost replies of all rounds.
+const MB = 1048576;
+for (const link of ['udp', 'serial'] as SoakLink[]) {
+  const runs = reports.filter((r) => r.link === link);
+  const of = (value: (r: SoakReport) => number) => median(runs.map(value));
+  const rounds = `median of ${runs.length} rounds of ${COUNT} commands, each a fresh host process and emulator (time scale ${TIME_SCALE}), udp and serial interleaved`;
+  reportFigure({
+    bench: 'soak',
+    name: `${link}: commands through PhysicalHAL per second`,
+    value: of((r) => r.perSecond),
+    unit: 'commands/s',
+    better: 'higher',
+    note: rounds,
+  });
+  for (const [stat, value] of [
+    ['p50', (r: SoakReport) => r.p50Ms],
+    ['p99', (r: SoakReport) => r.p99Ms],
+  ] as const) {
+    reportFigure({
+      bench: 'soak',
+      name: `${link}: single-request call latency ${stat}`,
+      value: of(value),
+      unit: 'ms',
+      better: 'lower',
+      note: rounds,
+    });
+  }
+  for (const [process, rss] of [
+    ['host', (r: SoakReport) => r.host],
+    ['emulator', (r: SoakReport) => r.emulator],
+  ] as const) {
+    const worst = runs.reduce<SoakReport | undefined>(
+      (a, r) =>
+        a === undefined || rss(r).rssEnd / rss(r).rssStart > rss(a).rssEnd / rss(a).rssStart
+          ? r
+          : a,
+      undefined,
+    );
+    if (worst === undefined) continue;
+    reportFigure({
+      bench: 'soak',
+      name: `${link}: ${process} RSS at the end`,
+      value: rss(worst).rssEnd / MB,
+      unit: 'MB',
+      better: 'lower',
+      alternative: { name: 'at start (after warm-up)', value: rss(worst).rssStart / MB },
+      note: `the round (of ${runs.length}) whose ${process} memory grew most, ${COUNT} commands${process === 'host' ? ', after a full GC' : ''}`,
+    });
+  }
+  reportFigure({
+    bench: 'soak',
+    name: `${link}: lost replies (requests given up after every attempt)`,
+    value: runs.reduce((sum, r) => sum + r.timeouts, 0),
+    unit: 'replies',
+    better: 'lower',
+    note: `all ${runs.length} rounds of ${COUNT} commands`,
+  });
+}
