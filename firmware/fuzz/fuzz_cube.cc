@@ -90,7 +90,7 @@ bool KnownCode(const std::string& code) {
       "MALFORMED",         "UNKNOWN_COMMAND",  "INVALID_PARAMETER",
       "RANGE_EXCEEDED",    "EMERGENCY_STOPPED", "STALE_SEQUENCE",
       "SESSION_MISMATCH",  "AUTH_FAILED",      "HARDWARE_ERROR",
-      "NOT_IMPLEMENTED",   "TIMEOUT"};
+      "NOT_IMPLEMENTED",   "TIMEOUT",          "INTERRUPTED"};
   for (const char* c : kCodes) {
     if (code == c) return true;
   }

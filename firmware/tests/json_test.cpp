@@ -216,3 +216,12 @@ TEST(JsonWriter, ReportsOverflowInsteadOfWritingPastTheBuffer) {
 
 }  // namespace
 }  // namespace cube
+
+TEST(Text, SanitizeReasonKeepsWellFormedUtf8AndReplacesAnyOtherByte) {
+  // "é" and "→" kept; a lone continuation byte, a truncated sequence, an
+  // overlong form and a surrogate each become '?'; controls become a space.
+  char s[64] = "caf\xC3\xA9 \xA7 \xE2\x86\x92 \xE2\x86 \xC0\xAF \xED\xA0\x80\r\nend";
+  const size_t n = cube::SanitizeReason(s, std::strlen(s));
+  EXPECT_STREQ(s, "caf\xC3\xA9 ? \xE2\x86\x92 ?? ?? ??? end");
+  EXPECT_EQ(n, std::strlen(s));
+}

@@ -21,22 +21,69 @@ size_t CopyText(char* dst, size_t cap, const char* src, size_t len) {
   return n;
 }
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no
+// overlong forms, no surrogates, nothing above U+10FFFF), or 0.
+size_t Utf8SequenceAt(const unsigned char* s, size_t i, size_t len) {
+  const unsigned char c = s[i];
+  if (c < 0x80) return 1;
+  size_t n = 0;
+  unsigned char lo = 0x80;
+  unsigned char hi = 0xBF;
+  if (c >= 0xC2 && c <= 0xDF) {
+    n = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    n = 3;
+    if (c == 0xE0) lo = 0xA0;
+    if (c == 0xED) hi = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    n = 4;
+    if (c == 0xF0) lo = 0x90;
+    if (c == 0xF4) hi = 0x8F;
+  } else {
+    return 0;
+  }
+  if (i + n > len) return 0;
+  if (s[i + 1] < lo || s[i + 1] > hi) return 0;
+  for (size_t k = 2; k < n; ++k) {
+    if ((s[i + k] & 0xC0) != 0x80) return 0;
+  }
+  return n;
+}
+
+}  // namespace
+
 size_t SanitizeReason(char* s, size_t len) {
+  auto* u = reinterpret_cast<unsigned char*>(s);
   size_t out = 0;
   bool in_control = false;
-  for (size_t i = 0; i < len; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    const bool c1 = c == 0xC2 && i + 1 < len &&
-                    static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
-                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
-    if (c < 0x20 || c == 0x7F || c1) {
-      if (c1) ++i;
-      if (!in_control) s[out++] = ' ';
+  for (size_t i = 0; i < len;) {
+    const unsigned char c = u[i];
+    const size_t n = Utf8SequenceAt(u, i, len);
+    const bool c1 = n == 2 && c == 0xC2 && u[i + 1] <= 0x9F;
+    if (n == 1 && (c < 0x20 || c == 0x7F)) {
+      if (!in_control) u[out++] = ' ';
       in_control = true;
+      ++i;
+      continue;
+    }
+    if (c1) {
+      if (!in_control) u[out++] = ' ';
+      in_control = true;
+      i += 2;
       continue;
     }
     in_control = false;
-    s[out++] = s[i];
+    if (n == 0) {
+      // A byte that is not well-formed UTF-8 (the reply must stay valid
+      // JSON text): one '?' in its place.
+      u[out++] = '?';
+      ++i;
+      continue;
+    }
+    for (size_t k = 0; k < n; ++k) u[out++] = u[i + k];
+    i += n;
   }
   size_t start = 0;
   while (start < out && s[start] == ' ') ++start;

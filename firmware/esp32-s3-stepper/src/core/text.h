@@ -17,7 +17,7 @@ size_t CopyText(char* dst, size_t cap, const char* src, size_t len);
 
 // Replaces each run of control characters in s[0..len) (bytes 0x00..0x1F and
 // 0x7F, and the two-byte UTF-8 C1 controls U+0080..U+009F) with one space,
-// trims spaces at both ends, moves the text to the front of `s`, terminates
+// each byte that is not well-formed UTF-8 with '?', trims spaces at both ends, moves the text to the front of `s`, terminates
 // it and returns its new length (protocol 1.1, section 5.12).
 size_t SanitizeReason(char* s, size_t len);
 
