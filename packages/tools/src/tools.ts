@@ -7,6 +7,25 @@ import { toolParameters } from './json-schema.js';
 import type { JsonSchemaObject } from './json-schema.js';
 import { robotConfigOf } from './robot-config.js';
 
+/**
+ * The e-stop's parameters: the HAL never refuses an e-stop for its argument (any reason is stored
+ * sanitized, a missing one becomes the default), so nothing is required and no length is a limit;
+ * the reason's type and description still tell the model what to send.
+ */
+function neverRefused(schema: JsonSchemaObject): JsonSchemaObject {
+  const properties = Object.fromEntries(
+    Object.entries(schema.properties).map(([name, { type, description }]) => [
+      name,
+      {
+        ...(type === undefined ? {} : { type }),
+        ...(description === undefined ? {} : { description }),
+      },
+    ]),
+  );
+  const { required: _required, ...rest } = schema;
+  return { ...rest, properties };
+}
+
 /** One HAL call as an LLM tool. */
 export interface HalTool {
   /** Stable, snake_case, e.g. 'move_forward', 'get_pose', 'emergency_stop'. */
@@ -60,7 +79,8 @@ export function halTools(hal: HardwareAbstractionLayer, options: HalToolsOptions
       !(options.exclude ?? []).includes(entry.name),
   ).map((entry) => {
     const schema = schemas[entry.call] as z.ZodType;
-    const inputSchema = toolParameters(schema);
+    const inputSchema =
+      entry.safety === 'estop' ? neverRefused(toolParameters(schema)) : toolParameters(schema);
     return {
       name: entry.name,
       call: entry.call as CallName | ReadCallName,
