@@ -28,6 +28,23 @@ interface Published {
   files: string[];
 }
 
+/** Whether every entry of a package resolves only for Node (a `node` condition, no `import`). */
+function nodeOnly(manifest: { exports?: Record<string, unknown> }): boolean {
+  const entries = Object.values(manifest.exports ?? {});
+  return (
+    entries.length > 0 &&
+    entries.every(
+      (entry) =>
+        typeof entry === 'object' &&
+        entry !== null &&
+        'node' in entry &&
+        !('import' in entry) &&
+        !('default' in entry) &&
+        !('browser' in entry),
+    )
+  );
+}
+
 /** The version of three the workspace uses: the one a user's app adds for the scene binding. */
 function threeVersion(): string {
   const manifest = join(repoRoot, 'packages/simulation/node_modules/three/package.json');
@@ -134,9 +151,13 @@ describe('the packages as published', () => {
   }, 120_000);
 
   it('bundles the library packages for a browser with no Node built-in and no native module in it', async () => {
-    // Packages that ship a command are Node programs; every other package is a library a browser
-    // may import. A subpath beyond the main entry is bundled when the package's peers are installed.
-    const libraries = published.filter((p) => p.manifest.bin === undefined);
+    // Packages that ship a command are Node programs, and so are those whose entries resolve only
+    // under the `node` export condition (@hal/nats: its NATS transport is Node's); every other
+    // package is a library a browser may import. A subpath beyond the main entry is bundled when
+    // the package's peers are installed.
+    const libraries = published.filter(
+      (p) => p.manifest.bin === undefined && !nodeOnly(p.manifest),
+    );
     const specifiers = libraries.flatMap(({ manifest }) => {
       const peers = Object.keys(manifest.peerDependencies ?? {});
       const peersInstalled = peers.every((peer) =>
