@@ -49,6 +49,71 @@ describe('RemoteHAL', () => {
     expect(driver.safety.isEmergencyStopped()).toBe(false);
   });
 
+  it('latches an e-stop before initialize() on the host, and sends it to the server before reporting ready', async () => {
+    const { server, sim } = await served();
+    const hal = remote({ url: server.url });
+    const stop = await hal.safety.emergencyStop('cliff\u0007ahead  ');
+    expect(stop).toMatchObject({
+      success: true,
+      data: { estop: true, reason: 'cliff ahead', delivered: false },
+    });
+    expect(hal.safety.isEmergencyStopped()).toBe(true);
+    expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe('cliff ahead');
+    expect(sim.safety.isEmergencyStopped()).toBe(false);
+    await hal.initialize();
+    expect(sim.safety.isEmergencyStopped()).toBe(true);
+    expect(sim.safety.getSafetyStatus().emergencyStopReason).toBe('cliff ahead');
+    expect(hal.safety.getSafetyStatus()).toMatchObject({
+      emergencyStopped: true,
+      emergencyStopReason: 'cliff ahead',
+    });
+    expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+    expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+    expect(hal.safety.isEmergencyStopped()).toBe(false);
+    expect(sim.safety.isEmergencyStopped()).toBe(false);
+    expect((await hal.locomotion.moveForward(1)).success).toBe(true);
+  });
+
+  it('latches an e-stop after cleanup() with its reason sanitized, and reports the sanitized reason with a link', async () => {
+    const { server } = await served();
+    const hal = remote({ url: server.url });
+    await hal.initialize();
+    const live = await hal.safety.emergencyStop(' too\r\nclose ');
+    expect(live).toMatchObject({ success: true, data: { reason: 'too close', delivered: true } });
+    expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe('too close');
+    expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+    await hal.cleanup();
+    const stop = await hal.safety.emergencyStop(7 as unknown as string);
+    expect(stop).toMatchObject({ success: true, data: { reason: '7', delivered: false } });
+    expect(hal.safety.isEmergencyStopped()).toBe(true);
+    expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe('7');
+  });
+
+  it('keeps an e-stop made while the server is away latched here, and sends it on reconnection', async () => {
+    const sim = new SimulationHAL();
+    await sim.initialize();
+    cleanups.push(() => sim.cleanup());
+    let server = await serveHal(sim, { port: 0 });
+    const port = server.address.port;
+    const hal = remote({ url: server.url, reconnectDelayMs: 50 });
+    await hal.initialize();
+    await server.close();
+    await vi.waitFor(() => expect(hal.isReady()).toBe(false), { timeout: 2000 });
+    expect(await hal.safety.emergencyStop('link down')).toMatchObject({
+      success: true,
+      data: { reason: 'link down', delivered: false },
+    });
+    expect(hal.safety.isEmergencyStopped()).toBe(true);
+    server = await serveHal(sim, { port });
+    cleanups.push(() => server.close());
+    await vi.waitFor(() => expect(sim.safety.isEmergencyStopped()).toBe(true), { timeout: 5000 });
+    expect(sim.safety.getSafetyStatus().emergencyStopReason).toBe('link down');
+    expect(hal.safety.isEmergencyStopped()).toBe(true);
+    expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
+    expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
+    expect(hal.safety.isEmergencyStopped()).toBe(false);
+  });
+
   it('refuses motion from a watcher with NOT_CONTROLLER until it takes control, and tells the old controller', async () => {
     const { server } = await served();
     const first = remote({ url: server.url });

@@ -7,6 +7,8 @@ import {
   READ_RESULT_SCHEMAS,
   failureResult,
   isHalError,
+  sanitizeEstopReason,
+  successResult,
 } from '@hal/types';
 import type {
   CallName,
@@ -39,6 +41,15 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     Pick<RemoteHALOptions, 'token' | 'WebSocket'>;
   readonly #link: Connection;
   #initialized = false;
+  /**
+   * The host's e-stop latch: the sanitized reason of an `emergencyStop()` the server has not yet
+   * confirmed (called before `initialize()`, after `cleanup()`, or while the link was down). It
+   * refuses motion here at once; the next connection sends it to the server, and once the served
+   * HAL has latched, the served state says so. An accepted `resetEmergencyStop()` clears it.
+   */
+  #hostEstop: string | undefined;
+  /** The e-stop being sent to the server, if one is on its way. */
+  #delivering: Promise<boolean> | undefined;
 
   constructor(options: RemoteHALOptions) {
     this.#options = { ...REMOTE_DEFAULTS, logger: silentRemoteLogger, ...options };
@@ -85,8 +96,8 @@ export class RemoteHAL implements HardwareAbstractionLayer {
       log: (message: string, level?: HALLogLevel) => this.#remoteLog(message, level),
     } as CommunicationInterface;
     this.safety = {
-      emergencyStop: result('emergencyStop'),
-      resetEmergencyStop: result('resetEmergencyStop'),
+      emergencyStop: (reason?: unknown) => this.#emergencyStop(reason),
+      resetEmergencyStop: () => this.#resetEmergencyStop(),
       isEmergencyStopped: () => this.#cachedSafety().emergencyStopped,
       getSafetyStatus: () => this.#cachedSafety(),
     } as SafetyInterface;
@@ -119,6 +130,11 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     try {
       await this.#link.open();
       if (this.#options.control === 'take') await this.takeControl();
+      // emergencyStop() was called before initialize() (or after a cleanup, or while the link was
+      // down): latch the served HAL too before reporting ready
+      if (this.#hostEstop !== undefined && !(await this.#deliverEstop())) {
+        throw new HalError('NOT_CONNECTED', 'could not send the pending emergency stop');
+      }
     } catch (e) {
       this.#initialized = false;
       this.#link.close();
@@ -151,11 +167,96 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     if (this.#options.control === 'take' && this.#initialized && this.#link.role !== 'controller') {
       this.takeControl().catch(() => undefined);
     }
+    // a reconnection: send an e-stop the server has not confirmed (initialize() sends its own)
+    if (this.#initialized && this.#hostEstop !== undefined && this.isReady()) {
+      void this.#deliverEstop();
+    }
   }
 
   #cachedSafety(): SafetyStatus {
-    const safety = this.#link.safety ?? UNKNOWN_SAFETY;
-    return { ...safety, errors: [...safety.errors] };
+    const served = this.#link.safety ?? UNKNOWN_SAFETY;
+    const safety: SafetyStatus = { ...served, errors: [...served.errors] };
+    if (served.emergencyStopReason !== undefined) {
+      safety.emergencyStopReason = sanitizeEstopReason(served.emergencyStopReason);
+    }
+    if (this.#hostEstop !== undefined) {
+      safety.emergencyStopped = true;
+      if (!served.emergencyStopped || safety.emergencyStopReason === undefined) {
+        safety.emergencyStopReason = this.#hostEstop;
+      }
+    }
+    return safety;
+  }
+
+  /**
+   * Never refused: latches on the host at once, then sends the sanitized reason to the server if
+   * connected. Without a link it succeeds with `delivered: false`; the next connection sends it.
+   */
+  async #emergencyStop(reason: unknown): Promise<HALToolResult> {
+    const started = Date.now();
+    const stored = sanitizeEstopReason(reason);
+    this.#hostEstop = stored;
+    if (this.isReady()) {
+      try {
+        const result = await this.#send('emergencyStop', [stored]);
+        if (result.success) {
+          if (this.#hostEstop === stored) this.#hostEstop = undefined; // the served HAL holds it
+          const data: Record<string, unknown> = { ...result.data, delivered: true };
+          if (typeof data['reason'] === 'string')
+            data['reason'] = sanitizeEstopReason(data['reason']);
+          return { ...result, data };
+        }
+        writeLog(
+          this.#options.logger,
+          'warn',
+          'hal:remote:client',
+          'the server refused an e-stop',
+          {
+            error: result.error,
+          },
+        );
+      } catch (e) {
+        writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'e-stop not delivered', {
+          error: String(e),
+        });
+      }
+    }
+    return successResult(
+      this.mode,
+      Date.now(),
+      { estop: true, reason: stored, delivered: false },
+      Date.now() - started,
+    );
+  }
+
+  /** Sends the host's latch to the server; true once the served HAL has it. */
+  #deliverEstop(): Promise<boolean> {
+    const reason = this.#hostEstop;
+    if (reason === undefined) return Promise.resolve(true);
+    this.#delivering ??= (async () => {
+      try {
+        const result = await this.#send('emergencyStop', [reason]);
+        if (!result.success) return false;
+        if (this.#hostEstop === reason) this.#hostEstop = undefined;
+        return true;
+      } catch (e) {
+        writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'e-stop not delivered', {
+          error: String(e),
+        });
+        return false;
+      } finally {
+        this.#delivering = undefined;
+      }
+    })();
+    return this.#delivering;
+  }
+
+  /** Clears the served HAL's latch, and the host's once the server accepts. */
+  async #resetEmergencyStop(): Promise<HALToolResult> {
+    if (this.#delivering !== undefined) await this.#delivering;
+    const result = await this.#result('resetEmergencyStop', []);
+    if (result.success) this.#hostEstop = undefined;
+    return result;
   }
 
   #refusal(): HalError | undefined {
@@ -178,16 +279,31 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     const started = Date.now();
     const refusal = this.#refusal();
     if (refusal !== undefined) return failureResult(this.mode, Date.now(), refusal, 0);
+    if (this.#hostEstop !== undefined && MOTION_CALLS.includes(call as CallName)) {
+      const latched = new HalError(
+        'EMERGENCY_STOPPED',
+        'emergency stop is active: reset it first',
+        {
+          details: { reason: this.#hostEstop },
+        },
+      );
+      return failureResult(this.mode, Date.now(), latched, 0);
+    }
     try {
-      const value = await this.#link.request(call, args, this.#timeout(call));
-      const parsed = HALToolResultSchema.safeParse(value);
-      if (!parsed.success) {
-        throw new HalError('MALFORMED', `the server's "${call}" result is not a HALToolResult`);
-      }
-      return parsed.data as HALToolResult;
+      return await this.#send(call, args);
     } catch (e) {
       return failureResult(this.mode, Date.now(), e, Date.now() - started);
     }
+  }
+
+  /** Runs a result call on the server; rejects if it has no valid answer. */
+  async #send(call: ResultCallName, args: unknown[]): Promise<HALToolResult> {
+    const value = await this.#link.request(call, args, this.#timeout(call));
+    const parsed = HALToolResultSchema.safeParse(value);
+    if (!parsed.success) {
+      throw new HalError('MALFORMED', `the server's "${call}" result is not a HALToolResult`);
+    }
+    return parsed.data as HALToolResult;
   }
 
   async #value(call: ValueCallName, args: unknown[]): Promise<never> {
