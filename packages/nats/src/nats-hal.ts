@@ -1,4 +1,10 @@
-import { HalError, HALToolResultSchema, failureResult } from '@hal/types';
+import {
+  HalError,
+  HALToolResultSchema,
+  failureResult,
+  sanitizeEstopReason,
+  successResult,
+} from '@hal/types';
 import type {
   CommunicationInterface,
   DeviceInfo,
@@ -51,12 +57,25 @@ export type NatsHALOptions = NatsConnectionSource & {
 
 let sequence = 0;
 const STOP_ON_CLEANUP_MS = 2000;
+/** Calls that move the robot: refused at once while the host's e-stop latch is set. */
+const MOTION_CALLS: ReadonlySet<string> = new Set([
+  'locomotion.drive',
+  'locomotion.moveTo',
+  'locomotion.rotate',
+  'locomotion.moveForward',
+  'locomotion.moveBackward',
+]);
 
 /**
  * A {@link HardwareAbstractionLayer} that drives a device through NATS: every call goes to the
  * device's gateway (`serveHalOnNats`) and comes back with the device's own result. The same
  * agent code drives a robot on the desk or one across a building. A device that goes silent is
  * offline: its calls fail NOT_CONNECTED; nothing waits longer than `callTimeoutMs`.
+ *
+ * The e-stop is never refused: it latches on this host at once (motion is refused here whatever
+ * the link does), stores its reason sanitized, and goes to the device with priority. Before
+ * `initialize()` or after `cleanup()` it answers success with `delivered: false`, and the next
+ * `initialize()` latches the device before it reports ready. Only an accepted reset clears it.
  */
 export class NatsHAL implements HardwareAbstractionLayer {
   mode: HALMode = 'simulation';
@@ -72,7 +91,15 @@ export class NatsHAL implements HardwareAbstractionLayer {
   #ready = false;
   #heartbeat: NodeJS.Timeout | undefined;
   #info: DeviceInfo;
-  #estopped = false;
+  /** The device's own latch, as its last reply or state said. */
+  #deviceEstopped = false;
+  /** The reason the device stored, from our e-stop's reply. */
+  #deviceReason: string | undefined;
+  /**
+   * The host's latch (its sanitized reason): set by emergencyStop() before anything is sent,
+   * cleared only by an accepted reset. `initialize()` sends it to the device.
+   */
+  #hostLatch: string | undefined;
   #safety: SafetyStatus = { emergencyStopped: false, batteryLevel: 100, errors: [] };
 
   constructor(options: NatsHALOptions) {
@@ -117,10 +144,10 @@ export class NatsHAL implements HardwareAbstractionLayer {
       log: (message: string, level?: HALLogLevel) => this.#sendLog(message, level),
     };
     this.safety = {
-      emergencyStop: result('safety.emergencyStop'),
-      resetEmergencyStop: result('safety.resetEmergencyStop'),
-      isEmergencyStopped: () => this.#estopped,
-      getSafetyStatus: () => ({ ...this.#safety, emergencyStopped: this.#estopped }),
+      emergencyStop: (reason?: string) => this.#emergencyStop(reason),
+      resetEmergencyStop: () => this.#resetEmergencyStop(),
+      isEmergencyStopped: () => this.#isEstopped(),
+      getSafetyStatus: () => this.#safetyStatus(),
     };
   }
 
@@ -137,7 +164,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
     });
     link.listen('differentialState', (data) => {
       const state = DifferentialStateSchema.safeParse(this.#payload(data));
-      if (state.success) this.#estopped = state.data.emergency_stopped;
+      if (state.success) this.#deviceLatch(state.data.emergency_stopped);
     });
     link.listen('capabilityAnnounce', (data) => {
       const announcement = CapabilityAnnouncementSchema.safeParse(this.#payload(data));
@@ -157,6 +184,24 @@ export class NatsHAL implements HardwareAbstractionLayer {
       throw error instanceof HalError && error.code === 'TIMEOUT'
         ? new HalError('NOT_CONNECTED', 'no device answered the capability query', { cause: error })
         : error;
+    }
+    // an e-stop latched while we were not connected: the device latches too before we are ready
+    const latch = this.#hostLatch;
+    if (latch !== undefined) {
+      try {
+        await this.#deliverEstop(link, latch, Math.min(this.#options.callTimeoutMs ?? 5000, 5000));
+      } catch (error) {
+        link.close();
+        throw error instanceof HalError && error.code !== 'TIMEOUT'
+          ? error
+          : new HalError(
+              'NOT_CONNECTED',
+              'the device did not take the e-stop latched before initialize()',
+              {
+                cause: error,
+              },
+            );
+      }
     }
     this.#link = link;
     this.#ready = true;
@@ -208,11 +253,76 @@ export class NatsHAL implements HardwareAbstractionLayer {
     };
   }
 
+  #isEstopped(): boolean {
+    return this.#deviceEstopped || this.#hostLatch !== undefined;
+  }
+
+  #safetyStatus(): SafetyStatus {
+    const status: SafetyStatus = { ...this.#safety, emergencyStopped: this.#isEstopped() };
+    const reason = this.#deviceReason ?? this.#hostLatch;
+    if (status.emergencyStopped && reason !== undefined) status.emergencyStopReason = reason;
+    return status;
+  }
+
+  /** The device's latch as a reply or its state reports it. */
+  #deviceLatch(estopped: boolean): void {
+    this.#deviceEstopped = estopped;
+    if (!estopped) this.#deviceReason = undefined;
+  }
+
+  async #emergencyStop(reason: unknown): Promise<HALToolResult> {
+    const started = Date.now();
+    const stored = sanitizeEstopReason(reason);
+    this.#hostLatch = stored; // refuse motion at once, whatever the link does
+    const link = this.#link;
+    if (!this.#ready || link === undefined) {
+      // not connected: initialize() sends it to the device before it reports ready
+      const data = { estop: true, reason: stored, delivered: false };
+      return successResult(this.mode, Date.now(), data, Date.now() - started);
+    }
+    try {
+      const result = await this.#deliverEstop(link, stored);
+      const data = { ...result.data, reason: this.#deviceReason ?? stored, delivered: true };
+      return { ...result, data };
+    } catch (error) {
+      return failureResult(this.mode, Date.now(), error, Date.now() - started);
+    }
+  }
+
+  /** Sends an e-stop with priority; throws unless the device took it. */
+  async #deliverEstop(link: DeviceLink, reason: string, timeoutMs?: number) {
+    const reply = await this.#request(link, 'safety.emergencyStop', [reason], timeoutMs);
+    const result = HALToolResultSchema.safeParse(reply.result);
+    if (!result.success) throw new HalError('MALFORMED', 'safety.emergencyStop: no result');
+    if (!result.data.success) throw failureError(result.data as HALToolResult);
+    const stored = result.data.data?.['reason'];
+    this.#deviceReason = typeof stored === 'string' ? stored : reason;
+    return result.data as HALToolResult;
+  }
+
+  async #resetEmergencyStop(): Promise<HALToolResult> {
+    const result = await this.#result('safety.resetEmergencyStop', []);
+    if (result.success) {
+      this.#hostLatch = undefined;
+    }
+    return result;
+  }
+
   async #call(call: string, args: unknown[], timeoutMs?: number) {
     const link = this.#link;
     if (!this.#ready || link === undefined) {
       throw new HalError('NOT_READY', `${call}: the HAL is not initialised (call initialize())`);
     }
+    if (MOTION_CALLS.has(call) && this.#hostLatch !== undefined) {
+      throw new HalError(
+        'EMERGENCY_STOPPED',
+        `${call}: the emergency stop is latched; call safety.resetEmergencyStop() first`,
+      );
+    }
+    return this.#request(link, call, args, timeoutMs);
+  }
+
+  async #request(link: DeviceLink, call: string, args: unknown[], timeoutMs?: number) {
     const reply = await link.request(
       'call',
       SCHEMAS.call,
@@ -223,7 +333,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
         ...(timeoutMs === undefined ? {} : { timeoutMs }),
       },
     );
-    this.#estopped = reply.emergency_stopped;
+    this.#deviceLatch(reply.emergency_stopped);
     if (reply.error !== undefined) throw errorFromPayload(reply.error);
     return reply;
   }
@@ -258,4 +368,11 @@ export class NatsHAL implements HardwareAbstractionLayer {
       this.#log.warn('log not sent', { error: String(error) });
     }
   }
+}
+
+/** The error a failed result reports, as a HalError. */
+function failureError(result: HALToolResult): HalError {
+  return new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'the call failed', {
+    ...(result.details === undefined ? {} : { details: result.details }),
+  });
 }
