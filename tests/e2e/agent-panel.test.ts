@@ -3,21 +3,12 @@
 // the simulated robot, and a run the Stop button ends with the robot standing still. Every
 // request the page makes goes to its own origin or to the endpoint, and only the endpoint gets
 // the key.
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import type { BrowserContext, Page } from 'playwright-core';
-import { build, preview } from 'vite';
-import type { PreviewServer } from 'vite';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startFakeOpenAIServer } from '../helpers/fake-openai-server.js';
 import type { FakeOpenAIServer } from '../helpers/fake-openai-server.js';
-import { requireChromium } from './chromium.js';
-
-const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
-const demoRoot = join(repoRoot, 'apps/sim-demo');
+import { openDemoInChromium } from './demo-browser.js';
+import type { DemoBrowser } from './demo-browser.js';
 
 interface AgentHooks {
   agentRunning(): boolean;
@@ -30,63 +21,23 @@ const call = (name: string, args: Record<string, unknown> = {}) => ({
 });
 
 describe('the sim-demo Agent panel in Chromium', () => {
-  let server: PreviewServer;
+  let demo: DemoBrowser;
   let endpoint: FakeOpenAIServer;
-  let context: BrowserContext;
   let page: Page;
-  let outDir: string;
-  let profile: string;
-  const problems: string[] = [];
   const requests: Array<{ url: string; authorization: string | undefined }> = [];
 
   beforeAll(async () => {
-    const executablePath = requireChromium();
-    outDir = mkdtempSync(join(tmpdir(), 'agent-panel-build-'));
-    profile = mkdtempSync(join(tmpdir(), 'agent-panel-profile-'));
     endpoint = await startFakeOpenAIServer([{ content: 'unused' }]);
-    await build({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir, emptyOutDir: true },
-    });
-    server = await preview({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir },
-      preview: { host: '127.0.0.1', port: 0, strictPort: false },
-    });
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath,
-      headless: true,
-      viewport: { width: 1400, height: 1000 },
-      args: [
-        '--headless',
-        '--no-sandbox',
-        '--disable-gpu',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--disable-sync',
-        '--no-first-run',
-      ],
-    });
-    page = context.pages()[0] ?? (await context.newPage());
-    page.on('console', (message) => {
-      if (message.type() === 'error') problems.push(`console.error: ${message.text()}`);
-    });
-    page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+    demo = await openDemoInChromium('agent-panel', { width: 1400, height: 1000 });
+    page = demo.page;
     page.on('request', (request) =>
       requests.push({ url: request.url(), authorization: request.headers()['authorization'] }),
     );
   }, 120_000);
 
   afterAll(async () => {
-    await context?.close();
-    await server?.close();
+    await demo?.close();
     await endpoint?.close();
-    if (outDir !== undefined) rmSync(outDir, { recursive: true, force: true });
-    if (profile !== undefined) rmSync(profile, { recursive: true, force: true });
   }, 30_000);
 
   const hooks = () =>
@@ -105,9 +56,8 @@ describe('the sim-demo Agent panel in Chromium', () => {
   }
 
   it('streams the tool calls and results of a run, and Stop ends a run with the robot still', async () => {
-    const url = server.resolvedUrls?.local[0];
-    expect(url, 'the preview server has a URL').toBeDefined();
-    const origin = new URL(url ?? '').origin;
+    const { url } = demo;
+    const origin = new URL(url).origin;
     await page.goto(`${url}?map=obstacles&speed=20`, { waitUntil: 'load', timeout: 30_000 });
     await page.waitForFunction(() => 'simDemo' in window, undefined, { timeout: 20_000 });
     await expect(page.locator('#agent-panel').textContent()).resolves.toContain(
@@ -185,6 +135,6 @@ describe('the sim-demo Agent panel in Chromium', () => {
       if (request.authorization !== undefined) expect(request.url).toContain(endpoint.baseUrl);
     }
     expect(requests.some((r) => r.authorization === 'Bearer sk-browser')).toBe(true);
-    expect(problems).toEqual([]);
+    expect(demo.problems).toEqual([]);
   }, 180_000); // a build, a browser and two runs on a loaded machine
 });

@@ -1,20 +1,12 @@
 // The browser demo's Remote robot card in Chromium: hal-serve (the one command) serves PhysicalHAL
 // to the emulated robot with a token; the page connects with the URL and token fields, drives it
 // through a HybridHAL whose twin is the page's simulated robot, and shows their divergence.
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import type { BrowserContext, Page } from 'playwright-core';
-import { build, preview } from 'vite';
-import type { PreviewServer } from 'vite';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import { startHalServe, stopAllHalServes } from '../remote/hal-serve.js';
-import { requireChromium } from './chromium.js';
-
-const demoRoot = join(fileURLToPath(new URL('../..', import.meta.url)), 'apps/sim-demo');
+import { openDemoInChromium } from './demo-browser.js';
+import type { DemoBrowser } from './demo-browser.js';
 
 interface RemoteState {
   connection: string;
@@ -26,50 +18,18 @@ interface RemoteState {
 type Hooked = { simDemo?: { remote(): RemoteState } };
 
 describe('apps/sim-demo Remote robot card in Chromium', () => {
-  let server: PreviewServer;
-  let context: BrowserContext;
+  let demo: DemoBrowser;
   let page: Page;
-  let outDir: string;
-  let profile: string;
-  const problems: string[] = [];
 
   beforeAll(async () => {
-    const executablePath = requireChromium();
-    outDir = mkdtempSync(join(tmpdir(), 'remote-demo-build-'));
-    profile = mkdtempSync(join(tmpdir(), 'remote-demo-profile-'));
-    await build({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir, emptyOutDir: true },
-    });
-    server = await preview({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir },
-      preview: { host: '127.0.0.1', port: 0, strictPort: false },
-    });
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath,
-      headless: true,
-      viewport: { width: 1400, height: 1000 },
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run'],
-    });
-    page = context.pages()[0] ?? (await context.newPage());
-    page.on('console', (message) => {
-      if (message.type() === 'error') problems.push(`console.error: ${message.text()}`);
-    });
-    page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+    demo = await openDemoInChromium('remote-demo', { width: 1400, height: 1000 });
+    page = demo.page;
   }, 90_000);
 
   afterAll(async () => {
-    await context?.close();
-    await server?.close();
+    await demo?.close();
     stopAllHalServes();
     await stopAllEmulators();
-    if (outDir !== undefined) rmSync(outDir, { recursive: true, force: true });
-    if (profile !== undefined) rmSync(profile, { recursive: true, force: true });
   }, 30_000);
 
   const remoteState = () => page.evaluate(() => (window as unknown as Hooked).simDemo?.remote());
@@ -83,9 +43,7 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
         HAL_SERVE_TOKEN: token,
       },
     );
-    const url = server.resolvedUrls?.local[0];
-    expect(url).toBeDefined();
-    await page.goto(`${url}?map=empty`, { waitUntil: 'load', timeout: 20_000 });
+    await page.goto(`${demo.url}?map=empty`, { waitUntil: 'load', timeout: 20_000 });
     await page.waitForFunction(
       () => (window as unknown as Hooked).simDemo !== undefined,
       undefined,
@@ -141,6 +99,6 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
       { timeout: 5_000 },
     );
     // The only console error is the browser's own report of the refused wrong token.
-    expect(problems.filter((p) => !p.includes('not-the-right-token'))).toEqual([]);
+    expect(demo.problems.filter((p) => !p.includes('not-the-right-token'))).toEqual([]);
   }, 150_000);
 });

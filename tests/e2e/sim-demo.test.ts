@@ -2,19 +2,15 @@
 // demo, serves it on a free port, and checks that the page loads without console errors, that
 // keyboard teleop moves the robot, and that clicked goals are reached, by a straight moveTo and
 // by the navigation bridge around an obstacle. Saves a screenshot to artifacts/sim-demo.png.
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
-import type { BrowserContext, Page } from 'playwright-core';
-import { build, preview } from 'vite';
-import type { PreviewServer } from 'vite';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { requireChromium } from './chromium.js';
+import { openDemoInChromium } from './demo-browser.js';
+import type { DemoBrowser } from './demo-browser.js';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
-const demoRoot = join(repoRoot, 'apps/sim-demo');
 const artifacts = join(repoRoot, 'artifacts');
 
 interface DemoHooks {
@@ -31,56 +27,16 @@ declare global {
 }
 
 describe('apps/sim-demo in Chromium', () => {
-  let server: PreviewServer;
-  let context: BrowserContext;
+  let demo: DemoBrowser;
   let page: Page;
-  let outDir: string;
-  let profile: string;
-  const problems: string[] = [];
 
   beforeAll(async () => {
-    const executablePath = requireChromium();
-    outDir = mkdtempSync(join(tmpdir(), 'sim-demo-build-'));
-    profile = mkdtempSync(join(tmpdir(), 'sim-demo-profile-'));
-    await build({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir, emptyOutDir: true },
-    });
-    server = await preview({
-      root: demoRoot,
-      configFile: join(demoRoot, 'vite.config.ts'),
-      logLevel: 'silent',
-      build: { outDir },
-      preview: { host: '127.0.0.1', port: 0, strictPort: false },
-    });
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath,
-      headless: true,
-      viewport: { width: 1400, height: 900 },
-      args: [
-        '--headless',
-        '--no-sandbox',
-        '--disable-gpu',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--disable-sync',
-        '--no-first-run',
-      ],
-    });
-    page = context.pages()[0] ?? (await context.newPage());
-    page.on('console', (message) => {
-      if (message.type() === 'error') problems.push(`console.error: ${message.text()}`);
-    });
-    page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+    demo = await openDemoInChromium('sim-demo');
+    page = demo.page;
   }, 60_000);
 
   afterAll(async () => {
-    await context?.close();
-    await server?.close();
-    if (outDir !== undefined) rmSync(outDir, { recursive: true, force: true });
-    if (profile !== undefined) rmSync(profile, { recursive: true, force: true });
+    await demo?.close();
   }, 30_000);
 
   async function clickGoal(x: number, y: number): Promise<void> {
@@ -99,8 +55,7 @@ describe('apps/sim-demo in Chromium', () => {
   }
 
   it('loads without console errors, moves by keyboard and reaches clicked goals', async () => {
-    const url = server.resolvedUrls?.local[0];
-    expect(url, 'the preview server has a URL').toBeDefined();
+    const { url, problems } = demo;
     // The obstacles map: the robot starts at (-1.8, 0) facing +x, a box spans x -1.1..-0.7.
     await page.goto(`${url}?map=obstacles&speed=20`, { waitUntil: 'load', timeout: 20_000 });
     await page.waitForFunction(() => window.simDemo !== undefined, undefined, { timeout: 15_000 });
