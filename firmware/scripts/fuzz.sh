@@ -9,7 +9,10 @@
 # Targets: json_reader cube_keyless cube_keyed deframer.
 # Env: FUZZ_SECONDS (per target; default splits 60 s), FUZZ_BUILD_DIR,
 # FUZZ_CORPUS_DIR (kept between runs; default inside the build dir),
-# FUZZ_JOBS (build parallelism, default 2).
+# FUZZ_JOBS (build parallelism, default 2), FUZZ_SEED (the bounded run's
+# default is seed 1, so the test command explores the same inputs on every
+# machine and a red run is a finding anyone can reproduce; a run given
+# FUZZ_SECONDS draws a random seed unless FUZZ_SEED is set).
 # Prints the executions per target; exits non-zero on any finding and names
 # the reproducer (a crash-*/leak-*/timeout-*/oom-* file): re-run it with
 #   firmware/build-fuzz/fuzz_<target> <file>
@@ -52,6 +55,14 @@ if ! cmake --build "$build" -j "$jobs" >"$log" 2>&1; then
   exit 1
 fi
 
+if [ -n "${FUZZ_SEED:-}" ]; then
+  seed=$FUZZ_SEED
+elif [ -n "${FUZZ_SECONDS:-}" ]; then
+  seed=0 # libFuzzer picks one
+else
+  seed=1
+fi
+
 mkdir -p "$artifacts"
 failed=0
 for t in $targets; do
@@ -70,7 +81,7 @@ for t in $targets; do
   # shellcheck disable=SC2086 # $regressions is empty or one path
   if "$build/fuzz_$t" "$corpus" "$build/seeds/$t" $regressions \
     -dict="$dict" -max_len="$max_len" -max_total_time="$seconds" \
-    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -seed="$seed" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$artifacts/$t-" >"$log" 2>&1; then
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
     [ -n "$runs" ] || runs=$(sed -n 's/^Done \([0-9]*\) runs.*/\1/p' "$log" | tail -n 1)

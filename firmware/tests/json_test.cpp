@@ -85,6 +85,25 @@ TEST(JsonReader, NumbersAreCorrectlyRoundedLikeStrtod) {
   }
 }
 
+TEST(JsonReader, TrailingZerosAfterThePointChangeNothing) {
+  // Found by fuzzing: the zeros made the mantissa too long for the exact path.
+  const char* samples[] = {"999999.00000000000", "0.50000000000000000000",
+                           "1024.0000000000000000000", "-3.2500000000000000"};
+  for (const char* s : samples) {
+    double d = 0;
+    ASSERT_TRUE(ParseJsonNumber(s, std::strlen(s), &d)) << s;
+    EXPECT_EQ(d, std::strtod(s, nullptr)) << s;
+  }
+  JsonReader reader;
+  const char* msg = "{\"speed\":999999.00000000000}";
+  ASSERT_EQ(reader.Parse(msg, std::strlen(msg)), JsonError::kOk);
+  const JsonField* f = reader.Find("speed");
+  ASSERT_NE(f, nullptr);
+  EXPECT_TRUE(f->is_integer);
+  EXPECT_EQ(f->integer, 999999);
+  EXPECT_EQ(f->number, 999999.0);
+}
+
 TEST(JsonReader, DecodesEscapesAndUnicode) {
   JsonReader r;
   ASSERT_EQ(ParseText(r, R"({"s":"a\"b\\c\/\n\u00e9\ud83d\ude00"})"),

@@ -105,6 +105,13 @@ JsonNumberScan ScanJsonNumber(const char* s, size_t len, size_t* used,
   }
   *used = i;
 
+  // Trailing zeros carry no value: without them a mantissa written with many
+  // (999999.00000000000) still fits the exact fast path below.
+  while (mant != 0 && mant % 10 == 0) {
+    mant /= 10;
+    ++exp10;
+  }
+
   double value;
   if (mant == 0) {
     value = 0.0;
