@@ -104,6 +104,19 @@ TEST(JsonReader, TrailingZerosAfterThePointChangeNothing) {
   EXPECT_EQ(f->number, 999999.0);
 }
 
+TEST(JsonReader, ALargeIntegerReadsAsTheSameDoubleBothWays) {
+  // Found by fuzzing: above 2^53, 50200000000000004 * 10 rounded twice.
+  JsonReader reader;
+  const char* msg = "{\"n\":502000000000000040}";
+  ASSERT_EQ(reader.Parse(msg, std::strlen(msg)), JsonError::kOk);
+  const JsonField* f = reader.Find("n");
+  ASSERT_NE(f, nullptr);
+  ASSERT_TRUE(f->is_integer);
+  EXPECT_EQ(f->integer, 502000000000000040LL);
+  EXPECT_EQ(f->number, static_cast<double>(f->integer));
+  EXPECT_EQ(f->number, std::strtod("502000000000000040", nullptr));
+}
+
 TEST(JsonReader, DecodesEscapesAndUnicode) {
   JsonReader r;
   ASSERT_EQ(ParseText(r, R"({"s":"a\"b\\c\/\n\u00e9\ud83d\ude00"})"),

@@ -154,6 +154,9 @@ JsonNumberScan ScanJsonNumber(const char* s, size_t len, size_t* used,
       out->is_integer = true;
       out->integer =
           neg ? -static_cast<int64_t>(whole) : static_cast<int64_t>(whole);
+      // One correctly rounded conversion: mantissa times a power of ten
+      // rounds twice above 2^53, and the two views must agree.
+      out->number = static_cast<double>(out->integer);
     }
   }
   return JsonNumberScan::kOk;
