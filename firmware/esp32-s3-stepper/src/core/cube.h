@@ -168,6 +168,9 @@ class Cube : private MotionListener {
   // Writes the stop report of `stop` and `estop` replies (protocol 1.1): the
   // last motion, the wheel positions, and when the wheels came to rest.
   void WriteStopReport(JsonWriter& w) const;
+  // Writes the last motion's move_id, move_outcome and steps made
+  // (get_status, and the stop report).
+  void WriteLastMove(JsonWriter& w) const;
   // Writes `"led":{r,g,b,pattern}` (get_status and set_led replies).
   void WriteLed(JsonWriter& w) const;
   void IntegratePending();

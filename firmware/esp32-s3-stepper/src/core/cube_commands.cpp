@@ -126,7 +126,6 @@ void Cube::CmdGetStatus(Reply& r) {
   const uint64_t now = clock_.NowUs();
   motion_.Update(now);
   IntegratePending();
-  const MotionReport& m = motion_.report();
   double lsps = 0;
   double rsps = 0;
   motion_.CurrentSpeeds(now, &lsps, &rsps);
@@ -143,14 +142,7 @@ void Cube::CmdGetStatus(Reply& r) {
   w.Int(motion_.right_position());
   w.Key("running");
   w.Bool(motion_.running());
-  w.Key("move_id");
-  w.Uint(m.move_id);
-  w.Key("move_outcome");
-  w.String(MoveOutcomeName(m.outcome));
-  w.Key("move_left_steps");
-  w.Int(m.done_left);
-  w.Key("move_right_steps");
-  w.Int(m.done_right);
+  WriteLastMove(w);
   w.Key("left_sps");
   w.Double(lsps);
   w.Key("right_sps");
@@ -280,7 +272,7 @@ void Cube::CmdEstop(Reply& r) {
   WriteStopReport(w);
 }
 
-void Cube::WriteStopReport(JsonWriter& w) const {
+void Cube::WriteLastMove(JsonWriter& w) const {
   const MotionReport& m = motion_.report();
   w.Key("move_id");
   w.Uint(m.move_id);
@@ -290,6 +282,10 @@ void Cube::WriteStopReport(JsonWriter& w) const {
   w.Int(m.done_left);
   w.Key("move_right_steps");
   w.Int(m.done_right);
+}
+
+void Cube::WriteStopReport(JsonWriter& w) const {
+  WriteLastMove(w);
   w.Key("left_steps");
   w.Int(motion_.left_position());
   w.Key("right_steps");
