@@ -5,8 +5,8 @@ import { spawn } from 'node:child_process';
 import type { ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
-import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
+import { readEventLines } from './event-lines.js';
 
 /** The emulator binary: `$CUBE_BUILD_DIR/cube-emulator` when that is set (as for test.sh). */
 export const EMULATOR_PATH =
@@ -84,51 +84,9 @@ export async function startEmulator(options: EmulatorOptions = {}): Promise<Emul
   if (options.pty === false) args.push('--no-pty');
   const child = spawn(EMULATOR_PATH, args, { stdio: ['pipe', 'pipe', 'pipe'] });
   running.add(child);
-  const events: EmulatorEvent[] = [];
-  const waiters = new Set<() => void>();
-  let stderr = '';
-  child.stderr.on('data', (chunk: Buffer) => {
-    stderr += chunk.toString();
-  });
-  createInterface({ input: child.stdout }).on('line', (line) => {
-    try {
-      events.push(JSON.parse(line) as EmulatorEvent);
-    } catch {
-      events.push({ event: 'unparsed', line });
-    }
-    for (const wake of waiters) wake();
-  });
+  const { events, waitFor } = readEventLines<EmulatorEvent>(child, 'cube-emulator', 10_000);
   const exited = new Promise<void>((resolve) => child.once('exit', () => resolve()));
-  child.once('exit', () => {
-    running.delete(child);
-    for (const wake of waiters) wake();
-  });
-
-  const waitFor = (match: (e: EmulatorEvent) => boolean, timeoutMs = 10_000) =>
-    new Promise<EmulatorEvent>((resolve, reject) => {
-      const check = () => {
-        const found = events.find(match);
-        if (found !== undefined) {
-          done();
-          resolve(found);
-        } else if (child.exitCode !== null || child.signalCode !== null) {
-          done();
-          reject(
-            new Error(`cube-emulator exited (${child.exitCode ?? child.signalCode}): ${stderr}`),
-          );
-        }
-      };
-      const timer = setTimeout(() => {
-        done();
-        reject(new Error(`cube-emulator: no matching event within ${timeoutMs} ms: ${stderr}`));
-      }, timeoutMs);
-      const done = () => {
-        clearTimeout(timer);
-        waiters.delete(check);
-      };
-      waiters.add(check);
-      check();
-    });
+  child.once('exit', () => running.delete(child));
 
   const ready = await waitFor((e) => e.event === 'ready');
   return {

@@ -4,7 +4,7 @@
 import { spawn } from 'node:child_process';
 import type { ChildProcess } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { createInterface } from 'node:readline';
+import { readEventLines } from './event-lines.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 
@@ -40,50 +40,13 @@ export function startHostProcess(
     { cwd: ROOT, stdio: ['ignore', 'pipe', 'pipe'] },
   );
   running.add(child);
-  const events: HostEvent[] = [];
-  const waiters = new Set<() => void>();
-  let stderr = '';
-  child.stderr.on('data', (chunk: Buffer) => {
-    stderr += chunk.toString();
-  });
-  createInterface({ input: child.stdout }).on('line', (line) => {
-    try {
-      events.push(JSON.parse(line) as HostEvent);
-    } catch {
-      events.push({ event: 'unparsed', line });
-    }
-    for (const wake of waiters) wake();
-  });
+  const { events, waitFor } = readEventLines<HostEvent>(child, script, 20_000);
   const exited = new Promise<number | string>((resolve) =>
     child.once('exit', (code, signal) => {
       running.delete(child);
       resolve(code ?? signal ?? 'unknown');
-      for (const wake of waiters) wake();
     }),
   );
-  const waitFor = (match: (e: HostEvent) => boolean, timeoutMs = 20_000) =>
-    new Promise<HostEvent>((resolve, reject) => {
-      const check = () => {
-        const found = events.find(match);
-        if (found !== undefined) {
-          done();
-          resolve(found);
-        } else if (child.exitCode !== null || child.signalCode !== null) {
-          done();
-          reject(new Error(`${script} exited (${child.exitCode ?? child.signalCode}): ${stderr}`));
-        }
-      };
-      const timer = setTimeout(() => {
-        done();
-        reject(new Error(`${script}: no matching event within ${timeoutMs} ms: ${stderr}`));
-      }, timeoutMs);
-      const done = () => {
-        clearTimeout(timer);
-        waiters.delete(check);
-      };
-      waiters.add(check);
-      check();
-    });
   return {
     pid: child.pid!,
     events,
