@@ -1,0 +1,86 @@
+// The `hal` program: the root command, its shared options, and every subcommand from
+// commands/index.ts. Built fresh per run so tests can run many in one process.
+import { createRequire } from 'node:module';
+import { Command, CommanderError } from 'commander';
+import { isHalError } from '@hal/types';
+import { CliError } from './cli-error.js';
+import { COMMANDS } from './commands/index.js';
+import type { CliIO, GlobalOptions } from './io.js';
+
+// src/ and dist/ both sit one folder below the package's manifest
+const { version } = createRequire(import.meta.url)('../package.json') as { version: string };
+
+/** Builds the program; commander's exits become thrown CommanderErrors. */
+export function buildProgram(io: CliIO): Command {
+  const program = new Command('hal')
+    .description('Drive, serve, find, test and group robots of the HAL (simulated or physical).')
+    .option('--json', 'machine-readable output: JSON lines on stdout, errors as JSON', false)
+    .showHelpAfterError('(run with --help for usage)')
+    .exitOverride()
+    .configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) })
+    .version(version);
+  const global = (): GlobalOptions => ({ json: program.opts<{ json: boolean }>().json });
+  for (const register of COMMANDS) register(program, { io, global });
+  // every subcommand reports its usage errors through the root's output and exits the same way
+  for (const sub of program.commands) {
+    sub.exitOverride().configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) });
+  }
+  return program;
+}
+
+/** The JSON shape of an error with --json. */
+export interface ErrorDocument {
+  error: { code: string; message: string; details?: unknown };
+}
+
+function describeError(error: unknown): { doc: ErrorDocument; exitCode: number } {
+  if (error instanceof CliError) {
+    return {
+      doc: { error: { code: error.code, message: error.message } },
+      exitCode: error.exitCode,
+    };
+  }
+  if (isHalError(error)) {
+    const details = error.details;
+    return {
+      doc: { error: { code: error.code, message: error.message, ...(details ? { details } : {}) } },
+      exitCode: 1,
+    };
+  }
+  const message = error instanceof Error ? error.message : String(error);
+  return { doc: { error: { code: 'FAILED', message } }, exitCode: 1 };
+}
+
+/**
+ * Runs `hal` with `argv` (without node and the script) and resolves its exit code: 0 on success,
+ * 2 on a usage error, 1 on any other failure (written to stderr as `hal: CODE: message`, or as a
+ * JSON error document with --json). Never throws.
+ */
+export async function runHal(argv: readonly string[], io: CliIO): Promise<number> {
+  return runProgram(buildProgram(io), argv, io);
+}
+
+/** Runs an already built program (see {@link runHal}); tests add commands to it first. */
+export async function runProgram(
+  program: Command,
+  argv: readonly string[],
+  io: CliIO,
+): Promise<number> {
+  try {
+    await program.parseAsync([...argv], { from: 'user' });
+    return 0;
+  } catch (error) {
+    if (error instanceof CommanderError) {
+      // help and --version end here too, with exit code 0; usage errors were already written
+      if (error.exitCode === 0) return 0;
+      if (argv.includes('--json')) {
+        io.err(`${JSON.stringify({ error: { code: 'USAGE', message: error.message } })}\n`);
+      }
+      return 2;
+    }
+    const { doc, exitCode } = describeError(error);
+    if (argv.includes('--json')) io.err(`${JSON.stringify(doc)}\n`);
+    else io.err(`hal: ${doc.error.code}: ${doc.error.message}\n`);
+    return exitCode;
+  }
+}
