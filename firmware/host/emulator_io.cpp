@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "announce.h"
+
 namespace cube {
 
 bool IsLoopbackAddress(const std::string& address) {
@@ -124,7 +126,7 @@ void EventLog::Emit(JsonWriter& w, char* buf) {
 void EventLog::Ready(uint16_t udp_port, const std::string& pty,
                      const std::string& device_id, double time_scale,
                      const char* auth, uint64_t uptime_origin_us) {
-  char buf[512];
+  char buf[4096];
   JsonWriter w(buf, sizeof(buf) - 1);
   w.BeginObject();
   w.Key("event");
@@ -145,6 +147,31 @@ void EventLog::Ready(uint16_t udp_port, const std::string& pty,
   // a process on this machine can read the robot's clock (at time scale 1).
   w.Key("uptime_origin_us");
   w.Int(static_cast<int64_t>(uptime_origin_us));
+  // What the robot announces over mDNS (announce.h): there is no mDNS
+  // responder in this program; the host-side announcer (`hal emulate`)
+  // publishes exactly these entries for it (docs/discovery.md).
+  w.Key("mdns");
+  Announcement announcement;
+  if (announcement.Build(cube_)) {
+    w.BeginObject();
+    w.Key("service");
+    char service[32];
+    std::snprintf(service, sizeof(service), "%s.%s", kMdnsService,
+                  kMdnsProto);
+    w.String(service);
+    w.Key("port");
+    w.Uint(udp_port);
+    w.Key("txt");
+    w.BeginObject();
+    for (size_t i = 0; i < announcement.count(); ++i) {
+      w.Key(announcement.entry(i).key);
+      w.String(announcement.entry(i).value);
+    }
+    w.EndObject();
+    w.EndObject();
+  } else {
+    w.Null();
+  }
   Emit(w, buf);
 }
 

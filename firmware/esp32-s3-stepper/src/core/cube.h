@@ -113,6 +113,7 @@ class Cube : private MotionListener {
   // Read-only views, for the board glue and tests.
   const Pose& pose() const { return pose_; }
   const CubeConfig& config() const { return config_; }
+  const char* device_id() const { return device_id_; }
   bool estopped() const { return estop_; }
   uint32_t trips() const { return trips_; }
   const SafetyTrip& last_trip() const { return last_trip_; }

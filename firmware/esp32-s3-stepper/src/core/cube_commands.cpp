@@ -2,6 +2,7 @@
 // get_status, set_config, set_led, estop, reset_estop).
 #include <cstring>
 
+#include "capabilities.h"
 #include "cube.h"
 #include "json_number.h"
 #include "reply.h"
@@ -97,16 +98,9 @@ void Cube::CmdHello(Reply& r) {
   w.String(AuthModeName(auth_));
   w.Key("capabilities");
   w.BeginArray();
-  w.String("locomotion.differential:v1.0");
-  char cap[64] = "locomotion.stepper:v1.0:steps_per_rev=";
-  const size_t base = std::strlen(cap);
-  const size_t k = FormatNumber(config_.geometry.steps_per_revolution,
-                                cap + base, sizeof(cap) - base - 1);
-  cap[base + k] = '\0';
-  w.String(cap);
-  w.String("communication.led:v1.0");
-  w.String("safety.estop:v1.0");
-  w.String("safety.host_timeout:v1.0");
+  CapabilityList caps;
+  ListCapabilities(config_.geometry, &caps);
+  for (size_t i = 0; i < caps.count; ++i) w.String(caps.items[i]);
   w.EndArray();
   w.Key("config");
   WriteConfig(w);
