@@ -5,7 +5,8 @@
 //   - a task pinned to the application core (core 1) reads UDP and serial,
 //     answers requests and keeps the step queue filled (Cube::Poll), and is
 //     watched by the task watchdog;
-//   - WiFi runs on core 0 as usual; loop() only watches the connection.
+//   - WiFi runs on core 0 as usual; loop() watches the connection and, once
+//     it is up, announces the robot with mDNS (docs/discovery.md).
 // The serial port carries protocol frames only, but for one text line at
 // boot, before the link starts, that says how the robot authenticates (a
 // receiver drops it as garbage while hunting for a frame).
@@ -15,10 +16,12 @@
 #include "app.h"
 
 #include <Arduino.h>
+#include <ESPmDNS.h>
 #include <WiFi.h>
 #include <WiFiUdp.h>
 #include <esp_random.h>
 
+#include "../../core/announce.h"
 #include "../../core/cube.h"
 #include "../../core/frame.h"
 #include "board.h"
@@ -68,6 +71,11 @@ class SerialBridge : public cube::LinkHandler {
 };
 SerialBridge bridge;
 
+// Built in setup(), before the cube task runs, from the boot configuration.
+cube::Announcement announcement;
+bool announcement_ok = false;
+bool announced = false;
+
 void ARDUINO_ISR_ATTR OnStepTimer() { robot->Tick(); }
 
 // The key (or the opt-out) was checked when the sketch was compiled
@@ -86,6 +94,25 @@ void ConfigureAuth() {
     // Cannot happen with a checked key; the robot then stays closed.
     Serial.println("cube: ERROR: key not accepted; only stop and estop run");
   }
+}
+
+// Announces `_hal-cube._udp` on the robot's UDP port with the core's TXT
+// entries, under the device id as host and instance name (cube-a1b2c3.local).
+// Once: ESPmDNS follows the WiFi reconnections itself. A failed attempt is
+// undone, and loop() tries again 10 s later.
+void Announce() {
+  if (!announcement_ok || !MDNS.begin(robot->device_id())) return;
+  MDNS.setInstanceName(robot->device_id());
+  if (!MDNS.addService(cube::kMdnsService, cube::kMdnsProto,
+                       cube::board::kUdpPort)) {
+    MDNS.end();
+    return;
+  }
+  for (size_t i = 0; i < announcement.count(); ++i) {
+    MDNS.addServiceTxt(cube::kMdnsService, cube::kMdnsProto,
+                       announcement.entry(i).key, announcement.entry(i).value);
+  }
+  announced = true;
 }
 
 void PollUdp() {
@@ -168,6 +195,7 @@ void CubeAppSetup() {
   static cube::Cube cube_instance(deps, device_id);
   robot = &cube_instance;
   ConfigureAuth();
+  announcement_ok = announcement.Build(*robot);
   static cube::SerialLink link_instance(serial_sink, bridge,
                                         static_cast<uint16_t>(esp_random()));
   serial_link = &link_instance;
@@ -182,8 +210,14 @@ void CubeAppSetup() {
 }
 
 void CubeAppLoop() {
-  // WiFi reconnects by itself; nothing else to do here.
+  // WiFi reconnects by itself; the robot is announced once it is up.
   static unsigned long last_try = 0;  // millis() is unsigned long
+  static unsigned long last_announce = 0;
+  if (WiFi.status() == WL_CONNECTED && !announced &&
+      (last_announce == 0 || millis() - last_announce > 10000)) {
+    last_announce = millis();
+    Announce();
+  }
   if (WiFi.status() != WL_CONNECTED && millis() - last_try > 10000) {
     last_try = millis();
     WiFi.reconnect();
