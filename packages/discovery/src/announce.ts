@@ -62,7 +62,8 @@ export async function announceRobot(options: AnnounceOptions): Promise<Announcer
       new Promise<void>((resolve) => service.once('up', () => resolve())),
       new Promise<never>((_, reject) => {
         timer = setTimeout(
-          () => reject(new HalError('TIMEOUT', `the announcement did not go out in ${timeoutMs} ms`)),
+          () =>
+            reject(new HalError('TIMEOUT', `the announcement did not go out in ${timeoutMs} ms`)),
           timeoutMs,
         );
       }),

@@ -23,7 +23,9 @@ function txtFor(deviceId: string, auth = 'none') {
 
 function recordingLogger() {
   const entries: { level: string; namespace: string; message: string }[] = [];
-  const logger: Logger = { log: (level, namespace, message) => entries.push({ level, namespace, message }) };
+  const logger: Logger = {
+    log: (level, namespace, message) => entries.push({ level, namespace, message }),
+  };
   return { logger, entries };
 }
 
@@ -71,7 +73,9 @@ describe('discoverRobots', () => {
       txt: { ...txtFor(bad), caps: 'not-a-capability' },
       probe: false,
     });
-    cleanups.push(() => new Promise((resolve) => raw.unpublishAll(() => raw.destroy(() => resolve()))));
+    cleanups.push(
+      () => new Promise((resolve) => raw.unpublishAll(() => raw.destroy(() => resolve()))),
+    );
     const { logger, entries } = recordingLogger();
     const robots = await discoverRobots({ timeoutMs: 2500, logger });
     const ids = robots.map((r) => r.deviceId);

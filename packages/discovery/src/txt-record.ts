@@ -35,8 +35,7 @@ export interface RobotAnnouncement {
 }
 
 export type ParsedAnnouncement =
-  | { ok: true; announcement: RobotAnnouncement }
-  | { ok: false; reason: string };
+  { ok: true; announcement: RobotAnnouncement } | { ok: false; reason: string };
 
 /** The capability list, from `caps` and its continuations `caps1`, `caps2`, ... in order. */
 function joinCapabilities(txt: Record<string, unknown>): string[] | string {
