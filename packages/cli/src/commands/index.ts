@@ -2,6 +2,8 @@
 // options shared by all (--json) are read through `global()` when it runs.
 import type { Command } from 'commander';
 import type { CliIO, GlobalOptions } from '../io.js';
+import { registerDiscover } from './discover.js';
+import { registerEmulate } from './emulate.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -14,4 +16,4 @@ export interface CommandContext {
 export type RegisterCommand = (program: Command, ctx: CommandContext) => void;
 
 /** The subcommands, in the order `hal --help` lists them. */
-export const COMMANDS: readonly RegisterCommand[] = [];
+export const COMMANDS: readonly RegisterCommand[] = [registerEmulate, registerDiscover];

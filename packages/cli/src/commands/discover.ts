@@ -1,0 +1,51 @@
+// `hal discover`: lists the robots that announce themselves with mDNS (_hal-cube._udp).
+import { Option } from 'commander';
+import { DEFAULT_DISCOVERY_TIMEOUT_MS, discoverRobots } from '@hal/discovery';
+import type { DiscoverOptions } from '@hal/discovery';
+import { formatRobots } from '../discover/format.js';
+import { intInRange, ipv4Arg } from '../discover/options.js';
+import { emit, progress } from '../io.js';
+import type { RegisterCommand } from './index.js';
+
+interface DiscoverCliOptions {
+  timeout: number;
+  interface?: string;
+}
+
+export const registerDiscover: RegisterCommand = (program, { io, global }) => {
+  program
+    .command('discover')
+    .description('list the robots on the local network (mDNS _hal-cube._udp), within --timeout')
+    .addOption(
+      new Option('--timeout <ms>', 'how long to listen, ms (1..60000)')
+        .argParser(intInRange('--timeout', 1, 60_000))
+        .default(DEFAULT_DISCOVERY_TIMEOUT_MS),
+    )
+    .addOption(
+      new Option(
+        '--interface <address>',
+        'IPv4 address of the network interface to search on (default: the system default)',
+      ).argParser(ipv4Arg('--interface')),
+    )
+    .action(async (options: DiscoverCliOptions) => {
+      const g = global();
+      // a skipped (malformed) announcement is a warning: stderr, also with --json
+      const logger: NonNullable<DiscoverOptions['logger']> = {
+        log: (level, _namespace, message) => {
+          if (level === 'warn' || level === 'error') io.err(`hal discover: ${message}\n`);
+        },
+      };
+      progress(io, g, `listening for robots for ${options.timeout} ms...`);
+      const robots = await discoverRobots({
+        timeoutMs: options.timeout,
+        logger,
+        signal: io.signal,
+        ...(options.interface === undefined ? {} : { mdns: { interface: options.interface } }),
+      });
+      if (g.json) {
+        for (const robot of robots) emit(io, g, robot, () => '');
+      } else {
+        emit(io, g, robots, () => formatRobots(robots, options.timeout));
+      }
+    });
+};

@@ -1,0 +1,102 @@
+// `hal emulate`: runs the emulated robot (cube-emulator, the firmware core on this computer),
+// prints where it listens, announces it with mDNS as the board announces itself (the TXT entries
+// come from the emulator, built by the firmware core), and stops it cleanly on Ctrl-C.
+import { announceRobot, findRobot } from '@hal/discovery';
+import type { Announcer, MdnsOptions } from '@hal/discovery';
+import { CliError } from '../cli-error.js';
+import { addEmulateOptions, emulatorArgs } from '../emulate/emulate-options.js';
+import type { EmulateCliOptions } from '../emulate/emulate-options.js';
+import { startEmulatorProcess } from '../emulate/emulator-process.js';
+import type { ReadyLine } from '../emulate/emulator-process.js';
+import { locateEmulator } from '../emulate/locate-emulator.js';
+import { emit, progress } from '../io.js';
+import type { CliIO, GlobalOptions } from '../io.js';
+import type { RegisterCommand } from './index.js';
+
+/** Announces the emulator unless its device id is already announced on the network. */
+async function announce(ready: ReadyLine, mdns: MdnsOptions): Promise<Announcer> {
+  if (!ready.mdns) throw new CliError('FAILED', 'cube-emulator printed no mDNS announcement');
+  const taken = await findRobot(ready.device_id, { timeoutMs: 1000, mdns }).catch(() => undefined);
+  if (taken !== undefined) {
+    throw new CliError(
+      'FAILED',
+      `a robot "${ready.device_id}" is already announced (${taken.host}, port ${taken.port}): ` +
+        'choose another --device-id',
+    );
+  }
+  return announceRobot({ port: ready.mdns.port, txt: ready.mdns.txt, mdns });
+}
+
+function describeReady(ready: ReadyLine, o: EmulateCliOptions, announced: boolean): string {
+  const lines = [
+    `cube-emulator "${ready.device_id}" listening on udp ${o.bind}:${ready.udp_port}` +
+      (ready.pty === '' ? '' : `, serial ${ready.pty}`) +
+      ` (auth ${ready.auth}, protocol ${ready.protocol_version})`,
+  ];
+  if (announced) {
+    lines.push(
+      `announced as ${ready.mdns?.service ?? '_hal-cube._udp'} (see it with: hal discover)`,
+    );
+    if (o.bind.startsWith('127.'))
+      lines.push('bound to loopback: reachable from this machine only');
+  }
+  lines.push('Ctrl-C stops it');
+  return lines.join('\n');
+}
+
+async function runEmulate(o: EmulateCliOptions, io: CliIO, g: GlobalOptions): Promise<void> {
+  const path = await locateEmulator({
+    ...(o.emulator === undefined ? {} : { explicit: o.emulator }),
+    env: io.env,
+    signal: io.signal,
+    onBuild: (dir) => progress(io, g, `building cube-emulator in ${dir} (if needed)...`),
+  });
+  const emulator = await startEmulatorProcess(path, emulatorArgs(o), (event) =>
+    emit(io, g, event, () => `emulator: ${JSON.stringify(event)}`),
+  );
+  let announcer: Announcer | undefined;
+  try {
+    const mdns: MdnsOptions = o.interface === undefined ? {} : { interface: o.interface };
+    if (o.announce) announcer = await announce(emulator.ready, mdns);
+    emit(
+      io,
+      g,
+      {
+        event: 'ready',
+        deviceId: emulator.ready.device_id,
+        address: o.bind,
+        udpPort: emulator.ready.udp_port,
+        pty: emulator.ready.pty,
+        auth: emulator.ready.auth,
+        protocolVersion: emulator.ready.protocol_version,
+        announced: announcer !== undefined,
+        ...(announcer && emulator.ready.mdns ? { service: emulator.ready.mdns.service } : {}),
+      },
+      () => describeReady(emulator.ready, o, announcer !== undefined),
+    );
+    const stopped = new Promise<void>((resolve) => {
+      if (io.signal.aborted) resolve();
+      io.signal.addEventListener('abort', () => resolve(), { once: true });
+    });
+    const how = await Promise.race([stopped.then(() => undefined), emulator.exited]);
+    if (how !== undefined) {
+      throw new CliError(
+        'FAILED',
+        `cube-emulator exited (${how.code ?? how.signal}): ${how.stderr.trim() || 'no message'}`,
+      );
+    }
+    progress(io, g, 'stopping...');
+  } finally {
+    await announcer?.stop();
+    await emulator.stop();
+  }
+  emit(io, g, { event: 'stopped', deviceId: emulator.ready.device_id }, () => 'stopped');
+}
+
+export const registerEmulate: RegisterCommand = (program, { io, global }) => {
+  addEmulateOptions(
+    program
+      .command('emulate')
+      .description('run the emulated robot (cube-emulator) and announce it on the local network'),
+  ).action((options: EmulateCliOptions) => runEmulate(options, io, global()));
+};

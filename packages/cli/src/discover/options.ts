@@ -1,0 +1,26 @@
+// Option parsers shared by `hal discover` and `hal emulate`.
+import { InvalidArgumentError } from 'commander';
+
+/** An integer in min..max, quoted in the error. */
+export function intInRange(name: string, min: number, max: number) {
+  return (value: string): number => {
+    const n = Number(value);
+    if (!/^\d+$/.test(value.trim()) || !Number.isSafeInteger(n) || n < min || n > max) {
+      throw new InvalidArgumentError(
+        `"${name}" must be an integer in ${min}..${max}, got "${value}"`,
+      );
+    }
+    return n;
+  };
+}
+
+/** An IPv4 address (dotted quad). */
+export function ipv4Arg(name: string) {
+  return (value: string): string => {
+    const parts = value.split('.');
+    if (parts.length !== 4 || parts.some((p) => !/^\d{1,3}$/.test(p) || Number(p) > 255)) {
+      throw new InvalidArgumentError(`"${name}" must be an IPv4 address, got "${value}"`);
+    }
+    return value;
+  };
+}

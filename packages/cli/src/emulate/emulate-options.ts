@@ -1,0 +1,94 @@
+// `hal emulate`'s options, and the cube-emulator flags they become.
+import { InvalidArgumentError, Option } from 'commander';
+import type { Command } from 'commander';
+import { intInRange, ipv4Arg } from '../discover/options.js';
+import { deviceIdArg } from '../nats-options.js';
+
+export interface EmulateCliOptions {
+  udpPort: number;
+  bind: string;
+  deviceId: string;
+  key?: string;
+  insecure: boolean;
+  timeScale?: number;
+  hostTimeoutMs?: number;
+  pty: boolean;
+  announce: boolean;
+  emulator?: string;
+  interface?: string;
+}
+
+function timeScaleArg(value: string): number {
+  const n = Number(value);
+  if (value.trim() === '' || !(n > 0 && n <= 1000)) {
+    throw new InvalidArgumentError(`"--time-scale" must be a number in (0, 1000], got "${value}"`);
+  }
+  return n;
+}
+
+function keyArg(value: string): string {
+  if (!/^([0-9a-fA-F]{2}){1,64}$/.test(value)) {
+    throw new InvalidArgumentError('"--key" must be 1..64 bytes written as hex');
+  }
+  return value;
+}
+
+export function addEmulateOptions(command: Command): Command {
+  return command
+    .addOption(
+      new Option('--udp-port <port>', 'UDP port (0 = a free one)')
+        .argParser(intInRange('--udp-port', 0, 65_535))
+        .default(4210),
+    )
+    .addOption(
+      new Option(
+        '--bind <address>',
+        'IPv4 address to listen on; not loopback needs --key or --insecure',
+      )
+        .argParser(ipv4Arg('--bind'))
+        .default('127.0.0.1'),
+    )
+    .addOption(
+      new Option('--device-id <id>', 'the robot device id (announced, and reported by hello)')
+        .argParser(deviceIdArg)
+        .default('cube-emulator'),
+    )
+    .addOption(
+      new Option('--key <hex>', 'pre-shared key: requests must be MACed').argParser(keyArg),
+    )
+    .addOption(new Option('--insecure', 'allow a non-loopback --bind without --key').default(false))
+    .addOption(
+      new Option('--time-scale <x>', "run the robot's clock x times faster").argParser(
+        timeScaleArg,
+      ),
+    )
+    .addOption(
+      new Option('--host-timeout-ms <ms>', 'host timeout, 500..10000').argParser(
+        intInRange('--host-timeout-ms', 500, 10_000),
+      ),
+    )
+    .option('--no-pty', 'do not open a pseudo-terminal for the serial link')
+    .option('--no-announce', 'do not announce the robot with mDNS')
+    .addOption(
+      new Option(
+        '--emulator <path>',
+        'the cube-emulator program (default $CUBE_EMULATOR, else built)',
+      ),
+    )
+    .addOption(
+      new Option('--interface <address>', 'IPv4 address of the interface to announce on').argParser(
+        ipv4Arg('--interface'),
+      ),
+    );
+}
+
+/** The cube-emulator command line for these options. */
+export function emulatorArgs(o: EmulateCliOptions): string[] {
+  const args = ['--udp-port', String(o.udpPort), '--bind', o.bind, '--device-id', o.deviceId];
+  if (o.key !== undefined) args.push('--key', o.key);
+  if (o.insecure) args.push('--insecure');
+  if (o.timeScale !== undefined) args.push('--time-scale', String(o.timeScale));
+  if (o.hostTimeoutMs !== undefined) args.push('--host-timeout-ms', String(o.hostTimeoutMs));
+  if (!o.pty) args.push('--no-pty');
+  return args;
+}
