@@ -7,12 +7,12 @@ import type { DiscoveredRobot } from './discover.js';
 
 export interface DiscoveredConnectionOptions {
   /** The robot's pre-shared key, hex. Required when the robot announced `auth=hmac-sha256`. */
-  key?: string;
+  key?: string | undefined;
   /**
    * The address to use instead of the one chosen: by default 127.0.0.1 for a robot announced
    * from this machine, else its first IPv4 address, else its first address.
    */
-  address?: string;
+  address?: string | undefined;
 }
 
 /** The address a PhysicalHAL should send to (see {@link DiscoveredConnectionOptions.address}). */
