@@ -1,10 +1,7 @@
 // Cube: the session, status and settings commands (hello, heartbeat,
 // get_status, set_config, set_led, estop, reset_estop).
-#include <cstring>
-
 #include "capabilities.h"
 #include "cube.h"
-#include "json_number.h"
 #include "reply.h"
 #include "request_fields.h"
 #include "text.h"
