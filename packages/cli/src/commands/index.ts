@@ -2,6 +2,10 @@
 // options shared by all (--json) are read through `global()` when it runs.
 import type { Command } from 'commander';
 import type { CliIO, GlobalOptions } from '../io.js';
+import { registerDrive } from './drive.js';
+import { registerServe } from './serve.js';
+import { registerStatus } from './status.js';
+import { registerTeleop } from './teleop.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -14,4 +18,9 @@ export interface CommandContext {
 export type RegisterCommand = (program: Command, ctx: CommandContext) => void;
 
 /** The subcommands, in the order `hal --help` lists them. */
-export const COMMANDS: readonly RegisterCommand[] = [];
+export const COMMANDS: readonly RegisterCommand[] = [
+  registerStatus,
+  registerDrive,
+  registerTeleop,
+  registerServe,
+];
