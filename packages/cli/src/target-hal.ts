@@ -165,7 +165,8 @@ export async function openTarget(
       () => new HalError('NOT_CONNECTED', `no answer from the ${name} within ${timeoutMs} ms`),
     );
   } catch (error) {
-    await bounded(() => release(false));
+    // let go in the background: a HAL still connecting may take its own retry budget to stop
+    void bounded(() => release(false));
     if (isHalError(error)) throw error;
     throw new HalError('NOT_CONNECTED', `cannot connect to the ${name}: ${String(error)}`, {
       cause: error,
