@@ -25,9 +25,10 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
   const command = new Command('serve')
     .description('serve one robot (--sim, --udp or --serial) on NATS and/or WebSocket')
     .addOption(
-      new Option('--device <id>', "device id on NATS (default: the robot's own id)").argParser(
-        deviceIdArg,
-      ),
+      new Option(
+        '--device <id>',
+        "the id it is served as (NATS subjects, WebSocket hello; default the robot's own)",
+      ).argParser(deviceIdArg),
     )
     .addOption(
       new Option(

@@ -36,18 +36,26 @@ export function servePlan(
   o: ServeCliOptions,
   env: Readonly<Record<string, string | undefined>>,
 ): ServePlan {
-  const natsNamed =
-    o.nats !== undefined ||
-    o.device !== undefined ||
-    !o.defaultDevice ||
-    [o.natsUser, o.natsPass, o.natsToken, o.natsCa, o.natsCert, o.natsKey].some(
-      (v) => v !== undefined,
-    );
+  const natsNamed = o.nats !== undefined;
+  if (!natsNamed) {
+    const natsOnly: [unknown, string][] = [
+      [o.defaultDevice ? undefined : false, '--no-default-device'],
+      [o.natsUser, '--nats-user'],
+      [o.natsPass, '--nats-pass'],
+      [o.natsToken, '--nats-token'],
+      [o.natsCa, '--nats-ca'],
+      [o.natsCert, '--nats-cert'],
+      [o.natsKey, '--nats-key'],
+    ];
+    for (const [value, name] of natsOnly) {
+      if (value !== undefined) throw new CliError('USAGE', `"${name}" needs --nats <servers>`);
+    }
+  }
   const wsNamed = o.wsPort !== undefined;
   if (!natsNamed && !wsNamed) {
     throw new CliError(
       'USAGE',
-      'say where to serve: --nats <servers> (and/or --device <id>) for NATS, --ws-port <port> for WebSocket, or both',
+      'say where to serve: --nats <servers> for NATS, --ws-port <port> for WebSocket, or both',
     );
   }
   if (!wsNamed) {
