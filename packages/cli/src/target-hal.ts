@@ -1,14 +1,13 @@
 // Builds and connects the HAL a Target names, with a bound on connecting (a robot that is off
 // is NOT_CONNECTED within the timeout, never a hang), and lets go of it the right way after.
 import { NatsHAL, openConnection } from '@hal/nats';
-import type { NatsLogger } from '@hal/nats';
 import { PhysicalHAL } from '@hal/physical';
-import type { Logger } from '@hal/physical';
 import { RemoteHAL } from '@hal/remote';
 import { SimulationHAL, World } from '@hal/simulation';
 import { HalError, isHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { CliIO } from './io.js';
+import { cliLogger, cliNatsLogger } from './logger.js';
 import { DEFAULT_CONNECT_TIMEOUT_MS, describeTarget } from './target.js';
 import type { Target } from './target.js';
 
@@ -29,30 +28,13 @@ export interface OpenTargetOptions {
    * control and, on NATS, disconnects without the stop a controller's cleanup sends.
    */
   role?: 'control' | 'watch';
+  /** Write the HAL's warnings as JSON lines (--json). */
+  json?: boolean;
   /** The device id a simulator reports, or a physical robot's HAL (default: the robot's own). */
   deviceId?: string;
 }
 
 const CLOSE_TIMEOUT_MS = 5000;
-
-/** Writes the HAL's warnings and errors to stderr (debug and info are dropped). */
-export function cliLogger(io: CliIO): Logger {
-  return {
-    log: (level, namespace, message) => {
-      if (level === 'warn' || level === 'error') io.err(`${level} ${namespace} ${message}\n`);
-    },
-  };
-}
-
-function natsLogger(io: CliIO): NatsLogger {
-  const log = cliLogger(io);
-  return {
-    debug: () => undefined,
-    info: () => undefined,
-    warn: (message) => log.log('warn', 'hal:nats', message),
-    error: (message) => log.log('error', 'hal:nats', message),
-  };
-}
 
 /** Resolves `promise`, or settles with `onTimeout()`'s error after `ms`. */
 function within<T>(promise: Promise<T>, ms: number, onTimeout: () => Error): Promise<T> {
@@ -101,7 +83,11 @@ async function build(
             };
       const hal = new PhysicalHAL(
         { mode: 'physical', deviceId: options.deviceId ?? 'robot', connection },
-        { logger: cliLogger(io), timeScale: target.timeScale, client: 'hal-cli' },
+        {
+          logger: cliLogger(io, options.json === true),
+          timeScale: target.timeScale,
+          client: 'hal-cli',
+        },
       );
       return { hal, release: () => hal.cleanup() };
     }
@@ -113,7 +99,7 @@ async function build(
         clientId: 'hal-cli',
         reconnect: false,
         connectTimeoutMs: options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS,
-        logger: cliLogger(io),
+        logger: cliLogger(io, options.json === true),
       });
       return { hal, release: () => hal.cleanup() };
     }
@@ -129,7 +115,7 @@ async function build(
         connection: nc,
         ...(target.deviceId === undefined ? {} : { deviceId: target.deviceId }),
         clientId: `hal-cli-${process.pid}`,
-        logger: natsLogger(io),
+        logger: cliNatsLogger(io, options.json === true),
       });
       return {
         hal,

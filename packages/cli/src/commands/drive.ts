@@ -31,7 +31,7 @@ async function drive(
   const target = resolveTarget(options, io.env);
   const connect =
     options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-  const outcome = await withTarget(target, io, connect, ({ hal }) =>
+  const outcome = await withTarget(target, io, { ...connect, json: global.json }, ({ hal }) =>
     runDrive(hal, action, io, global),
   );
   emit(io, global, { action, ...outcome }, () => outcomeText(action, outcome));

@@ -15,7 +15,8 @@ import { servePlan, servedSubjects } from '../serve/where.js';
 import type { ServeCliOptions } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
-import { cliLogger, openTarget } from '../target-hal.js';
+import { cliLogger } from '../logger.js';
+import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
 import type { RegisterCommand } from './index.js';
 
@@ -73,6 +74,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
     const target = resolveTarget(options, io.env, SERVED_KINDS);
     if (plan.ws !== undefined) checkBinding(plan.ws.host, plan.ws.token); // before touching the robot
     const opened = await openTarget(target, io, {
+      json: global().json,
       ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
       ...(options.device === undefined ? {} : { deviceId: options.device }),
     });
@@ -103,7 +105,11 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
         });
       }
       if (plan.ws !== undefined) {
-        server = await serveHal(hal, { ...plan.ws, deviceId, logger: cliLogger(io) });
+        server = await serveHal(hal, {
+          ...plan.ws,
+          deviceId,
+          logger: cliLogger(io, global().json),
+        });
       }
       const serving = {
         event: 'serving',

@@ -34,18 +34,23 @@ export const registerStatus: RegisterCommand = (program, { io, global }) => {
     const target = resolveTarget(options, io.env);
     const connect =
       options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-    await withTarget(target, io, { ...connect, role: 'watch' }, async ({ hal, deviceId }) => {
-      const first = await readStatus(hal, deviceId);
-      emit(io, global(), first, () => statusText(first));
-      if (!options.watch) return;
-      const periodMs = 1000 / options.rate;
-      for (;;) {
-        await sleep(periodMs, io.signal);
-        if (io.signal.aborted) return;
-        const next = await readStatus(hal, deviceId);
-        emit(io, global(), next, () => statusLine(next));
-      }
-    });
+    await withTarget(
+      target,
+      io,
+      { ...connect, role: 'watch', json: global().json },
+      async ({ hal, deviceId }) => {
+        const first = await readStatus(hal, deviceId);
+        emit(io, global(), first, () => statusText(first));
+        if (!options.watch) return;
+        const periodMs = 1000 / options.rate;
+        for (;;) {
+          await sleep(periodMs, io.signal);
+          if (io.signal.aborted) return;
+          const next = await readStatus(hal, deviceId);
+          emit(io, global(), next, () => statusLine(next));
+        }
+      },
+    );
   });
   program.addCommand(command);
 };

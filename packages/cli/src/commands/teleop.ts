@@ -36,15 +36,20 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
     const target = resolveTarget(options, io.env);
     const connect =
       options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-    const summary = await withTarget(target, io, connect, ({ hal, deviceId }) => {
-      progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
-      return withRawMode(stdin, () =>
-        runTeleop(hal, stdin, io, global(), {
-          power: options.power,
-          turnPower: options.turnPower,
-        }),
-      );
-    });
+    const summary = await withTarget(
+      target,
+      io,
+      { ...connect, json: global().json },
+      ({ hal, deviceId }) => {
+        progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
+        return withRawMode(stdin, () =>
+          runTeleop(hal, stdin, io, global(), {
+            power: options.power,
+            turnPower: options.turnPower,
+          }),
+        );
+      },
+    );
     emit(
       io,
       global(),
