@@ -1,6 +1,7 @@
 // `hal status` and `hal drive` against the emulated robot (the firmware core as a process) over
 // UDP and over its pseudo-terminal: each run is a new host session, as for a user at a shell.
 import { runHal } from '@hal/cli';
+import { RemoteHAL } from '@hal/remote';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
@@ -99,5 +100,35 @@ describe('hal on the emulated robot', () => {
     );
     expect(finished['outcome']).toBe('stopped');
     expect(Number(finished['left_steps'])).toBeLessThan(Number(started['left_steps']));
+  });
+
+  it('serves the robot with hal serve, and stops it when serving ends on Ctrl-C', async () => {
+    const io = captureIO();
+    const serving = runHal(
+      ['--json', 'serve', ...udp, '--device', 'cube-served', '--ws-port', '0'],
+      io,
+    );
+    const deadline = Date.now() + 20_000;
+    while (io.jsonLines().length === 0 && Date.now() < deadline) {
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+    const { ws } = io.jsonLines()[0] as { ws: { url: string } };
+    const remote = new RemoteHAL({ url: ws.url, reconnect: false });
+    await remote.initialize();
+    expect(remote.getDeviceInfo().id).toBe('cube-served');
+    const before = emulator.events.length;
+    expect((await remote.locomotion.drive(200, 200)).success).toBe(true); // until stopped
+    const started = await emulator.waitFor(
+      (e) => e.event === 'move_started' && emulator.events.indexOf(e) >= before,
+    );
+    io.abort();
+    expect(await serving).toBe(0);
+    const finished = await emulator.waitFor(
+      (e) => e.event === 'move_finished' && e['move_id'] === started['move_id'],
+      5000,
+    );
+    expect(finished['outcome']).toBe('stopped');
+    expect(io.jsonLines().at(-1)).toEqual({ event: 'stopped' });
+    await remote.cleanup();
   });
 });
