@@ -105,9 +105,7 @@ export function addTargetOptions(
     command
       .addOption(new Option('--ws <url>', 'a HAL served over WebSocket (hal serve --ws-port)'))
       .addOption(
-        new Option('--token <secret>', "the WebSocket server's token (with --ws)").env(
-          'HAL_SERVE_TOKEN',
-        ),
+        new Option('--token <secret>', "the WebSocket server's token (default $HAL_SERVE_TOKEN)"),
       );
   }
   if (has('nats')) {
@@ -206,12 +204,10 @@ export function resolveTarget(
         ...key,
         timeScale: options.timeScale ?? 1,
       };
-    case 'ws':
-      return {
-        kind,
-        url: wsUrlArg(options.ws!),
-        ...(options.token === undefined ? {} : { token: options.token }),
-      };
+    case 'ws': {
+      const token = options.token ?? env['HAL_SERVE_TOKEN'];
+      return { kind, url: wsUrlArg(options.ws!), ...(token === undefined ? {} : { token }) };
+    }
     case 'nats':
       return {
         kind,

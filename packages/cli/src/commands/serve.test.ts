@@ -35,6 +35,25 @@ describe('hal serve on WebSocket', () => {
     expect(gone.stderr()).toContain('NOT_CONNECTED');
   }, 30_000);
 
+  it('requires the token from $HAL_SERVE_TOKEN, and hal status --ws presents it the same way', async () => {
+    const env = { HAL_SERVE_TOKEN: 'a-token-of-24-characters' };
+    const io = captureIO(env);
+    const serving = runHal(['--json', 'serve', '--sim', '--ws-port', '0'], io);
+    await waitForOutput(io, (o) => o.jsonLines().length > 0);
+    const { ws } = io.jsonLines()[0] as { ws: { url: string } };
+    const refused = captureIO();
+    expect(await runHal(['status', '--ws', ws.url], refused)).toBe(1);
+    expect(refused.stderr()).toContain('NOT_CONNECTED');
+    const admitted = captureIO(env);
+    expect(await runHal(['status', '--ws', ws.url], admitted), admitted.stderr()).toBe(0);
+    const byOption = captureIO();
+    expect(await runHal(['status', '--ws', ws.url, '--token', env.HAL_SERVE_TOKEN], byOption)).toBe(
+      0,
+    );
+    io.abort();
+    expect(await serving).toBe(0);
+  }, 30_000);
+
   it('prints where it listens for people', async () => {
     const io = captureIO();
     const serving = runHal(['serve', '--sim', '--ws-port', '0'], io);

@@ -56,8 +56,9 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
       ),
     )
     .addOption(
-      new Option('--token <secret>', 'token WebSocket clients must present (16+ characters)').env(
-        'HAL_SERVE_TOKEN',
+      new Option(
+        '--token <secret>',
+        'token WebSocket clients must present, 16+ characters (default $HAL_SERVE_TOKEN)',
       ),
     )
     .addOption(

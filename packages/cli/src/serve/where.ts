@@ -80,10 +80,11 @@ export function servePlan(
     };
   }
   if (wsNamed) {
+    const token = o.token ?? env['HAL_SERVE_TOKEN'];
     plan.ws = {
       host: o.host ?? '127.0.0.1',
       port: o.wsPort!,
-      ...(o.token === undefined ? {} : { token: o.token }),
+      ...(token === undefined ? {} : { token }),
       stateRateHz: o.stateRate === undefined || o.stateRate === 0 ? WS_STATE_HZ : o.stateRate,
       heartbeatTimeoutMs: o.heartbeatTimeout ?? WS_HEARTBEAT_MS,
     };
