@@ -4,7 +4,7 @@ import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { emit, progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
-import { sleep } from '../wait.js';
+import { aborted, sleep } from '../wait.js';
 import { parseKeys } from './keys.js';
 import type { TeleopKey } from './keys.js';
 import type { TerminalInput } from './terminal.js';
@@ -63,13 +63,33 @@ export async function runTeleop(
   const pending: TeleopKey[] = [];
   const acted: TeleopKey[] = [];
   let wake: (() => void) | undefined;
-  let ended = false;
+  // q, Ctrl-C, the end of input or the command's abort: ends the session even mid-call
+  const stopping = new AbortController();
   const end = (): void => {
-    ended = true;
+    stopping.abort();
     wake?.();
   };
+  let status = 'ready';
+  const report = (key: TeleopKey, result: HALToolResult): void => {
+    status = result.success ? key : `${key} refused: ${result.code ?? 'FAILED'}`;
+    if (global.json) emit(io, global, { key, result }, () => '');
+  };
+  const urgent: Promise<unknown>[] = [];
   const onData = (chunk: Buffer | string): void => {
-    pending.push(...parseKeys(typeof chunk === 'string' ? chunk : chunk.toString('latin1')));
+    for (const key of parseKeys(typeof chunk === 'string' ? chunk : chunk.toString('latin1'))) {
+      if (key === 'quit') {
+        end();
+        return;
+      }
+      if (key === 'stop' || key === 'estop') {
+        // never queued behind a slow call: sent at once, and the drive keys before it dropped
+        pending.length = 0;
+        acted.push(key);
+        urgent.push(callFor(hal, key, options).then((result) => report(key, result)));
+      } else {
+        pending.push(key);
+      }
+    }
     wake?.();
   };
   stdin.on('data', onData);
@@ -77,7 +97,6 @@ export async function runTeleop(
   io.signal.addEventListener('abort', end, { once: true });
 
   const lineDone = new AbortController();
-  let status = 'ready';
   const poseLine = (async () => {
     while (!lineDone.signal.aborted && !global.json) {
       const pose = await hal.locomotion.getPose().catch(() => undefined);
@@ -90,25 +109,26 @@ export async function runTeleop(
   })();
 
   try {
-    for (;;) {
-      if (io.signal.aborted) break;
+    const ending = aborted(stopping.signal).then(() => undefined);
+    while (!stopping.signal.aborted) {
       const key = pending.shift();
       if (key === undefined) {
-        if (ended) break;
         await new Promise<void>((resolve) => (wake = resolve));
         wake = undefined;
         continue;
       }
       if (key === 'quit') break;
       acted.push(key);
-      const result = await callFor(hal, key, options);
-      status = result.success ? key : `${key} refused: ${result.code ?? 'FAILED'}`;
-      if (global.json) emit(io, global, { key, result }, () => '');
+      // a call that hangs (a lost link) must not keep the user from quitting
+      const result = await Promise.race([callFor(hal, key, options), ending]);
+      if (result === undefined) break;
+      report(key, result);
     }
   } finally {
     stdin.off('data', onData);
     stdin.off('end', end);
     io.signal.removeEventListener('abort', end);
+    await Promise.allSettled(urgent);
     lineDone.abort();
     await poseLine;
     if (!global.json) io.err('\n');
