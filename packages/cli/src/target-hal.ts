@@ -24,10 +24,12 @@ export interface OpenTargetOptions {
   /** Give up connecting after this long, ms. Default {@link DEFAULT_CONNECT_TIMEOUT_MS}. */
   connectTimeoutMs?: number;
   /**
-   * 'control' (default) drives the robot; 'watch' only reads: it never takes a WebSocket HAL's
-   * control and, on NATS, disconnects without the stop a controller's cleanup sends.
+   * 'control' (default) drives the robot: on WebSocket it must become the controller (see
+   * {@link openTarget}). 'safety' may only stop and e-stop, which a WebSocket watcher may do too.
+   * 'watch' only reads: it never takes a WebSocket HAL's control and, on NATS, disconnects
+   * without the stop a controller's cleanup sends.
    */
-  role?: 'control' | 'watch';
+  role?: 'control' | 'safety' | 'watch';
   /** Write the HAL's warnings as JSON lines (--json). */
   json?: boolean;
   /** The device id a simulator reports, or a physical robot's HAL (default: the robot's own). */
@@ -35,6 +37,8 @@ export interface OpenTargetOptions {
 }
 
 const CLOSE_TIMEOUT_MS = 5000;
+/** How often to try again for control of a WebSocket HAL. */
+const CONTROL_RETRY_MS = 200;
 
 /** Resolves `promise`, or settles with `onTimeout()`'s error after `ms`. */
 function within<T>(promise: Promise<T>, ms: number, onTimeout: () => Error): Promise<T> {
@@ -137,6 +141,27 @@ export async function openTarget(
   io: CliIO,
   options: OpenTargetOptions = {},
 ): Promise<OpenedHal> {
+  const deadline = Date.now() + (options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS);
+  for (;;) {
+    const opened = await openOnce(target, io, options);
+    const { hal } = opened;
+    if (options.role !== undefined && options.role !== 'control') return opened;
+    if (!(hal instanceof RemoteHAL) || hal.role === 'controller') return opened;
+    // Someone controls the served HAL. It may be our own previous run whose close the server
+    // has not processed yet (nobody controls a moment later), so try again until the deadline;
+    // control is never taken from another client.
+    await opened.close();
+    if (Date.now() + CONTROL_RETRY_MS > deadline) {
+      throw new HalError(
+        'NOT_CONTROLLER',
+        `another client controls the ${describeTarget(target)}: this one could only watch`,
+      );
+    }
+    await new Promise((resolve) => setTimeout(resolve, CONTROL_RETRY_MS));
+  }
+}
+
+async function openOnce(target: Target, io: CliIO, options: OpenTargetOptions): Promise<OpenedHal> {
   const timeoutMs = options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS;
   const name = describeTarget(target);
   const { hal, release } = await within(

@@ -1,3 +1,4 @@
+import { RemoteHAL } from '@hal/remote';
 import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { SimulationHAL } from '@hal/simulation';
@@ -128,5 +129,22 @@ describe('hal drive on a served simulator (--ws)', () => {
     const reset = captureIO();
     expect(await runHal(['drive', 'reset-estop', '--ws', server.url], reset)).toBe(0);
     expect(sim.safety.isEmergencyStopped()).toBe(false);
+  });
+  it('never takes control from another client: motion is NOT_CONTROLLER, an e-stop still lands', async () => {
+    const other = new RemoteHAL({ url: server.url, reconnect: false });
+    await other.initialize();
+    try {
+      expect(other.role).toBe('controller');
+      const refused = captureIO();
+      const argv = ['--json', 'drive', 'forward', '0.1', '--ws', server.url];
+      expect(await runHal([...argv, '--connect-timeout', '1000'], refused)).toBe(1);
+      expect(JSON.parse(refused.stderr())).toMatchObject({ error: { code: 'NOT_CONTROLLER' } });
+      expect(other.role).toBe('controller');
+      const estop = captureIO();
+      expect(await runHal(['drive', 'estop', 'from a watcher', '--ws', server.url], estop)).toBe(0);
+      expect(sim.safety.isEmergencyStopped()).toBe(true);
+    } finally {
+      await other.cleanup();
+    }
   });
 });

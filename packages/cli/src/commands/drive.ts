@@ -20,6 +20,9 @@ function outcomeText(action: DriveAction, { result, pose, stoppedByUser }: Drive
   return `${actionText(action)}: ok${time} (${result.mode}${stopped})\npose ${poseText(pose)}`;
 }
 
+/** Calls any client may make (a WebSocket watcher too): they never wait for control. */
+const SAFETY_ONLY: ReadonlySet<DriveAction['kind']> = new Set(['stop', 'estop']);
+
 async function drive(
   command: Command,
   action: DriveAction,
@@ -31,8 +34,11 @@ async function drive(
   const target = resolveTarget(options, io.env);
   const connect =
     options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-  const outcome = await withTarget(target, io, { ...connect, json: global.json }, ({ hal }) =>
-    runDrive(hal, action, io, global),
+  const outcome = await withTarget(
+    target,
+    io,
+    { ...connect, json: global.json, role: SAFETY_ONLY.has(action.kind) ? 'safety' : 'control' },
+    ({ hal }) => runDrive(hal, action, io, global),
   );
   emit(io, global, { action, ...outcome }, () => outcomeText(action, outcome));
 }
