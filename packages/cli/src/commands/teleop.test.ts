@@ -59,7 +59,7 @@ describe('hal teleop', () => {
     const run = runHal(['--json', 'teleop', '--ws', server.url], io);
     await until(() => tty.isRaw);
     tty.type('e');
-    await until(() => sim.safety.isEmergencyStopped());
+    await until(() => sim.safety.isEmergencyStopped() && io.jsonLines().length >= 1);
     tty.type('w');
     await until(() => io.jsonLines().length >= 2);
     tty.type('r');
@@ -103,6 +103,26 @@ describe('hal teleop', () => {
     expect(tty.isRaw).toBe(false);
     expect(code).toBe(1);
     expect(io.stderr()).toContain('hal: NOT_CONNECTED');
+  });
+
+  it('drives the embedded simulator (--sim) and reports the final pose as JSON', async () => {
+    const io = { ...captureIO(), stdin: tty };
+    const run = runHal(['--json', 'teleop', '--sim', '--time-scale', '10'], io);
+    await until(() => tty.isRaw);
+    tty.type('\x1b[A'); // up arrow
+    await until(() => io.jsonLines().length >= 1);
+    await new Promise((resolve) => setTimeout(resolve, 200));
+    tty.type('q');
+    expect(await run).toBe(0);
+    const last = io.jsonLines().at(-1) as {
+      event: string;
+      keys: string[];
+      pose: { position: { x: number } };
+    };
+    expect(last.event).toBe('ended');
+    expect(last.keys).toEqual(['forward']);
+    expect(last.pose.position.x).toBeGreaterThan(0);
+    expect(tty.rawModes).toEqual([true, false]);
   });
 
   it('refuses clearly, before connecting, when stdin is not a terminal', async () => {
