@@ -56,4 +56,14 @@ describe('hal status', () => {
     expect(JSON.parse(io.stderr())).toMatchObject({ error: { code: 'NOT_CONNECTED' } });
     expect(Date.now() - started).toBeLessThan(8000); // bounded: it did not hang
   }, 20_000);
+
+  it('reports NOT_CONNECTED when the NATS server cannot be reached', async () => {
+    const io = captureIO();
+    expect(
+      await runHal(['--json', 'status', '--device', 'cube-01', '--nats', 'nats://127.0.0.1:1'], io),
+    ).toBe(1);
+    expect(JSON.parse(io.stderr())).toMatchObject({
+      error: { code: 'NOT_CONNECTED', message: expect.stringContaining('cannot reach NATS') },
+    });
+  }, 20_000);
 });
