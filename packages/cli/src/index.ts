@@ -8,3 +8,13 @@ export type { NatsCliOptions } from './nats-options.js';
 export type { CliIO, GlobalOptions } from './io.js';
 export { COMMANDS } from './commands/index.js';
 export type { CommandContext, RegisterCommand } from './commands/index.js';
+export {
+  addTargetOptions,
+  describeTarget,
+  resolveTarget,
+  DEFAULT_CONNECT_TIMEOUT_MS,
+  TARGET_KINDS,
+} from './target.js';
+export type { Target, TargetCliOptions, TargetKind } from './target.js';
+export { openTarget, withTarget } from './target-hal.js';
+export type { OpenTargetOptions, OpenedHal } from './target-hal.js';

@@ -2,6 +2,10 @@
 // options shared by all (--json) are read through `global()` when it runs.
 import type { Command } from 'commander';
 import type { CliIO, GlobalOptions } from '../io.js';
+import { registerDrive } from './drive.js';
+import { registerServe } from './serve.js';
+import { registerStatus } from './status.js';
+import { registerTeleop } from './teleop.js';
 import { registerDiscover } from './discover.js';
 import { registerEmulate } from './emulate.js';
 
@@ -16,4 +20,11 @@ export interface CommandContext {
 export type RegisterCommand = (program: Command, ctx: CommandContext) => void;
 
 /** The subcommands, in the order `hal --help` lists them. */
-export const COMMANDS: readonly RegisterCommand[] = [registerEmulate, registerDiscover];
+export const COMMANDS: readonly RegisterCommand[] = [
+  registerStatus,
+  registerDrive,
+  registerTeleop,
+  registerServe,
+  registerEmulate,
+  registerDiscover,
+];

@@ -1,6 +1,12 @@
 // The command line of hal-serve, parsed with commander. Parsing is separate from running so it can
 // be tested without opening anything.
-import { Command, InvalidArgumentError, Option } from 'commander';
+import { Command, Option } from 'commander';
+import {
+  hexKeyArg as hexKey,
+  hostPortArg,
+  integerArg as integer,
+  positiveArg as positive,
+} from './values.js';
 
 /** Which HAL to serve. */
 export type HalChoice =
@@ -20,44 +26,6 @@ export interface ServeCommand {
   timeScale: number;
 }
 
-function integer(name: string, min: number, max: number) {
-  return (value: string): number => {
-    const n = Number(value);
-    if (!Number.isInteger(n) || n < min || n > max) {
-      throw new InvalidArgumentError(`"${name}" must be an integer ${min}..${max}, got "${value}"`);
-    }
-    return n;
-  };
-}
-
-function positive(name: string) {
-  return (value: string): number => {
-    const n = Number(value);
-    if (!Number.isFinite(n) || n <= 0) {
-      throw new InvalidArgumentError(`"${name}" must be a number > 0, got "${value}"`);
-    }
-    return n;
-  };
-}
-
-function hostPort(value: string): { host: string; port: number } {
-  const match = /^([^:\s]+)(?::(\d{1,5}))?$/.exec(value);
-  const port = match?.[2] === undefined ? 4210 : Number(match[2]);
-  if (match === null || port < 1 || port > 65_535) {
-    throw new InvalidArgumentError(`"--udp" must be HOST or HOST:PORT, got "${value}"`);
-  }
-  return { host: match[1]!, port };
-}
-
-function hexKey(value: string): string {
-  if (!/^([0-9a-fA-F]{2})+$/.test(value) || value.length > 128) {
-    throw new InvalidArgumentError(
-      '"--key" must be hex, an even number of digits, at most 64 bytes',
-    );
-  }
-  return value;
-}
-
 /** Builds the program. `exitOverride` turns its exits into CommanderErrors (for tests). */
 export function serveProgram(): Command {
   return new Command('hal-serve')
@@ -70,7 +38,7 @@ export function serveProgram(): Command {
         '--udp <host[:port]>',
         'serve the robot at this UDP address (port 4210 by default)',
       )
-        .argParser(hostPort)
+        .argParser(hostPortArg('--udp'))
         .conflicts(['serial']),
     )
     .option('--serial <path>', 'serve the robot on this serial port')

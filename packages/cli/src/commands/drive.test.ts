@@ -1,0 +1,150 @@
+import { RemoteHAL } from '@hal/remote';
+import { serveHal } from '@hal/remote/server';
+import type { HalServer } from '@hal/remote/server';
+import { SimulationHAL } from '@hal/simulation';
+import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { captureIO } from '../capture-io.fixture.js';
+import { runHal } from '../program.js';
+import { waitForOutput } from '../wait-output.fixture.js';
+
+interface DriveDoc {
+  result: { success: boolean; mode: string };
+  pose: { position: { x: number; y: number }; rotation: { yaw: number } };
+  stoppedByUser: boolean;
+}
+
+async function drive(...argv: string[]): Promise<DriveDoc> {
+  const io = captureIO();
+  const code = await runHal(['--json', 'drive', ...argv], io);
+  expect(code, io.stderr()).toBe(0);
+  return io.jsonLines()[0] as DriveDoc;
+}
+
+describe('hal drive on the embedded simulator', () => {
+  const fast = ['--sim', '--time-scale', '20'];
+
+  it('drives forward and back in metres', async () => {
+    expect((await drive('forward', '0.1', ...fast)).pose.position.x).toBeCloseTo(0.1, 3);
+    expect((await drive('forward', '-0.05', ...fast)).pose.position.x).toBeCloseTo(-0.05, 3);
+  });
+
+  it('turns counter-clockwise for positive degrees (REP-103) and clockwise for negative', async () => {
+    expect((await drive('turn', '90', ...fast)).pose.rotation.yaw).toBeCloseTo(Math.PI / 2, 2);
+    expect((await drive('turn', '-90', ...fast)).pose.rotation.yaw).toBeCloseTo(-Math.PI / 2, 2);
+  });
+
+  it('moves to a point and drives the wheels for a duration', async () => {
+    const to = await drive('move-to', '0.1', '0.1', ...fast);
+    expect(to.pose.position.x).toBeCloseTo(0.1, 2);
+    expect(to.pose.position.y).toBeCloseTo(0.1, 2);
+    const wheels = await drive('wheels', '255', '255', '--duration', '4000', ...fast);
+    expect(wheels.result.success).toBe(true);
+    expect(wheels.pose.position.x).toBeGreaterThan(0.05);
+  });
+
+  it('prints the result and the pose for people', async () => {
+    const io = captureIO();
+    expect(await runHal(['drive', 'forward', '0.02', ...fast], io)).toBe(0);
+    expect(io.stdout()).toMatch(
+      /^forward 0\.02 m: ok in \d+\.\d\d s \(simulation\)\npose x 0\.020 m/,
+    );
+  });
+
+  it.each([
+    [['forward', 'NaN'], /metres must be a finite number, got "NaN"/],
+    [['forward', '12abc'], /metres must be a finite number/],
+    [['forward', '0'], /forward: the distance must not be 0/],
+    [['forward', '5'], /forward \(sent in cm\): distanceCm Too big/],
+    [['turn', 'Infinity'], /degrees must be a finite number/],
+    [['move-to', '1', 'x'], /y must be a finite number/],
+    [['move-to', '100', '0'], /move-to: x Too big/],
+    [['wheels', '300', '0'], /wheels: left Too big/],
+    [['wheels', '100', '100', '--duration', '-5'], /wheels: durationMs Too small/],
+    [['estop', 'a', 'b'], /too many arguments/],
+  ])('refuses %j as a usage error before connecting to anything', async (argv, message) => {
+    const io = captureIO();
+    // a robot address nothing answers at: a connection attempt would end NOT_CONNECTED instead
+    expect(await runHal(['drive', ...argv, '--udp', '127.0.0.1:9'], io)).toBe(2);
+    expect(io.stderr()).toMatch(message);
+    expect(io.stderr()).not.toContain('NOT_CONNECTED');
+  });
+});
+
+describe('hal drive on a served simulator (--ws)', () => {
+  let sim: SimulationHAL;
+  let server: HalServer;
+
+  beforeEach(async () => {
+    sim = new SimulationHAL({ clock: 'realtime' });
+    await sim.initialize();
+    server = await serveHal(sim, { port: 0 });
+  });
+  afterEach(async () => {
+    await server.close();
+    await sim.cleanup();
+  });
+
+  it('stops the robot when interrupted during a motion, and exits 130', async () => {
+    const io = captureIO();
+    const run = runHal(['drive', 'forward', '0.5', '--ws', server.url], io);
+    await waitForOutput(io, (o) => o.stderr().includes(' m/s'));
+    io.abort();
+    expect(await run).toBe(130);
+    expect(io.stderr()).toContain('interrupted: the robot was stopped');
+    const stoppedAt = (await sim.locomotion.getPose()).position.x;
+    expect(stoppedAt).toBeGreaterThan(0);
+    expect(stoppedAt).toBeLessThan(0.3);
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    expect((await sim.locomotion.getPose()).position.x).toBe(stoppedAt);
+  });
+
+  it('drives the wheels until interrupted when no duration is given, then stops them', async () => {
+    const io = captureIO();
+    const run = runHal(['--json', 'drive', 'wheels', '200', '200', '--ws', server.url], io);
+    const deadline = Date.now() + 10_000;
+    while ((await sim.locomotion.getPose()).velocity.linear <= 0 && Date.now() < deadline) {
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+    expect((await sim.locomotion.getPose()).velocity.linear).toBeGreaterThan(0);
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    io.abort();
+    expect(await run).toBe(0);
+    expect((io.jsonLines()[0] as DriveDoc).stoppedByUser).toBe(true);
+    const pose = await sim.locomotion.getPose();
+    expect(pose.position.x).toBeGreaterThan(0);
+    expect(pose.velocity.linear).toBe(0);
+  });
+
+  it('latches the e-stop with its reason, refuses motion while latched, and resets it', async () => {
+    const estop = captureIO();
+    expect(await runHal(['drive', 'estop', 'bumper hit', '--ws', server.url], estop)).toBe(0);
+    expect(sim.safety.isEmergencyStopped()).toBe(true);
+    expect(sim.safety.getSafetyStatus().emergencyStopReason).toBe('bumper hit');
+    const refused = captureIO();
+    expect(await runHal(['--json', 'drive', 'forward', '0.1', '--ws', server.url], refused)).toBe(
+      1,
+    );
+    expect(JSON.parse(refused.stderr())).toMatchObject({ error: { code: 'EMERGENCY_STOPPED' } });
+    expect((await sim.locomotion.getPose()).position.x).toBe(0);
+    const reset = captureIO();
+    expect(await runHal(['drive', 'reset-estop', '--ws', server.url], reset)).toBe(0);
+    expect(sim.safety.isEmergencyStopped()).toBe(false);
+  });
+  it('never takes control from another client: motion is NOT_CONTROLLER, an e-stop still lands', async () => {
+    const other = new RemoteHAL({ url: server.url, reconnect: false });
+    await other.initialize();
+    try {
+      expect(other.role).toBe('controller');
+      const refused = captureIO();
+      const argv = ['--json', 'drive', 'forward', '0.1', '--ws', server.url];
+      expect(await runHal([...argv, '--connect-timeout', '1000'], refused)).toBe(1);
+      expect(JSON.parse(refused.stderr())).toMatchObject({ error: { code: 'NOT_CONTROLLER' } });
+      expect(other.role).toBe('controller');
+      const estop = captureIO();
+      expect(await runHal(['drive', 'estop', 'from a watcher', '--ws', server.url], estop)).toBe(0);
+      expect(sim.safety.isEmergencyStopped()).toBe(true);
+    } finally {
+      await other.cleanup();
+    }
+  });
+});

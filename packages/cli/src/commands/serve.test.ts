@@ -1,0 +1,99 @@
+import { describe, expect, it } from 'vitest';
+import { captureIO } from '../capture-io.fixture.js';
+import { runHal } from '../program.js';
+import { waitForOutput } from '../wait-output.fixture.js';
+
+describe('hal serve on WebSocket', () => {
+  it('serves the simulator until stopped, and hal status --ws reads it', async () => {
+    const io = captureIO();
+    const serving = runHal(
+      ['--json', 'serve', '--sim', '--device', 'desk-sim', '--ws-port', '0'],
+      io,
+    );
+    await waitForOutput(io, (o) => o.jsonLines().length > 0);
+    const first = io.jsonLines()[0] as { event: string; device: string; ws: { url: string } };
+    expect(first).toMatchObject({ event: 'serving', device: 'desk-sim', mode: 'simulation' });
+    expect(first.ws.url).toMatch(/^ws:\/\/127\.0\.0\.1:\d+$/);
+
+    const status = captureIO();
+    expect(await runHal(['--json', 'status', '--ws', first.ws.url], status)).toBe(0);
+    expect(status.jsonLines()[0]).toMatchObject({
+      device: { id: 'desk-sim', mode: 'simulation' },
+      health: { ready: true },
+    });
+    const moved = captureIO();
+    expect(await runHal(['drive', 'turn', '5', '--ws', first.ws.url], moved)).toBe(0);
+
+    io.abort();
+    expect(await serving).toBe(0);
+    expect(io.jsonLines().at(-1)).toEqual({ event: 'stopped' });
+    // it no longer listens
+    const gone = captureIO();
+    expect(await runHal(['status', '--ws', first.ws.url, '--connect-timeout', '2000'], gone)).toBe(
+      1,
+    );
+    expect(gone.stderr()).toContain('NOT_CONNECTED');
+  }, 30_000);
+
+  it('requires the token from $HAL_SERVE_TOKEN, and hal status --ws presents it the same way', async () => {
+    const env = { HAL_SERVE_TOKEN: 'a-token-of-24-characters' };
+    const io = captureIO(env);
+    const serving = runHal(['--json', 'serve', '--sim', '--ws-port', '0'], io);
+    await waitForOutput(io, (o) => o.jsonLines().length > 0);
+    const { ws } = io.jsonLines()[0] as { ws: { url: string } };
+    const refused = captureIO();
+    expect(await runHal(['status', '--ws', ws.url], refused)).toBe(1);
+    expect(refused.stderr()).toContain('NOT_CONNECTED');
+    const admitted = captureIO(env);
+    expect(await runHal(['status', '--ws', ws.url], admitted), admitted.stderr()).toBe(0);
+    const byOption = captureIO();
+    expect(await runHal(['status', '--ws', ws.url, '--token', env.HAL_SERVE_TOKEN], byOption)).toBe(
+      0,
+    );
+    io.abort();
+    expect(await serving).toBe(0);
+  }, 30_000);
+
+  it('prints where it listens for people', async () => {
+    const io = captureIO();
+    const serving = runHal(['serve', '--sim', '--ws-port', '0'], io);
+    await waitForOutput(io, (o) => o.stdout().includes('listening'));
+    io.abort();
+    expect(await serving).toBe(0);
+    expect(io.stdout()).toMatch(
+      /^serving sim-robot-1 \(simulation\)\n {2}listening ws:\/\/127\.0\.0\.1:\d+\n/,
+    );
+  });
+
+  it.each([
+    [['serve', '--sim'], 2, /say where to serve: --nats <servers>/],
+    [['serve', '--ws-port', '0'], 2, /name the robot: one of --sim, --udp, --serial$/m],
+    [
+      ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--host', '0.0.0.0'],
+      2,
+      /"--host" needs --ws-port/,
+    ],
+    [
+      ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--state-rate', '5'],
+      2,
+      /"--state-rate" on NATS is 10..100 Hz/,
+    ],
+    [['serve', '--sim', '--ws', 'ws://a'], 2, /unknown option '--ws'/],
+    [
+      ['serve', '--sim', '--ws-port', '0', '--no-default-device'],
+      2,
+      /"--no-default-device" needs --nats/,
+    ],
+    [['serve', '--sim', '--ws-port', '0', '--host', '0.0.0.0'], 1, /not loopback\) needs a token/],
+  ])('refuses %j with a clear error', async (argv, code, message) => {
+    const io = captureIO();
+    expect(await runHal(argv, io)).toBe(code);
+    expect(io.stderr()).toMatch(message);
+  });
+
+  it('says NOT_CONNECTED, and lets the robot go, when NATS cannot be reached', async () => {
+    const io = captureIO();
+    expect(await runHal(['--json', 'serve', '--sim', '--nats', 'nats://127.0.0.1:1'], io)).toBe(1);
+    expect(JSON.parse(io.stderr())).toMatchObject({ error: { code: 'NOT_CONNECTED' } });
+  });
+});

@@ -1,0 +1,149 @@
+// `hal serve`: owns one robot's HAL (--sim, --udp or --serial) and serves it on NATS (the
+// gateway of @hal/nats), on WebSocket (serveHal of @hal/remote), or both, until Ctrl-C. Then it
+// stops serving and cleans the HAL up, which stops a physical robot.
+import { Command, Option } from 'commander';
+import { serveHalOnNats } from '@hal/nats';
+import type { HalGateway } from '@hal/nats';
+import { checkBinding, integerArg } from '@hal/remote/cli';
+import { serveHal } from '@hal/remote/server';
+import type { HalServer } from '@hal/remote/server';
+import { HalError, isHalError } from '@hal/types';
+import { CliError } from '../cli-error.js';
+import { emit, progress } from '../io.js';
+import { addNatsOptions, deviceIdArg } from '../nats-options.js';
+import { servePlan, servedSubjects } from '../serve/where.js';
+import type { ServeCliOptions } from '../serve/where.js';
+import { addTargetOptions, resolveTarget } from '../target.js';
+import type { TargetCliOptions } from '../target.js';
+import { cliLogger } from '../logger.js';
+import { openTarget } from '../target-hal.js';
+import { aborted } from '../wait.js';
+import type { RegisterCommand } from './index.js';
+
+const SERVED_KINDS = ['sim', 'udp', 'serial'] as const;
+
+export const registerServe: RegisterCommand = (program, { io, global }) => {
+  const command = new Command('serve')
+    .description('serve one robot (--sim, --udp or --serial) on NATS and/or WebSocket')
+    .addOption(
+      new Option(
+        '--device <id>',
+        "the id it is served as (NATS subjects, WebSocket hello; default the robot's own)",
+      ).argParser(deviceIdArg),
+    )
+    .addOption(
+      new Option(
+        '--no-default-device',
+        "do not answer the spec's bare subjects (hal.v1.motor...); for all but one device of a fleet",
+      ),
+    )
+    .addOption(
+      new Option(
+        '--state-rate <hz>',
+        'state messages per second (NATS 10..100, 0: none; default NATS 20, WebSocket 10)',
+      ).argParser(integerArg('--state-rate', 0, 100)),
+    )
+    .addOption(
+      new Option(
+        '--ws-port <port>',
+        'serve on WebSocket on this TCP port (0: any free one)',
+      ).argParser(integerArg('--ws-port', 0, 65_535)),
+    )
+    .addOption(
+      new Option(
+        '--host <address>',
+        'WebSocket address to listen on (default 127.0.0.1; not loopback: --token needed)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--token <secret>',
+        'token WebSocket clients must present, 16+ characters (default $HAL_SERVE_TOKEN)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--heartbeat-timeout <ms>',
+        'drop a silent WebSocket client (and stop its motion) after this long (default 2000)',
+      ).argParser(integerArg('--heartbeat-timeout', 100, 10_000)),
+    );
+  addNatsOptions(command);
+  addTargetOptions(command, SERVED_KINDS);
+  command.action(async (options: ServeCliOptions & TargetCliOptions) => {
+    const plan = servePlan(options, io.env);
+    // the robot options only (--device here names the served id, not a NATS robot to reach)
+    const target = resolveTarget(options, io.env, SERVED_KINDS);
+    if (plan.ws !== undefined) checkBinding(plan.ws.host, plan.ws.token); // before touching the robot
+    const opened = await openTarget(target, io, {
+      json: global().json,
+      ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
+      ...(options.device === undefined ? {} : { deviceId: options.device }),
+    });
+    const { hal } = opened;
+    let gateway: HalGateway | undefined;
+    let server: HalServer | undefined;
+    try {
+      const deviceId = options.device ?? opened.deviceId;
+      if (plan.nats !== undefined) {
+        try {
+          deviceIdArg(deviceId);
+        } catch {
+          throw new CliError(
+            'USAGE',
+            `the robot's id "${deviceId}" is not a NATS subject token: give --device <id>`,
+          );
+        }
+        gateway = await serveHalOnNats(hal, {
+          ...plan.nats.connect,
+          deviceId,
+          defaultDevice: plan.nats.defaultDevice,
+          stateRateHz: plan.nats.stateRateHz,
+        }).catch((error: unknown) => {
+          if (isHalError(error)) throw error;
+          throw new HalError('NOT_CONNECTED', `cannot reach NATS: ${String(error)}`, {
+            cause: error,
+          });
+        });
+      }
+      if (plan.ws !== undefined) {
+        server = await serveHal(hal, {
+          ...plan.ws,
+          deviceId,
+          logger: cliLogger(io, global().json),
+        });
+      }
+      const serving = {
+        event: 'serving',
+        device: deviceId,
+        mode: hal.mode,
+        ...(plan.nats === undefined
+          ? {}
+          : {
+              nats: {
+                servers: [plan.nats.connect.servers].flat(),
+                subjects: servedSubjects(deviceId, plan.nats.defaultDevice),
+              },
+            }),
+        ...(server === undefined ? {} : { ws: { url: server.url } }),
+      };
+      emit(io, global(), serving, () =>
+        [
+          `serving ${deviceId} (${hal.mode})`,
+          ...(serving.nats === undefined
+            ? []
+            : [`  nats ${serving.nats.servers.join(',')}: ${serving.nats.subjects.join(', ')}`]),
+          ...(server === undefined ? [] : [`  listening ${server.url}`]),
+        ].join('\n'),
+      );
+      progress(io, global(), 'Ctrl-C stops serving (and stops the robot)');
+      await aborted(io.signal);
+      progress(io, global(), 'stopping');
+    } finally {
+      await server?.close().catch(() => undefined);
+      await gateway?.close().catch(() => undefined);
+      await opened.close();
+    }
+    emit(io, global(), { event: 'stopped' }, () => 'stopped');
+  });
+  program.addCommand(command);
+};

@@ -1,0 +1,61 @@
+// `hal teleop`: drive a robot from the keyboard, with a live pose line. Needs a terminal: the
+// terminal is put in raw mode and restored on every way out.
+import { Command, Option } from 'commander';
+import { integerArg } from '@hal/remote/cli';
+import { emit, progress } from '../io.js';
+import { poseText } from '../pose-text.js';
+import { addTargetOptions, resolveTarget } from '../target.js';
+import type { TargetCliOptions } from '../target.js';
+import { withTarget } from '../target-hal.js';
+import { TELEOP_HELP } from '../teleop/keys.js';
+import { runTeleop } from '../teleop/session.js';
+import { requireTerminal, withRawMode } from '../teleop/terminal.js';
+import type { RegisterCommand } from './index.js';
+
+interface TeleopCliOptions extends TargetCliOptions {
+  power: number;
+  turnPower: number;
+}
+
+export const registerTeleop: RegisterCommand = (program, { io, global }) => {
+  const command = new Command('teleop')
+    .description(`drive a robot from the keyboard: ${TELEOP_HELP}`)
+    .addOption(
+      new Option('--power <0..255>', 'wheel power driving straight')
+        .argParser(integerArg('--power', 1, 255))
+        .default(200),
+    )
+    .addOption(
+      new Option('--turn-power <0..255>', 'wheel power turning in place')
+        .argParser(integerArg('--turn-power', 1, 255))
+        .default(120),
+    );
+  addTargetOptions(command).action(async (options: TeleopCliOptions) => {
+    // refuse before connecting: no robot is touched without a keyboard to stop it
+    const stdin = requireTerminal(io);
+    const target = resolveTarget(options, io.env);
+    const connect =
+      options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+    const summary = await withTarget(
+      target,
+      io,
+      { ...connect, json: global().json },
+      ({ hal, deviceId }) => {
+        progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
+        return withRawMode(stdin, () =>
+          runTeleop(hal, stdin, io, global(), {
+            power: options.power,
+            turnPower: options.turnPower,
+          }),
+        );
+      },
+    );
+    emit(
+      io,
+      global(),
+      { event: 'ended', ...summary },
+      () => `final pose ${poseText(summary.pose)}`,
+    );
+  });
+  program.addCommand(command);
+};

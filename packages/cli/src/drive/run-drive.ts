@@ -1,0 +1,91 @@
+// Runs one `hal drive` action: live pose on stderr while a motion runs, and Ctrl-C during a
+// motion stops the robot before the command ends. An open-ended `wheels` drive runs until Ctrl-C.
+import { HalError } from '@hal/types';
+import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
+import { CliError } from '../cli-error.js';
+import { progress } from '../io.js';
+import type { CliIO, GlobalOptions } from '../io.js';
+import { poseText } from '../pose-text.js';
+import { aborted, sleep } from '../wait.js';
+import { callFor, isMotion } from './actions.js';
+import type { DriveAction } from './actions.js';
+
+export interface DriveOutcome {
+  result: HALToolResult;
+  /** The pose after the action. */
+  pose: Pose;
+  /** True when Ctrl-C ended an open-ended drive (the robot was stopped). */
+  stoppedByUser: boolean;
+}
+
+const LIVE_POSE_MS = 250;
+/** How long the stop after Ctrl-C may take before the command gives up waiting. */
+const STOP_WAIT_MS = 5000;
+
+/** Prints the pose on stderr every LIVE_POSE_MS until `done` is aborted (people only, not --json). */
+async function livePose(
+  hal: HardwareAbstractionLayer,
+  io: CliIO,
+  global: GlobalOptions,
+  done: AbortSignal,
+): Promise<void> {
+  if (global.json) return;
+  while (!done.aborted) {
+    await sleep(LIVE_POSE_MS, done);
+    if (done.aborted) return;
+    const pose = await hal.locomotion.getPose().catch(() => undefined);
+    if (pose !== undefined && !done.aborted) progress(io, global, `  ${poseText(pose, true)}`);
+  }
+}
+
+async function stopRobot(hal: HardwareAbstractionLayer): Promise<void> {
+  let timer: NodeJS.Timeout | undefined;
+  await Promise.race([
+    hal.locomotion.stop().catch(() => undefined),
+    new Promise((resolve) => (timer = setTimeout(resolve, STOP_WAIT_MS))),
+  ]);
+  clearTimeout(timer);
+}
+
+/** A failed result becomes the HAL's error (its code passes through to the exit). */
+function failure(result: HALToolResult): HalError {
+  return new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'the call failed', {
+    ...(result.details === undefined ? {} : { details: result.details }),
+  });
+}
+
+export async function runDrive(
+  hal: HardwareAbstractionLayer,
+  action: DriveAction,
+  io: CliIO,
+  global: GlobalOptions,
+): Promise<DriveOutcome> {
+  if (!isMotion(action)) {
+    const result = await callFor(hal, action);
+    if (!result.success) throw failure(result);
+    return { result, pose: await hal.locomotion.getPose(), stoppedByUser: false };
+  }
+  const done = new AbortController();
+  const live = livePose(hal, io, global, done.signal);
+  try {
+    const call = callFor(hal, action);
+    const interrupted = aborted(io.signal).then(() => 'interrupted' as const);
+    const first = await Promise.race([call, interrupted]);
+    if (first === 'interrupted') {
+      await stopRobot(hal);
+      await Promise.race([call.catch(() => undefined), sleep(STOP_WAIT_MS, done.signal)]);
+      throw new CliError('FAILED', 'interrupted: the robot was stopped', 130);
+    }
+    if (!first.success) throw failure(first);
+    const openEnded = action.kind === 'wheels' && action.durationMs === undefined;
+    if (openEnded) {
+      progress(io, global, 'driving; Ctrl-C stops the robot');
+      await interrupted;
+      await stopRobot(hal);
+    }
+    return { result: first, pose: await hal.locomotion.getPose(), stoppedByUser: openEnded };
+  } finally {
+    done.abort();
+    await live;
+  }
+}

@@ -1,0 +1,234 @@
+// How every robot-facing command names the robot it talks to: exactly one of --sim, --udp,
+// --serial, --ws, or NATS (--device and/or --nats). Parsing only; target-hal.ts builds the HAL.
+import { Option } from 'commander';
+import type { Command } from 'commander';
+import { hexKeyArg, hostPortArg, integerArg, positiveArg } from '@hal/remote/cli';
+import type { NatsConnectOptions } from '@hal/nats';
+import { BUILTIN_MAPS } from '@hal/simulation';
+import type { BuiltinMapName } from '@hal/simulation';
+import { CliError } from './cli-error.js';
+import { addNatsOptions, deviceIdArg, natsConnectOptions } from './nats-options.js';
+import type { NatsCliOptions } from './nats-options.js';
+
+/** A robot a command can talk to. */
+export type Target =
+  | { kind: 'sim'; map: BuiltinMapName; speed: number; deviceId?: string }
+  | { kind: 'udp'; host: string; port: number; key?: string; timeScale: number }
+  | { kind: 'serial'; path: string; baudRate?: number; key?: string; timeScale: number }
+  | { kind: 'ws'; url: string; token?: string }
+  | { kind: 'nats'; deviceId?: string; nats: NatsConnectOptions };
+
+export type TargetKind = Target['kind'];
+export const TARGET_KINDS: readonly TargetKind[] = ['sim', 'udp', 'serial', 'ws', 'nats'];
+
+/** The options as commander parses them. */
+export interface TargetCliOptions extends NatsCliOptions {
+  sim?: boolean;
+  map?: BuiltinMapName;
+  udp?: { host: string; port: number };
+  serial?: string;
+  baud?: number;
+  key?: string;
+  timeScale?: number;
+  ws?: string;
+  token?: string;
+  device?: string;
+  connectTimeout?: number;
+}
+
+/** Connecting gives up after this long by default, ms (a robot that is off is NOT_CONNECTED). */
+export const DEFAULT_CONNECT_TIMEOUT_MS = 10_000;
+
+function wsUrlArg(value: string): string {
+  let url: URL;
+  try {
+    url = new URL(value);
+  } catch {
+    throw new CliError('USAGE', `"--ws" must be a ws:// or wss:// URL, got "${value}"`);
+  }
+  if (url.protocol !== 'ws:' && url.protocol !== 'wss:') {
+    throw new CliError('USAGE', `"--ws" must be a ws:// or wss:// URL, got "${value}"`);
+  }
+  return value;
+}
+
+/**
+ * Adds the robot options of `kinds` to `command` (all five by default; `hal serve` takes only the
+ * robots it can own: sim, udp and serial). NATS adds --device and the shared NATS options.
+ */
+export function addTargetOptions(
+  command: Command,
+  kinds: readonly TargetKind[] = TARGET_KINDS,
+): Command {
+  const has = (kind: TargetKind) => kinds.includes(kind);
+  if (has('sim')) {
+    command
+      .addOption(new Option('--sim', 'an embedded simulator (in this process)'))
+      .addOption(
+        new Option('--map <name>', 'the simulator\'s map (with --sim; default "empty")').choices(
+          Object.keys(BUILTIN_MAPS),
+        ),
+      );
+  }
+  if (has('udp')) {
+    command.addOption(
+      new Option('--udp <host[:port]>', 'a robot over WiFi UDP (port 4210 by default)').argParser(
+        hostPortArg('--udp'),
+      ),
+    );
+  }
+  if (has('serial')) {
+    command
+      .addOption(new Option('--serial <path>', 'a robot on a serial port'))
+      .addOption(
+        new Option('--baud <rate>', 'serial baud rate (with --serial)').argParser(
+          integerArg('--baud', 1200, 4_000_000),
+        ),
+      );
+  }
+  if (has('udp') || has('serial')) {
+    command.addOption(
+      new Option('--key <hex>', "the robot's pre-shared key (with --udp or --serial)").argParser(
+        hexKeyArg,
+      ),
+    );
+  }
+  if (has('sim') || has('udp') || has('serial')) {
+    command.addOption(
+      new Option(
+        '--time-scale <factor>',
+        "clock speed-up: the simulator's, or an emulated robot's --time-scale",
+      ).argParser(positiveArg('--time-scale')),
+    );
+  }
+  if (has('ws')) {
+    command
+      .addOption(new Option('--ws <url>', 'a HAL served over WebSocket (hal serve --ws-port)'))
+      .addOption(
+        new Option('--token <secret>', "the WebSocket server's token (default $HAL_SERVE_TOKEN)"),
+      );
+  }
+  if (has('nats')) {
+    command.addOption(
+      new Option(
+        '--device <id>',
+        'a device on NATS behind a gateway (with --nats or $NATS_URL; NATS without --device: the default device)',
+      ).argParser(deviceIdArg),
+    );
+    addNatsOptions(command);
+  }
+  command.addOption(
+    new Option('--connect-timeout <ms>', 'give up connecting after this long').argParser(
+      integerArg('--connect-timeout', 100, 600_000),
+    ),
+  );
+  return command;
+}
+
+const NATS_FLAGS: readonly (keyof TargetCliOptions)[] = [
+  'nats',
+  'natsUser',
+  'natsPass',
+  'natsToken',
+  'natsCa',
+  'natsCert',
+  'natsKey',
+];
+
+function flag(name: string): string {
+  return `--${name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`)}`;
+}
+
+/** Refuses `names` that were given without the target they belong to. */
+function onlyWith(
+  options: TargetCliOptions,
+  names: readonly (keyof TargetCliOptions)[],
+  needs: string,
+): void {
+  for (const name of names) {
+    if (options[name] !== undefined) {
+      throw new CliError('USAGE', `"${flag(name)}" needs ${needs}`);
+    }
+  }
+}
+
+/**
+ * The one robot `options` name. A USAGE error when none or several are named, or when an option
+ * belongs to another kind of robot (`--key` with `--sim`). `env` gives the NATS defaults.
+ */
+export function resolveTarget(
+  options: TargetCliOptions,
+  env: Readonly<Record<string, string | undefined>>,
+  kinds: readonly TargetKind[] = TARGET_KINDS,
+): Target {
+  const natsGiven =
+    options.device !== undefined || NATS_FLAGS.some((name) => options[name] !== undefined);
+  const named: [TargetKind, string][] = [];
+  if (options.sim === true) named.push(['sim', '--sim']);
+  if (options.udp !== undefined) named.push(['udp', '--udp']);
+  if (options.serial !== undefined) named.push(['serial', '--serial']);
+  if (options.ws !== undefined) named.push(['ws', '--ws']);
+  if (natsGiven && kinds.includes('nats')) named.push(['nats', '--device/--nats']);
+  const choices = kinds
+    .map(
+      (kind) =>
+        ({ sim: '--sim', udp: '--udp', serial: '--serial', ws: '--ws', nats: '--device' })[kind],
+    )
+    .join(', ');
+  if (named.length === 0) {
+    throw new CliError('USAGE', `name the robot: one of ${choices}`);
+  }
+  if (named.length > 1) {
+    throw new CliError(
+      'USAGE',
+      `name one robot, not ${named.map(([, f]) => f).join(' and ')} (one of ${choices})`,
+    );
+  }
+  const kind = named[0]![0];
+  if (kind !== 'sim') onlyWith(options, ['map'], '--sim');
+  if (kind !== 'serial') onlyWith(options, ['baud'], '--serial');
+  if (kind !== 'udp' && kind !== 'serial') onlyWith(options, ['key'], '--udp or --serial');
+  if (kind === 'ws' || kind === 'nats')
+    onlyWith(options, ['timeScale'], '--sim, --udp or --serial');
+  const key = options.key === undefined ? {} : { key: options.key };
+  switch (kind) {
+    case 'sim':
+      return { kind, map: options.map ?? 'empty', speed: options.timeScale ?? 1 };
+    case 'udp':
+      return { kind, ...options.udp!, ...key, timeScale: options.timeScale ?? 1 };
+    case 'serial':
+      return {
+        kind,
+        path: options.serial!,
+        ...(options.baud === undefined ? {} : { baudRate: options.baud }),
+        ...key,
+        timeScale: options.timeScale ?? 1,
+      };
+    case 'ws': {
+      const token = options.token ?? env['HAL_SERVE_TOKEN'];
+      return { kind, url: wsUrlArg(options.ws!), ...(token === undefined ? {} : { token }) };
+    }
+    case 'nats':
+      return {
+        kind,
+        ...(options.device === undefined ? {} : { deviceId: options.device }),
+        nats: natsConnectOptions(options, env),
+      };
+  }
+}
+
+/** A short name for the target, for messages (`udp 127.0.0.1:4210`). */
+export function describeTarget(target: Target): string {
+  switch (target.kind) {
+    case 'sim':
+      return `simulator (map ${target.map})`;
+    case 'udp':
+      return `robot at udp ${target.host}:${target.port}`;
+    case 'serial':
+      return `robot on ${target.path}`;
+    case 'ws':
+      return `HAL at ${target.url}`;
+    case 'nats':
+      return `device ${target.deviceId ?? '(default)'} on NATS ${[target.nats.servers].flat().join(',')}`;
+  }
+}

@@ -1,0 +1,78 @@
+// Runs the `hal` command as a user runs it: a child process from source (the package's `hal`
+// script), with every wait bounded and every child killed when the test process exits.
+import { spawn } from 'node:child_process';
+import type { ChildProcessByStdio } from 'node:child_process';
+import type { Readable, Writable } from 'node:stream';
+import { fileURLToPath } from 'node:url';
+import { readEventLines } from '../physical/event-lines.js';
+import type { EventLines } from '../physical/event-lines.js';
+
+const MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
+type Child = ChildProcessByStdio<Writable, Readable, Readable>;
+const running = new Set<Child>();
+process.on('exit', () => {
+  for (const child of running) child.kill('SIGKILL');
+});
+
+function spawnHal(args: readonly string[]): Child {
+  const child = spawn(
+    process.execPath,
+    ['--conditions=@hal/source', '--import', 'tsx', MAIN, ...args],
+    {
+      stdio: ['pipe', 'pipe', 'pipe'],
+    },
+  );
+  running.add(child);
+  child.once('exit', () => running.delete(child));
+  return child;
+}
+
+export interface HalRun {
+  code: number | null;
+  stdout: string;
+  stderr: string;
+}
+
+/** Runs `hal args` to its end (killed after `timeoutMs`). */
+export function runHalProcess(args: readonly string[], timeoutMs = 30_000): Promise<HalRun> {
+  const child = spawnHal(args);
+  child.stdin.end();
+  let stdout = '';
+  let stderr = '';
+  child.stdout.on('data', (chunk: Buffer) => (stdout += chunk.toString()));
+  child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
+  return new Promise((resolve) => {
+    const timer = setTimeout(() => child.kill('SIGKILL'), timeoutMs);
+    child.once('close', (code) => {
+      clearTimeout(timer);
+      resolve({ code, stdout, stderr });
+    });
+  });
+}
+
+export interface HalProcess<E> extends EventLines<E> {
+  /** Sends `signal` and resolves the exit code (SIGKILL after `timeoutMs`). */
+  stop(signal?: NodeJS.Signals, timeoutMs?: number): Promise<number | null>;
+}
+
+/** Starts a long-running `hal --json ...` (e.g. `serve`) whose stdout is JSON lines. */
+export function startHalProcess<E extends { event: string }>(
+  args: readonly string[],
+): HalProcess<E> {
+  const child = spawnHal(args);
+  const lines = readEventLines<E>(child, `hal ${args.join(' ')}`, 30_000);
+  const exited = new Promise<number | null>((resolve) =>
+    child.once('exit', (code) => resolve(code)),
+  );
+  return {
+    ...lines,
+    stop: async (signal = 'SIGINT', timeoutMs = 10_000) => {
+      if (child.exitCode !== null || child.signalCode !== null) return child.exitCode;
+      child.kill(signal);
+      const timer = setTimeout(() => child.kill('SIGKILL'), timeoutMs);
+      const code = await exited;
+      clearTimeout(timer);
+      return code;
+    },
+  };
+}
