@@ -36,7 +36,7 @@ function emulate(args: string[]) {
   return run;
 }
 
-describe('hal emulate', () => {
+describe('hal emulate', { timeout: 30_000 }, () => {
   it('prints where the robot listens, announces it, and stops cleanly when aborted', async () => {
     const id = uniqueId();
     const { io, done } = emulate(['--udp-port', '0', '--no-pty', '--device-id', id]);
