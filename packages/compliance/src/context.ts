@@ -134,10 +134,12 @@ export class RunContext {
 /** Says what an answer was, for a failure reason. */
 export function describeAnswer(answer: Answer<unknown>): string {
   if (answer.outcome.kind === 'no-responders') return 'no responder on the subject';
-  if (answer.outcome.kind === 'timeout') return `no reply within ${answer.outcome.latencyMs.toFixed(0)} ms`;
+  if (answer.outcome.kind === 'timeout')
+    return `no reply within ${answer.outcome.latencyMs.toFixed(0)} ms`;
   const inspected = answer.inspected;
   if (inspected === undefined) return 'no reply';
-  if (inspected.error !== undefined) return `error ${inspected.error.code}: ${inspected.error.message}`;
+  if (inspected.error !== undefined)
+    return `error ${inspected.error.code}: ${inspected.error.message}`;
   if (inspected.issues.length > 0) return `a malformed reply (${inspected.issues.join('; ')})`;
   return `a success reply ${JSON.stringify(inspected.envelope?.payload)}`;
 }

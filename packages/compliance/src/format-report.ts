@@ -36,7 +36,11 @@ export function formatReport(report: ComplianceReport): string {
     specText(c, report.judge),
   ]);
   const widths = header.map((h, i) => Math.max(h.length, ...rows.map((r) => (r[i] ?? '').length)));
-  const line = (cells: string[]) => cells.map((cell, i) => pad(cell, widths[i] ?? 0)).join('  ').trimEnd();
+  const line = (cells: string[]) =>
+    cells
+      .map((cell, i) => pad(cell, widths[i] ?? 0))
+      .join('  ')
+      .trimEnd();
   const lines = [
     `device ${report.deviceId} (${report.deviceType}, ${report.mode})${report.addressed === undefined ? ', the default device' : ''}`,
     `announces ${report.caps.join(', ') || 'nothing'}`,
@@ -48,6 +52,9 @@ export function formatReport(report: ComplianceReport): string {
     if (check.status !== 'pass') lines.push(`        ${check.reason}`);
   });
   const { passed, failed, skipped } = report.summary;
-  lines.push('', `${passed} passed, ${failed} failed, ${skipped} skipped in ${(report.durationMs / 1000).toFixed(1)} s: ${report.ok ? 'COMPLIANT' : 'NOT COMPLIANT'}`);
+  lines.push(
+    '',
+    `${passed} passed, ${failed} failed, ${skipped} skipped in ${(report.durationMs / 1000).toFixed(1)} s: ${report.ok ? 'COMPLIANT' : 'NOT COMPLIANT'}`,
+  );
   return `${lines.join('\n')}\n`;
 }

@@ -69,19 +69,32 @@ export function resolveOptions(options: ComplianceOptions): ResolvedOptions {
   for (const [name, min, max] of bounds) {
     const value = resolved[name];
     if (typeof value !== 'number' || !Number.isFinite(value)) {
-      throw new HalError('INVALID_PARAMETER', `"${name}" must be a finite number, got ${String(value)}`);
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `"${name}" must be a finite number, got ${String(value)}`,
+      );
     }
     if (value < min || value > max) {
-      throw new HalError('RANGE_EXCEEDED', `"${name}" must be within ${min}..${max}, got ${value}`, {
-        details: { parameter: name, min, max, value },
-      });
+      throw new HalError(
+        'RANGE_EXCEEDED',
+        `"${name}" must be within ${min}..${max}, got ${value}`,
+        {
+          details: { parameter: name, min, max, value },
+        },
+      );
     }
   }
   if (!Number.isInteger(resolved.samples)) {
-    throw new HalError('INVALID_PARAMETER', `"samples" must be an integer, got ${resolved.samples}`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"samples" must be an integer, got ${resolved.samples}`,
+    );
   }
   if (resolved.judge !== 'p50' && resolved.judge !== 'p99') {
-    throw new HalError('INVALID_PARAMETER', `"judge" must be "p50" or "p99", got "${String(resolved.judge)}"`);
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"judge" must be "p50" or "p99", got "${String(resolved.judge)}"`,
+    );
   }
   return resolved;
 }

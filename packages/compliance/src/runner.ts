@@ -59,18 +59,28 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
     timeoutMs: resolved.requestTimeoutMs,
   });
   if (outcome.kind === 'no-responders') {
-    throw new HalError('NOT_CONNECTED', `no device answers on "${subject}"`, { details: { subject } });
-  }
-  if (outcome.kind === 'timeout') {
-    throw new HalError('TIMEOUT', `no reply on "${subject}" within ${resolved.requestTimeoutMs} ms`, {
+    throw new HalError('NOT_CONNECTED', `no device answers on "${subject}"`, {
       details: { subject },
     });
   }
+  if (outcome.kind === 'timeout') {
+    throw new HalError(
+      'TIMEOUT',
+      `no reply on "${subject}" within ${resolved.requestTimeoutMs} ms`,
+      {
+        details: { subject },
+      },
+    );
+  }
   const first = inspect(outcome.data, CapabilityAnnouncementSchema, options.device);
   if (first.envelope === undefined || first.payload === undefined) {
-    throw new HalError('MALFORMED', `the capability reply cannot be read: ${first.issues.join('; ')}`, {
-      details: { subject, issues: first.issues },
-    });
+    throw new HalError(
+      'MALFORMED',
+      `the capability reply cannot be read: ${first.issues.join('; ')}`,
+      {
+        details: { subject, issues: first.issues },
+      },
+    );
   }
   const deviceId = options.device ?? first.envelope.device_id;
   const ctx = new RunContext(wire, deviceId, first.payload, resolved);
@@ -127,7 +137,10 @@ async function runOne(
   try {
     verdict = await check.run(ctx);
   } catch (error) {
-    verdict = { status: 'fail', reason: `the check failed: ${error instanceof Error ? error.message : String(error)}` };
+    verdict = {
+      status: 'fail',
+      reason: `the check failed: ${error instanceof Error ? error.message : String(error)}`,
+    };
   }
   return { ...base, ...verdict, durationMs: Math.round(performance.now() - started) };
 }

@@ -41,12 +41,19 @@ export class DeviceWire {
 
   /** A subject the spec does not define, under the device's address. */
   unknownSubject(): string {
-    return buildSubject({ device: this.device, domain: 'motor', type: 'differential', action: 'warp' });
+    return buildSubject({
+      device: this.device,
+      domain: 'motor',
+      type: 'differential',
+      action: 'warp',
+    });
   }
 
   /** An envelope from this client around `payload`. */
   envelope(schema: string, payload: unknown): Uint8Array {
-    return encoder.encode(JSON.stringify(makeEnvelope({ schema, device_id: this.clientId }, payload)));
+    return encoder.encode(
+      JSON.stringify(makeEnvelope({ schema, device_id: this.clientId }, payload)),
+    );
   }
 
   async request(

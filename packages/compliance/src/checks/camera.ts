@@ -22,7 +22,13 @@ export const CAMERA_CHECKS: readonly Check[] = [
     name: 'frame',
     title: 'camera.frame.req round trip',
     run: (ctx) =>
-      latencyVerdict(ctx, Math.min(ctx.options.samples, 5), LATENCY_CLASSES.interactive, () => frame(ctx), validReply),
+      latencyVerdict(
+        ctx,
+        Math.min(ctx.options.samples, 5),
+        LATENCY_CLASSES.interactive,
+        () => frame(ctx),
+        validReply,
+      ),
   },
   {
     capability: 'camera',
@@ -32,14 +38,29 @@ export const CAMERA_CHECKS: readonly Check[] = [
     run: async (ctx) => {
       const answer = await frame(ctx);
       const payload = answer.inspected?.payload;
-      if (payload === undefined) return fail(`the frame request was answered ${describeAnswer(answer)}`);
+      if (payload === undefined)
+        return fail(`the frame request was answered ${describeAnswer(answer)}`);
       const bytes = Buffer.from(payload.data, 'base64');
       if (!JPEG_START.every((b, i) => bytes[i] === b)) return fail('the frame data is not a JPEG');
       const verdict = formatVerdict(
         ctx.replies.filter((r) => r.kind === 'frame').map((r) => r.inspected),
         'frame replies',
       );
-      return verdict.status === 'pass' ? pass(`${verdict.reason}; a ${bytes.length}-byte JPEG`) : verdict;
+      return verdict.status === 'pass'
+        ? pass(`${verdict.reason}; a ${bytes.length}-byte JPEG`)
+        : verdict;
+    },
+  },
+  {
+    capability: 'camera',
+    group: 'capability',
+    name: 'works',
+    title: 'an announced camera returns a frame, not an error',
+    run: async (ctx) => {
+      const answer = await frame(ctx);
+      return answer.inspected?.payload !== undefined
+        ? pass('a frame came back')
+        : fail(`the frame request was answered ${describeAnswer(answer)}`);
     },
   },
   {

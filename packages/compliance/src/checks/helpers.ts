@@ -66,7 +66,9 @@ export async function rateVerdict(
   await sleep(ctx.options.streamWindowMs);
   const seen = stream.since(from);
   if (seen.length < 2) {
-    return fail(`${seen.length} ${what} message(s) in ${ctx.options.streamWindowMs} ms: not streaming`);
+    return fail(
+      `${seen.length} ${what} message(s) in ${ctx.options.streamWindowMs} ms: not streaming`,
+    );
   }
   const intervals = seen.slice(1).map((m, i) => m.atMs - (seen[i]?.atMs ?? m.atMs));
   const spanMs = (seen.at(-1)?.atMs ?? 0) - (seen[0]?.atMs ?? 0);
@@ -93,7 +95,8 @@ export function expectError(
 ): string | undefined {
   if (orNoResponder && answer.outcome.kind === 'no-responders') return undefined;
   const error = errorOf(answer);
-  if (error === undefined) return `expected error ${codes.join(' or ')}, got ${describeAnswer(answer)}`;
+  if (error === undefined)
+    return `expected error ${codes.join(' or ')}, got ${describeAnswer(answer)}`;
   const issues = answer.inspected?.issues ?? [];
   if (issues.length > 0) return `the error reply is malformed: ${issues.join('; ')}`;
   if (typeof error.message !== 'string' || error.message === '') return 'the error has no message';

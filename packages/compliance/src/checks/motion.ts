@@ -63,7 +63,14 @@ export async function motionVerdict(
       .since(started)
       .map((m) => m.inspected.payload)
       .filter((s): s is DifferentialState => s !== undefined)
-      .reduce((a, s) => (Math.abs(s.linear_vel_m_per_s) + Math.abs(s.angular_vel_rad_per_s) > Math.abs(a.linear_vel_m_per_s) + Math.abs(a.angular_vel_rad_per_s) ? s : a), before);
+      .reduce(
+        (a, s) =>
+          Math.abs(s.linear_vel_m_per_s) + Math.abs(s.angular_vel_rad_per_s) >
+          Math.abs(a.linear_vel_m_per_s) + Math.abs(a.angular_vel_rad_per_s)
+            ? s
+            : a,
+        before,
+      );
     return fail(
       `the state never showed linear ${linear} m/s, angular ${angular} rad/s within ${motionMs} ms (fastest seen: ${fastest.linear_vel_m_per_s.toFixed(4)} m/s, ${fastest.angular_vel_rad_per_s.toFixed(3)} rad/s)`,
     );
@@ -100,23 +107,32 @@ export async function motionVerdict(
 }
 
 /** Forward: the pose moved along the heading it had, and barely turned. */
-export function judgeForward(before: DifferentialState, after: DifferentialState): string | undefined {
+export function judgeForward(
+  before: DifferentialState,
+  after: DifferentialState,
+): string | undefined {
   const dx = after.x_m - before.x_m;
   const dy = after.y_m - before.y_m;
   const along = dx * Math.cos(before.yaw_rad) + dy * Math.sin(before.yaw_rad);
   const across = -dx * Math.sin(before.yaw_rad) + dy * Math.cos(before.yaw_rad);
   const turned = wrap(after.yaw_rad - before.yaw_rad);
-  if (along < 0.003) return `driving forward moved ${(along * 1000).toFixed(1)} mm along the heading (want > 3 mm forward)`;
-  if (Math.abs(across) > along / 2) return `driving forward moved ${(across * 1000).toFixed(1)} mm sideways`;
+  if (along < 0.003)
+    return `driving forward moved ${(along * 1000).toFixed(1)} mm along the heading (want > 3 mm forward)`;
+  if (Math.abs(across) > along / 2)
+    return `driving forward moved ${(across * 1000).toFixed(1)} mm sideways`;
   if (Math.abs(turned) > 0.1) return `driving straight turned ${turned.toFixed(3)} rad`;
   return undefined;
 }
 
 /** Counter-clockwise (REP-103): yaw grew, and the robot turned in place. */
-export function judgeTurnLeft(before: DifferentialState, after: DifferentialState): string | undefined {
+export function judgeTurnLeft(
+  before: DifferentialState,
+  after: DifferentialState,
+): string | undefined {
   const turned = wrap(after.yaw_rad - before.yaw_rad);
   const moved = Math.hypot(after.x_m - before.x_m, after.y_m - before.y_m);
-  if (turned < 0.05) return `a positive angular velocity turned ${turned.toFixed(3)} rad (want > 0.05 rad counter-clockwise)`;
+  if (turned < 0.05)
+    return `a positive angular velocity turned ${turned.toFixed(3)} rad (want > 0.05 rad counter-clockwise)`;
   if (moved > 0.005) return `turning in place moved the robot ${(moved * 1000).toFixed(1)} mm`;
   return undefined;
 }

@@ -30,14 +30,21 @@ export const MOTOR_CHECKS: readonly Check[] = [
     name: 'stop-command',
     title: 'a stop command (all-zero motor.differential.cmd) round trip',
     run: (ctx) =>
-      latencyVerdict(ctx, ctx.options.samples, LATENCY_CLASSES.lowLatency, () => ctx.stop(), validReply),
+      latencyVerdict(
+        ctx,
+        ctx.options.samples,
+        LATENCY_CLASSES.lowLatency,
+        () => ctx.stop(),
+        validReply,
+      ),
   },
   {
     capability: 'motor.differential',
     group: 'errors',
     name: 'malformed-json',
     title: 'malformed JSON gets the standard error and changes nothing',
-    run: (ctx) => refusesVerdict(ctx, cmd(ctx), new TextEncoder().encode('{"payload": {"linear'), BAD_INPUT),
+    run: (ctx) =>
+      refusesVerdict(ctx, cmd(ctx), new TextEncoder().encode('{"payload": {"linear'), BAD_INPUT),
   },
   {
     capability: 'motor.differential',
@@ -87,7 +94,9 @@ export const MOTOR_CHECKS: readonly Check[] = [
       const rateHz = ((messages.length - 1) * 1000) / (last.atMs - first.atMs);
       const announced = ctx.announcement.state_rate_hz;
       const text = `announced ${announced} Hz, measured ${rateHz.toFixed(1)} Hz`;
-      return Math.abs(rateHz - announced) <= announced * 0.25 ? pass(text, { rateHz }) : fail(text, { rateHz });
+      return Math.abs(rateHz - announced) <= announced * 0.25
+        ? pass(text, { rateHz })
+        : fail(text, { rateHz });
     },
   },
   {
@@ -130,7 +139,11 @@ export const MOTOR_CHECKS: readonly Check[] = [
     group: 'format',
     name: 'state-stream',
     title: 'state messages are valid envelopes from the device with the spec payload',
-    run: async (ctx) => formatVerdict(ctx.state.messages.map((m) => m.inspected), 'state messages'),
+    run: async (ctx) =>
+      formatVerdict(
+        ctx.state.messages.map((m) => m.inspected),
+        'state messages',
+      ),
   },
   {
     capability: 'motor.differential',

@@ -22,7 +22,8 @@ export async function resetEstop(ctx: RunContext): Promise<string | undefined> {
     'ack',
     { priority: 'high' },
   );
-  if (answer.inspected?.payload === undefined) return `the reset was answered ${describeAnswer(answer)}`;
+  if (answer.inspected?.payload === undefined)
+    return `the reset was answered ${describeAnswer(answer)}`;
   ctx.estopHeld = false;
   return undefined;
 }
@@ -32,11 +33,14 @@ async function latchVerdict(ctx: RunContext): Promise<Verdict> {
   const initial = await ctx.health();
   if (initial === undefined) return fail('no valid health reply to start from');
   if (initial.status === 'emergency_stopped') {
-    return fail("the device was already emergency-stopped: the runner does not reset someone else's e-stop");
+    return fail(
+      "the device was already emergency-stopped: the runner does not reset someone else's e-stop",
+    );
   }
   const answer = await estop(ctx);
   ctx.estopHeld = true;
-  if (answer.inspected?.payload === undefined) return fail(`the e-stop was answered ${describeAnswer(answer)}`);
+  if (answer.inspected?.payload === undefined)
+    return fail(`the e-stop was answered ${describeAnswer(answer)}`);
   if ((await ctx.health())?.status !== 'emergency_stopped') {
     return fail('after the e-stop, health.status is not emergency_stopped');
   }
@@ -48,7 +52,11 @@ async function latchVerdict(ctx: RunContext): Promise<Verdict> {
     const changed = await changedBy(ctx, async () => {
       const drive = await ctx.ask(
         ctx.wire.subject('differentialCmd'),
-        ctx.drive({ linear_vel_m_per_s: ctx.options.driveSpeedMPerS, angular_vel_rad_per_s: 0, duration_ms: 500 }),
+        ctx.drive({
+          linear_vel_m_per_s: ctx.options.driveSpeedMPerS,
+          angular_vel_rad_per_s: 0,
+          duration_ms: 500,
+        }),
         'ack',
       );
       problem = expectError(drive, ['EMERGENCY_STOPPED']);
@@ -57,7 +65,8 @@ async function latchVerdict(ctx: RunContext): Promise<Verdict> {
     if (changed !== undefined) return fail(`a drive while e-stopped: ${changed}`);
   }
   await sleep(200);
-  if ((await ctx.health())?.status !== 'emergency_stopped') return fail('the e-stop did not stay latched');
+  if ((await ctx.health())?.status !== 'emergency_stopped')
+    return fail('the e-stop did not stay latched');
   const resetProblem = await resetEstop(ctx);
   if (resetProblem !== undefined) return fail(resetProblem);
   const status = (await ctx.health())?.status;
@@ -110,7 +119,11 @@ export const SAFETY_CHECKS: readonly Check[] = [
     run: async (ctx) =>
       formatVerdict(
         ctx.replies
-          .filter((r) => r.subject === ctx.wire.subject('estop') || r.subject === ctx.wire.subject('estopReset'))
+          .filter(
+            (r) =>
+              r.subject === ctx.wire.subject('estop') ||
+              r.subject === ctx.wire.subject('estopReset'),
+          )
           .map((r) => r.inspected),
         'e-stop replies',
       ),

@@ -25,7 +25,11 @@ function sensorChecks(
       group: 'format',
       name: 'stream',
       title: `${subject} messages are valid envelopes from the device with the spec payload`,
-      run: async (ctx) => formatVerdict(stream(ctx).messages.map((m) => m.inspected), `${subject} messages`),
+      run: async (ctx) =>
+        formatVerdict(
+          stream(ctx).messages.map((m) => m.inspected),
+          `${subject} messages`,
+        ),
     },
     {
       capability,

@@ -6,7 +6,11 @@ import { fail, pass } from './check.js';
 import { formatVerdict, latencyVerdict, refusesVerdict, validReply } from './helpers.js';
 
 const capabilityRequest = (ctx: Parameters<Check['run']>[0]) =>
-  ctx.ask(ctx.wire.subject('capabilityReq'), ctx.wire.envelope('hal/system/capability/req/1.0', {}), 'capabilities');
+  ctx.ask(
+    ctx.wire.subject('capabilityReq'),
+    ctx.wire.envelope('hal/system/capability/req/1.0', {}),
+    'capabilities',
+  );
 
 const healthRequest = (ctx: Parameters<Check['run']>[0], diagnostics: boolean) =>
   ctx.ask(
@@ -22,7 +26,13 @@ export const SYSTEM_CHECKS: readonly Check[] = [
     name: 'health',
     title: 'system.health.req round trip',
     run: (ctx) =>
-      latencyVerdict(ctx, ctx.options.samples, LATENCY_CLASSES.interactive, () => healthRequest(ctx, false), validReply),
+      latencyVerdict(
+        ctx,
+        ctx.options.samples,
+        LATENCY_CLASSES.interactive,
+        () => healthRequest(ctx, false),
+        validReply,
+      ),
   },
   {
     capability: 'system',
@@ -30,7 +40,13 @@ export const SYSTEM_CHECKS: readonly Check[] = [
     name: 'capability-query',
     title: 'system.capability.req round trip',
     run: (ctx) =>
-      latencyVerdict(ctx, ctx.options.samples, LATENCY_CLASSES.interactive, () => capabilityRequest(ctx), validReply),
+      latencyVerdict(
+        ctx,
+        ctx.options.samples,
+        LATENCY_CLASSES.interactive,
+        () => capabilityRequest(ctx),
+        validReply,
+      ),
   },
   {
     capability: 'system',
@@ -59,9 +75,13 @@ export const SYSTEM_CHECKS: readonly Check[] = [
       const verdict = formatVerdict(replies, 'capability replies');
       if (verdict.status === 'fail') return verdict;
       const want = JSON.stringify([...ctx.caps].sort());
-      const differs = replies.find((r) => JSON.stringify([...(r.envelope?.caps ?? [])].sort()) !== want);
+      const differs = replies.find(
+        (r) => JSON.stringify([...(r.envelope?.caps ?? [])].sort()) !== want,
+      );
       if (differs !== undefined) {
-        return fail(`envelope caps ${JSON.stringify(differs.envelope?.caps)} differ from the payload's ${want}`);
+        return fail(
+          `envelope caps ${JSON.stringify(differs.envelope?.caps)} differ from the payload's ${want}`,
+        );
       }
       return verdict;
     },
@@ -72,7 +92,8 @@ export const SYSTEM_CHECKS: readonly Check[] = [
     name: 'announcement',
     title: 'system.capability.announce is published and matches the capability query',
     run: async (ctx) => {
-      const waitMs = ctx.options.announceTimeoutMs - (performance.now() - ctx.announcements.startedAtMs);
+      const waitMs =
+        ctx.options.announceTimeoutMs - (performance.now() - ctx.announcements.startedAtMs);
       if (ctx.announcements.messages.length === 0 && waitMs > 0) {
         await ctx.announcements.next(waitMs);
       }
@@ -84,7 +105,8 @@ export const SYSTEM_CHECKS: readonly Check[] = [
       if (format.status === 'fail') return format;
       const announced = JSON.stringify([...(first.inspected.payload?.caps ?? [])].sort());
       const queried = JSON.stringify([...ctx.caps].sort());
-      if (announced !== queried) return fail(`announced ${announced}, but the query answered ${queried}`);
+      if (announced !== queried)
+        return fail(`announced ${announced}, but the query answered ${queried}`);
       return pass(`announced ${ctx.caps.length} capabilities, the same as the query`);
     },
   },
@@ -94,16 +116,19 @@ export const SYSTEM_CHECKS: readonly Check[] = [
     name: 'malformed-json',
     title: 'malformed JSON to system.health.req gets the standard error and changes nothing',
     run: (ctx) =>
-      refusesVerdict(ctx, ctx.wire.subject('health'), new TextEncoder().encode('{"hal_major": 1,'), [
-        'MALFORMED',
-        'INVALID_PARAMETER',
-      ]),
+      refusesVerdict(
+        ctx,
+        ctx.wire.subject('health'),
+        new TextEncoder().encode('{"hal_major": 1,'),
+        ['MALFORMED', 'INVALID_PARAMETER'],
+      ),
   },
   {
     capability: 'system',
     group: 'errors',
     name: 'unknown-subject',
-    title: 'a subject the spec does not define gets an error or no responder, never a success or silence',
+    title:
+      'a subject the spec does not define gets an error or no responder, never a success or silence',
     run: (ctx) =>
       refusesVerdict(
         ctx,
