@@ -26,7 +26,11 @@ beforeAll(async () => {
     connection: { type: 'wifi', host: '127.0.0.1', udpPort: emulator.udpPort },
   });
   await robot.initialize();
-  gateway = await serveHalOnNats(robot, { servers: server.url, deviceId: 'cube-emu', stateRateHz: 20 });
+  gateway = await serveHalOnNats(robot, {
+    servers: server.url,
+    deviceId: 'cube-emu',
+    stateRateHz: 20,
+  });
 }, 30_000);
 
 afterAll(async () => {
@@ -38,17 +42,23 @@ afterAll(async () => {
 });
 
 describe('runCompliance against a gateway serving PhysicalHAL and the emulated robot', () => {
-  it('passes every check, and finds the camera and sensors the V1 cube lacks honestly absent', { timeout: 120_000 }, async () => {
-    const report = await runCompliance({ connection: nc, device: 'cube-emu' });
-    const failures = report.checks.filter((c) => c.status === 'fail').map((c) => `${c.id}: ${c.reason}`);
-    expect(failures).toEqual([]);
-    expect(report.mode).toBe('physical');
-    const byId = new Map(report.checks.map((c) => [c.id, c]));
-    expect(byId.get('motor.differential/state/drive-forward')?.status).toBe('pass');
-    expect(byId.get('safety/state/estop-latches')?.status).toBe('pass');
-    expect(byId.get('camera/capability/not-implemented')?.status).toBe('pass');
-    expect(byId.get('camera/timing/frame')?.status).toBe('skip');
-    expect(byId.get('sensor.imu/capability/not-streamed')?.status).toBe('pass');
-    expect(robot.safety.isEmergencyStopped()).toBe(false);
-  });
+  it(
+    'passes every check, and finds the camera and sensors the V1 cube lacks honestly absent',
+    { timeout: 120_000 },
+    async () => {
+      const report = await runCompliance({ connection: nc, device: 'cube-emu' });
+      const failures = report.checks
+        .filter((c) => c.status === 'fail')
+        .map((c) => `${c.id}: ${c.reason}`);
+      expect(failures).toEqual([]);
+      expect(report.mode).toBe('physical');
+      const byId = new Map(report.checks.map((c) => [c.id, c]));
+      expect(byId.get('motor.differential/state/drive-forward')?.status).toBe('pass');
+      expect(byId.get('safety/state/estop-latches')?.status).toBe('pass');
+      expect(byId.get('camera/capability/not-implemented')?.status).toBe('pass');
+      expect(byId.get('camera/timing/frame')?.status).toBe('skip');
+      expect(byId.get('sensor.imu/capability/not-streamed')?.status).toBe('pass');
+      expect(robot.safety.isEmergencyStopped()).toBe(false);
+    },
+  );
 });

@@ -8,7 +8,6 @@ import {
   RangeDataSchema,
 } from '@hal/nats';
 import type {
-  CameraFrame,
   CapabilityAnnouncement,
   DifferentialState,
   Health,

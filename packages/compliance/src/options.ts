@@ -32,6 +32,8 @@ export interface ComplianceOptions {
   motionMs?: number;
   /** The envelope's `device_id` of what the runner sends. Default `hal-compliance`. */
   clientId?: string;
+  /** Aborting stops the run after the running check (the robot is still stopped and reset). */
+  signal?: AbortSignal | undefined;
   /** Called when a check starts and when it ends. */
   onProgress?: (event: ProgressEvent) => void;
 }
@@ -42,7 +44,7 @@ export type ProgressEvent =
   | { type: 'result'; result: CheckResult };
 
 export type ResolvedOptions = Required<
-  Omit<ComplianceOptions, 'device' | 'capabilities' | 'onProgress' | 'connection'>
+  Omit<ComplianceOptions, 'device' | 'capabilities' | 'onProgress' | 'connection' | 'signal'>
 >;
 
 export function resolveOptions(options: ComplianceOptions): ResolvedOptions {

@@ -48,8 +48,10 @@ export interface ComplianceReport {
   judge: 'p50' | 'p99';
   checks: CheckResult[];
   summary: { passed: number; failed: number; skipped: number };
-  /** True when no check failed. */
+  /** True when no check failed (and the run was not aborted). */
   ok: boolean;
+  /** The run was aborted before every check ran. */
+  aborted: boolean;
   startedAt: string;
   durationMs: number;
 }

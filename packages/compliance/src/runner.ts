@@ -91,6 +91,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
   const checks: CheckResult[] = [];
   try {
     for (const check of CHECKS) {
+      if (options.signal?.aborted === true) break;
       if (!capabilities.includes(check.capability)) continue;
       // a check of honest absence does not apply to a capability the device has
       if (check.when === 'unannounced' && announces(ctx.caps, check.capability)) continue;
@@ -105,6 +106,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
   const count = (status: CheckResult['status']) => checks.filter((c) => c.status === status).length;
   const summary = { passed: count('pass'), failed: count('fail'), skipped: count('skip') };
   return {
+    aborted: options.signal?.aborted === true,
     deviceId,
     addressed: options.device,
     deviceType: ctx.announcement.device_type,
@@ -114,7 +116,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
     judge: resolved.judge,
     checks,
     summary,
-    ok: summary.failed === 0,
+    ok: summary.failed === 0 && options.signal?.aborted !== true,
     startedAt: startedAt.toISOString(),
     durationMs: Math.round(performance.now() - t0),
   };
