@@ -180,4 +180,31 @@ describe('runCompliance against a fake device written from the spec', () => {
       expect(device.estopped).toBe(false);
     },
   );
+
+  it(
+    'stops after the running check when aborted, and reports the run as not complete',
+    { timeout: 60_000 },
+    async () => {
+      const device = startFakeSpecDevice(nc, 'fake-aborted');
+      await nc.flush();
+      const abort = new AbortController();
+      try {
+        const report = await runCompliance({
+          connection: nc,
+          device: 'fake-aborted',
+          samples: 3,
+          signal: abort.signal,
+          onProgress: (event) => {
+            if (event.type === 'result') abort.abort();
+          },
+        });
+        expect(report.checks.length).toBe(1);
+        expect(report.aborted).toBe(true);
+        expect(report.ok).toBe(false);
+        expect(device.moving).toBe(false);
+      } finally {
+        device.close();
+      }
+    },
+  );
 });
