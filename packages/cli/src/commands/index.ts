@@ -8,6 +8,7 @@ import { registerStatus } from './status.js';
 import { registerTeleop } from './teleop.js';
 import { registerDiscover } from './discover.js';
 import { registerEmulate } from './emulate.js';
+import { registerTest } from './test.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -27,4 +28,5 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerServe,
   registerEmulate,
   registerDiscover,
+  registerTest,
 ];

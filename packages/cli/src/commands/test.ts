@@ -1,0 +1,34 @@
+// `hal test hal --device X --capability motor.differential`: the spec's compliance command.
+import { Option } from 'commander';
+import { SPEC_CAPABILITIES } from '@hal/compliance';
+import { addNatsOptions, deviceIdArg } from '../nats-options.js';
+import { runTestHal } from '../test-hal/run-test-hal.js';
+import { capabilityArg, judgeArg, samplesArg } from '../test-hal/args.js';
+import type { RegisterCommand } from './index.js';
+
+export const registerTest: RegisterCommand = (program, ctx) => {
+  const command = program
+    .command('test')
+    .description(
+      'Check a device on NATS against the Tafy HAL spec: message format, timing classes, error handling, capability accuracy, state consistency',
+    )
+    .argument('<suite>', 'what to test: "hal", as the spec writes it (hal test hal ...)')
+    .option(
+      '--device <id>',
+      "the device to check (default: the spec's default device)",
+      deviceIdArg,
+    )
+    .addOption(
+      new Option(
+        '--capability <name>',
+        `check only this capability (repeatable): ${SPEC_CAPABILITIES.join(', ')}; default all`,
+      ).argParser(capabilityArg),
+    )
+    .option('--samples <n>', 'requests per latency measurement (default 20)', samplesArg)
+    .option(
+      '--judge <percentile>',
+      'percentile held to the latency classes: p50 or p99 (default p50)',
+      judgeArg,
+    );
+  addNatsOptions(command).action((suite: string, options) => runTestHal(ctx, suite, options));
+};

@@ -1,0 +1,33 @@
+// Parsers for `hal test hal`'s options: bad values are usage errors before anything is sent.
+import { InvalidArgumentError } from 'commander';
+import { SPEC_CAPABILITIES, specCapability } from '@hal/compliance';
+import type { SpecCapability } from '@hal/compliance';
+
+/** Collects repeated `--capability` values, each one the runner knows. */
+export function capabilityArg(
+  value: string,
+  previous: SpecCapability[] | undefined,
+): SpecCapability[] {
+  const capability = specCapability(value);
+  if (capability === undefined) {
+    throw new InvalidArgumentError(
+      `a capability is one of ${SPEC_CAPABILITIES.join(', ')}, got "${value}"`,
+    );
+  }
+  return [...(previous ?? []), capability];
+}
+
+export function samplesArg(value: string): number {
+  const n = Number(value);
+  if (!/^\d+$/.test(value) || n < 1 || n > 10_000) {
+    throw new InvalidArgumentError(`samples is a whole number 1..10000, got "${value}"`);
+  }
+  return n;
+}
+
+export function judgeArg(value: string): 'p50' | 'p99' {
+  if (value !== 'p50' && value !== 'p99') {
+    throw new InvalidArgumentError(`judge is p50 or p99, got "${value}"`);
+  }
+  return value;
+}

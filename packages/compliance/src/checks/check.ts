@@ -1,0 +1,42 @@
+import type { RunContext } from '../context.js';
+import type { CheckGroup, Measured } from '../report.js';
+import type { LatencyClass, SpecCapability } from '../spec.js';
+
+/** What a check found. */
+export interface Verdict {
+  status: 'pass' | 'fail';
+  reason: string;
+  measured?: Measured;
+  latencyClass?: LatencyClass;
+  rateHz?: number;
+}
+
+/** One check of the runner. */
+export interface Check {
+  capability: SpecCapability;
+  group: CheckGroup;
+  /** Short id within its capability and group, e.g. `out-of-range`. */
+  name: string;
+  title: string;
+  /**
+   * 'announced' (default): runs when the device announces the capability, else it is skipped;
+   * 'unannounced': runs only when it does not (the capability must then be honestly absent).
+   */
+  when?: 'announced' | 'unannounced';
+  run(ctx: RunContext): Promise<Verdict>;
+}
+
+export const pass = (reason: string, extra: Omit<Verdict, 'status' | 'reason'> = {}): Verdict => ({
+  status: 'pass',
+  reason,
+  ...extra,
+});
+
+export const fail = (reason: string, extra: Omit<Verdict, 'status' | 'reason'> = {}): Verdict => ({
+  status: 'fail',
+  reason,
+  ...extra,
+});
+
+export const sleep = (ms: number): Promise<void> =>
+  new Promise((resolve) => setTimeout(resolve, ms));

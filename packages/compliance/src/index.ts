@@ -1,0 +1,13 @@
+export { runCompliance, CHECKS } from './runner.js';
+export { formatReport, measuredText, specText } from './format-report.js';
+export {
+  LATENCY_CLASSES,
+  SPEC_CAPABILITIES,
+  STREAM_RATE_HZ,
+  announces,
+  specCapability,
+} from './spec.js';
+export type { LatencyClass, SpecCapability } from './spec.js';
+export type { ComplianceOptions, ProgressEvent } from './options.js';
+export type { CheckGroup, CheckResult, CheckStatus, ComplianceReport, Measured } from './report.js';
+export type { Check, Verdict } from './checks/check.js';

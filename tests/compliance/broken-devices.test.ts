@@ -1,0 +1,210 @@
+// The compliance runner fails a device that breaks the spec, naming the check: one fault per
+// device (a fake spec device written with plain nats.js), so every check group is shown able to
+// fail, beside the same fake device without faults passing every check.
+import { runCompliance } from '@hal/compliance';
+import type { ComplianceReport, SpecCapability } from '@hal/compliance';
+import { connect } from '@nats-io/transport-node';
+import type { NatsConnection } from '@nats-io/transport-node';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import { startFakeSpecDevice } from './fake-spec-device.js';
+import type { FakeSpecDevice, Faults } from './fake-spec-device.js';
+
+let nc: NatsConnection;
+let next = 0;
+
+beforeAll(async () => {
+  const server = await startNatsServer();
+  nc = await connect({ servers: server.url });
+}, 30_000);
+
+afterAll(async () => {
+  await nc?.close();
+  await stopAllNatsServers();
+});
+
+/** Runs the checks of `capabilities` against a fake device with `faults`. */
+async function check(
+  faults: Faults,
+  capabilities?: SpecCapability[],
+): Promise<{ report: ComplianceReport; device: FakeSpecDevice }> {
+  const deviceId = `fake-${(next += 1)}`;
+  const device = startFakeSpecDevice(nc, deviceId, faults);
+  await nc.flush();
+  try {
+    const report = await runCompliance({
+      connection: nc,
+      device: deviceId,
+      capabilities,
+      samples: 5,
+      streamWindowMs: 1000,
+      announceTimeoutMs: 3000,
+      motionMs: 2500,
+    });
+    return { report, device };
+  } finally {
+    device.close();
+  }
+}
+
+const failed = (report: ComplianceReport) =>
+  report.checks.filter((c) => c.status === 'fail').map((c) => c.id);
+
+describe('runCompliance against a fake device written from the spec', () => {
+  it(
+    'passes every check when the device has no fault, including honest absence of what it lacks',
+    { timeout: 90_000 },
+    async () => {
+      const { report, device } = await check({});
+      expect(report.checks.filter((c) => c.status === 'fail')).toEqual([]);
+      expect(report.ok).toBe(true);
+      // camera, IMU and range are not announced: checked to be absent, the rest of theirs skipped
+      const absent = report.checks
+        .filter((c) => c.status === 'pass' && c.group === 'capability')
+        .map((c) => c.id);
+      expect(absent).toEqual(
+        expect.arrayContaining([
+          'camera/capability/not-implemented',
+          'sensor.imu/capability/not-streamed',
+          'sensor.range/capability/not-streamed',
+        ]),
+      );
+      const skipped = report.checks.filter((c) => c.status === 'skip');
+      expect(skipped.length).toBeGreaterThan(0);
+      for (const skip of skipped)
+        expect(skip.reason).toContain(`does not announce ${skip.capability}`);
+      expect(device.estopped).toBe(false);
+      expect(device.moving).toBe(false);
+    },
+  );
+
+  it(
+    'fails message format when a reply carries the wrong hal_major',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ badEnvelope: true }, ['system']);
+      expect(failed(report)).toContain('system/format/health-reply');
+      const check_ = report.checks.find((c) => c.id === 'system/format/health-reply');
+      expect(check_?.reason).toContain('hal_major is 2');
+    },
+  );
+
+  it(
+    'fails the interactive timing class when health replies take 150 ms',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ slowHealthMs: 150 }, ['system']);
+      expect(failed(report)).toContain('system/timing/health');
+      const health = report.checks.find((c) => c.id === 'system/timing/health');
+      expect(health?.measured?.p50Ms).toBeGreaterThanOrEqual(150);
+    },
+  );
+
+  it(
+    'fails the stream rate (and the state checks) when the device never streams state',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ noState: true }, ['motor.differential']);
+      expect(failed(report)).toEqual(
+        expect.arrayContaining([
+          'motor.differential/timing/state-rate',
+          'motor.differential/state/drive-forward',
+          'motor.differential/format/state-stream',
+        ]),
+      );
+    },
+  );
+
+  it(
+    'fails error handling when an out-of-range velocity is accepted, and says it moved',
+    { timeout: 60_000 },
+    async () => {
+      const { report, device } = await check({ acceptsOutOfRange: true }, ['motor.differential']);
+      expect(failed(report)).toEqual(['motor.differential/errors/out-of-range']);
+      expect(
+        report.checks.find((c) => c.id === 'motor.differential/errors/out-of-range')?.reason,
+      ).toContain('expected error RANGE_EXCEEDED, got a success reply');
+      expect(device.moving).toBe(false); // stopped on the way out
+    },
+  );
+
+  it(
+    'fails capability accuracy when the announced state rate is not the streamed one',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ announcesWrongRate: true }, ['motor.differential']);
+      expect(failed(report)).toEqual(['motor.differential/capability/announced-rate']);
+    },
+  );
+
+  it(
+    'fails capability accuracy when the device streams IMU data it does not announce',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ unannouncedImu: true }, ['sensor.imu']);
+      expect(failed(report)).toEqual(['sensor.imu/capability/not-streamed']);
+    },
+  );
+
+  it(
+    'fails state consistency when a positive angular velocity turns the robot clockwise',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ turnsBackwards: true }, ['motor.differential']);
+      expect(failed(report)).toEqual(['motor.differential/state/turn-left']);
+      expect(
+        report.checks.find((c) => c.id === 'motor.differential/state/turn-left')?.reason,
+      ).toMatch(/turned -0\.\d+ rad/);
+    },
+  );
+
+  it(
+    'fails state consistency when the e-stop clears itself on the next command',
+    { timeout: 60_000 },
+    async () => {
+      const { report, device } = await check({ estopNotLatched: true }, ['safety']);
+      expect(failed(report)).toEqual(['safety/state/estop-latches']);
+      expect(device.estopped).toBe(false);
+    },
+  );
+
+  it(
+    'resets its own e-stop even when the e-stop check fails half-way',
+    { timeout: 60_000 },
+    async () => {
+      const { report, device } = await check({ stateHidesEstop: true }, ['safety']);
+      expect(failed(report)).toEqual(['safety/state/estop-latches']);
+      expect(report.checks.find((c) => c.id === 'safety/state/estop-latches')?.reason).toContain(
+        'never showed emergency_stopped',
+      );
+      expect(device.estopped).toBe(false);
+    },
+  );
+
+  it(
+    'stops after the running check when aborted, and reports the run as not complete',
+    { timeout: 60_000 },
+    async () => {
+      const device = startFakeSpecDevice(nc, 'fake-aborted');
+      await nc.flush();
+      const abort = new AbortController();
+      try {
+        const report = await runCompliance({
+          connection: nc,
+          device: 'fake-aborted',
+          samples: 3,
+          signal: abort.signal,
+          onProgress: (event) => {
+            if (event.type === 'result') abort.abort();
+          },
+        });
+        expect(report.checks.length).toBe(1);
+        expect(report.aborted).toBe(true);
+        expect(report.ok).toBe(false);
+        expect(device.moving).toBe(false);
+      } finally {
+        device.close();
+      }
+    },
+  );
+});

@@ -1,0 +1,162 @@
+// `hal test hal ...` as a user runs it: the real bin as a child process against a gateway serving
+// SimulationHAL on a real nats-server, and in-process (runHal) against a broken device.
+import { spawn } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { runHal } from '@hal/cli';
+import type { CliIO } from '@hal/cli';
+import type { ComplianceReport } from '@hal/compliance';
+import { serveHalOnNats } from '@hal/nats';
+import type { HalGateway } from '@hal/nats';
+import { SimulationHAL } from '@hal/simulation';
+import { connect } from '@nats-io/transport-node';
+import type { NatsConnection } from '@nats-io/transport-node';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import type { NatsServer } from '../nats/nats-server.js';
+import { startFakeSpecDevice } from './fake-spec-device.js';
+import type { FakeSpecDevice } from './fake-spec-device.js';
+
+const MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
+
+let server: NatsServer;
+let nc: NatsConnection;
+let hal: SimulationHAL;
+let gateway: HalGateway;
+let broken: FakeSpecDevice;
+
+beforeAll(async () => {
+  server = await startNatsServer();
+  nc = await connect({ servers: server.url });
+  hal = new SimulationHAL({ clock: 'realtime' });
+  await hal.initialize();
+  gateway = await serveHalOnNats(hal, { servers: server.url, deviceId: 'sim-cli' });
+  broken = startFakeSpecDevice(nc, 'fake-broken', { acceptsOutOfRange: true });
+  await nc.flush();
+}, 30_000);
+
+afterAll(async () => {
+  broken?.close();
+  await gateway?.close();
+  await hal?.cleanup();
+  await nc?.close();
+  await stopAllNatsServers();
+});
+
+/** Records what an in-process `hal` run writes. */
+function captureIO(): CliIO & { stdout(): string; stderr(): string } {
+  let out = '';
+  let err = '';
+  return {
+    out: (text) => void (out += text),
+    err: (text) => void (err += text),
+    signal: new AbortController().signal,
+    env: {},
+    stdout: () => out,
+    stderr: () => err,
+  };
+}
+
+/** Runs `hal ...args` as a process; every run is bounded. */
+function hal_(args: string[]): Promise<{ code: number | null; stdout: string; stderr: string }> {
+  const child = spawn(
+    process.execPath,
+    ['--conditions=@hal/source', '--import', 'tsx', MAIN, ...args],
+    {
+      stdio: ['ignore', 'pipe', 'pipe'],
+    },
+  );
+  let stdout = '';
+  let stderr = '';
+  child.stdout.on('data', (chunk: Buffer) => (stdout += chunk.toString()));
+  child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
+  const timer = setTimeout(() => child.kill('SIGKILL'), 90_000);
+  return new Promise((resolve) =>
+    child.once('exit', (code) => {
+      clearTimeout(timer);
+      resolve({ code, stdout, stderr });
+    }),
+  );
+}
+
+describe('hal test hal', () => {
+  it(
+    'checks motor.differential of a device as a process: progress on stderr, the table on stdout, exit 0',
+    { timeout: 120_000 },
+    async () => {
+      const run = await hal_([
+        'test',
+        'hal',
+        '--device',
+        'sim-cli',
+        '--capability',
+        'motor.differential',
+        '--nats',
+        server.url,
+      ]);
+      expect(run.code, run.stderr).toBe(0);
+      expect(run.stderr).toContain('checking sim-cli');
+      expect(run.stderr).toContain('PASS  motor.differential/state/drive-forward');
+      expect(run.stdout).toMatch(/^RESULT +CAPABILITY +GROUP +CHECK +MEASURED +SPEC$/m);
+      expect(run.stdout).toMatch(
+        /PASS +motor\.differential +timing +a stop command .* low-latency < 10 ms \(p50\)/,
+      );
+      expect(run.stdout).toMatch(/\d+ passed, 0 failed, 0 skipped in [\d.]+ s: COMPLIANT/);
+      expect(run.stdout).not.toContain('system.health.req');
+    },
+  );
+
+  it(
+    'writes the report as JSON with --json, for the default device when --device is left out',
+    { timeout: 120_000 },
+    async () => {
+      const run = await hal_([
+        '--json',
+        'test',
+        'hal',
+        '--capability',
+        'system',
+        '--samples',
+        '5',
+        '--nats',
+        server.url,
+      ]);
+      expect(run.code, run.stderr).toBe(0);
+      expect(run.stderr).toBe('');
+      const report = JSON.parse(run.stdout) as ComplianceReport;
+      expect(report.deviceId).toBe('sim-cli');
+      expect(report.addressed).toBeUndefined();
+      expect(report.ok).toBe(true);
+      expect(report.checks.find((c) => c.id === 'system/timing/health')?.measured?.samples).toBe(5);
+    },
+  );
+
+  it(
+    'exits 1 naming the failed check when a device accepts an out-of-range velocity',
+    { timeout: 120_000 },
+    async () => {
+      const io = captureIO();
+      const code = await runHal(
+        [
+          'test',
+          'hal',
+          '--device',
+          'fake-broken',
+          '--capability',
+          'motor.differential',
+          '--samples',
+          '5',
+          '--nats',
+          server.url,
+        ],
+        io,
+      );
+      expect(code).toBe(1);
+      expect(io.stdout()).toMatch(/FAIL +motor\.differential +errors +a velocity beyond the robot/);
+      expect(io.stdout()).toContain('NOT COMPLIANT');
+      expect(io.stderr()).toMatch(
+        /hal: CHECK_FAILED: 1 of \d+ checks failed: motor\.differential\/errors\/out-of-range\n$/,
+      );
+      expect(broken.moving).toBe(false);
+    },
+  );
+});

@@ -1,0 +1,194 @@
+// A device written only from the Tafy HAL spec, with plain nats.js (no @hal/nats): a kinematic
+// point robot that streams state, takes drive commands, answers health and capability queries
+// and latches an e-stop. Each fault breaks one thing, so the tests can show that every check
+// group of the compliance runner fails a device that gets it wrong.
+import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
+
+export interface Faults {
+  /** Health replies claim hal_major 2 (message format). */
+  badEnvelope?: boolean;
+  /** Health replies come this late, ms (timing classes). */
+  slowHealthMs?: number;
+  /** No state stream at all (timing: the stream rate). */
+  noState?: boolean;
+  /** Drives at any speed instead of RANGE_EXCEEDED (error handling). */
+  acceptsOutOfRange?: boolean;
+  /** Announces 50 Hz while streaming at 20 Hz (capability accuracy). */
+  announcesWrongRate?: boolean;
+  /** Streams IMU data it does not announce (capability accuracy). */
+  unannouncedImu?: boolean;
+  /** A positive angular velocity turns the pose clockwise, while the state reports it as asked (state consistency). */
+  turnsBackwards?: boolean;
+  /** The e-stop clears itself on the next drive command (state consistency). */
+  estopNotLatched?: boolean;
+  /** The state stream never reports the e-stop (state consistency; the runner must still reset). */
+  stateHidesEstop?: boolean;
+}
+
+const TOP_SPEED = 0.05; // m/s
+const TOP_TURN = 1; // rad/s
+const RATE_HZ = 20;
+
+export interface FakeSpecDevice {
+  readonly estopped: boolean;
+  readonly moving: boolean;
+  close(): void;
+}
+
+export function startFakeSpecDevice(
+  nc: NatsConnection,
+  deviceId: string,
+  faults: Faults = {},
+): FakeSpecDevice {
+  const caps = ['motor.differential:v1.0', 'safety.estop:v1.0', 'system.health:v1.0'];
+  const robot = { x: 0, y: 0, yaw: 0, v: 0, w: 0, until: 0, estopped: false };
+  const subs: Subscription[] = [];
+  const timers: NodeJS.Timeout[] = [];
+  const started = Date.now();
+  const at = (domain: string, type: string, action: string) =>
+    `hal.v1.dev.${deviceId}.${domain}.${type}.${action}`;
+  const envelope = (schema: string, payload: unknown, major = 1) =>
+    new TextEncoder().encode(
+      JSON.stringify({
+        hal_major: major,
+        hal_minor: 0,
+        schema,
+        device_id: deviceId,
+        caps,
+        ts: new Date().toISOString(),
+        payload,
+      }),
+    );
+  const reply = (msg: Msg, schema: string, payload: unknown, major = 1) => {
+    if (msg.reply) msg.respond(envelope(schema, payload, major));
+  };
+  const error = (msg: Msg, code: string, message: string) =>
+    reply(msg, 'tafylabs/hal/error/1.0', { error: { code, message } });
+  const read = (msg: Msg): Record<string, unknown> | undefined => {
+    try {
+      const body = JSON.parse(new TextDecoder().decode(msg.data)) as { payload?: unknown };
+      return typeof body.payload === 'object' && body.payload !== null
+        ? (body.payload as Record<string, unknown>)
+        : undefined;
+    } catch {
+      return undefined;
+    }
+  };
+  const serve = (subject: string, handler: (msg: Msg) => void) =>
+    subs.push(nc.subscribe(subject, { callback: (_e, msg) => handler(msg) }));
+  const announcement = () => ({
+    device_type: 'fake-spec-robot',
+    mode: 'simulation',
+    caps,
+    state_rate_hz: faults.announcesWrongRate ? 50 : RATE_HZ,
+  });
+  const health = () => ({
+    status: robot.estopped ? 'emergency_stopped' : 'healthy',
+    uptime_s: (Date.now() - started) / 1000,
+    mode: 'simulation',
+  });
+
+  serve(at('motor', 'differential', 'cmd'), (msg) => {
+    const cmd = read(msg);
+    if (cmd === undefined) return error(msg, 'MALFORMED', 'not a JSON envelope');
+    const v = cmd['linear_vel_m_per_s'];
+    const w = cmd['angular_vel_rad_per_s'];
+    if (typeof v !== 'number' || typeof w !== 'number')
+      return error(msg, 'INVALID_PARAMETER', 'velocities must be numbers');
+    if (!faults.acceptsOutOfRange && (Math.abs(v) > TOP_SPEED || Math.abs(w) > TOP_TURN)) {
+      return error(msg, 'RANGE_EXCEEDED', `top speed ${TOP_SPEED} m/s, ${TOP_TURN} rad/s`);
+    }
+    if (robot.estopped && (v !== 0 || w !== 0)) {
+      if (!faults.estopNotLatched) return error(msg, 'EMERGENCY_STOPPED', 'e-stop latched');
+      robot.estopped = false;
+    }
+    const duration = typeof cmd['duration_ms'] === 'number' ? cmd['duration_ms'] : 3000;
+    Object.assign(robot, { v, w, until: Date.now() + duration });
+    reply(msg, 'tafylabs/hal/ack/1.0', { ok: true });
+  });
+  serve(at('system', 'health', 'req'), (msg) => {
+    if (read(msg) === undefined) return error(msg, 'MALFORMED', 'not a JSON envelope');
+    const body = { ...health(), diagnostics: { errors: [] } };
+    const send = () =>
+      reply(msg, 'tafylabs/hal/system/health/1.0', body, faults.badEnvelope ? 2 : 1);
+    if (faults.slowHealthMs !== undefined) setTimeout(send, faults.slowHealthMs);
+    else send();
+  });
+  serve(at('system', 'capability', 'req'), (msg) =>
+    reply(msg, 'tafylabs/hal/system/capability/1.0', announcement()),
+  );
+  serve(at('camera', 'frame', 'req'), (msg) => error(msg, 'NOT_IMPLEMENTED', 'no camera'));
+  serve(at('safety', 'estop', 'cmd'), (msg) => {
+    Object.assign(robot, { estopped: true, v: 0, w: 0 });
+    reply(msg, 'tafylabs/hal/ack/1.0', { ok: true });
+  });
+  serve(at('safety', 'estop', 'reset'), (msg) => {
+    robot.estopped = false;
+    reply(msg, 'tafylabs/hal/ack/1.0', { ok: true });
+  });
+
+  let last = Date.now();
+  timers.push(
+    setInterval(() => {
+      const now = Date.now();
+      if (now >= robot.until) Object.assign(robot, { v: 0, w: 0 });
+      const dt = (now - last) / 1000;
+      last = now;
+      robot.yaw += (faults.turnsBackwards ? -robot.w : robot.w) * dt;
+      robot.x += robot.v * Math.cos(robot.yaw) * dt;
+      robot.y += robot.v * Math.sin(robot.yaw) * dt;
+      if (faults.noState) return;
+      nc.publish(
+        at('motor', 'differential', 'state'),
+        envelope('tafylabs/hal/motor/differential/state/1.0', {
+          left_vel_m_per_s: robot.v - robot.w * 0.05,
+          right_vel_m_per_s: robot.v + robot.w * 0.05,
+          linear_vel_m_per_s: robot.v,
+          angular_vel_rad_per_s: robot.w,
+          x_m: robot.x,
+          y_m: robot.y,
+          yaw_rad: robot.yaw,
+          emergency_stopped: faults.stateHidesEstop ? false : robot.estopped,
+          timestamp_ms: now,
+        }),
+      );
+      if (faults.unannouncedImu) {
+        nc.publish(
+          at('sensor', 'imu', 'data'),
+          envelope('tafylabs/hal/sensor/imu/1.0', {
+            accel_m_per_s2: { x: 0, y: 0, z: 9.81 },
+            gyro_rad_per_s: { x: 0, y: 0, z: robot.w },
+            heading_rad: robot.yaw,
+            source: 'sensor',
+          }),
+        );
+      }
+    }, 1000 / RATE_HZ),
+  );
+  nc.publish(
+    at('system', 'capability', 'announce'),
+    envelope('tafylabs/hal/system/capability/1.0', announcement()),
+  );
+  timers.push(
+    setInterval(
+      () =>
+        nc.publish(
+          at('system', 'capability', 'announce'),
+          envelope('tafylabs/hal/system/capability/1.0', announcement()),
+        ),
+      1000,
+    ),
+  );
+  return {
+    get estopped() {
+      return robot.estopped;
+    },
+    get moving() {
+      return robot.v !== 0 || robot.w !== 0;
+    },
+    close: () => {
+      for (const timer of timers) clearInterval(timer);
+      for (const sub of subs) sub.unsubscribe();
+    },
+  };
+}

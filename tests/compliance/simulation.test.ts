@@ -1,0 +1,72 @@
+// The compliance runner against a gateway serving SimulationHAL on a real nats-server: a
+// compliant device passes every check, addressed as the default device and as one of a fleet.
+import { formatReport, runCompliance } from '@hal/compliance';
+import type { ComplianceReport } from '@hal/compliance';
+import { serveHalOnNats } from '@hal/nats';
+import type { HalGateway } from '@hal/nats';
+import { SimulationHAL } from '@hal/simulation';
+import { connect } from '@nats-io/transport-node';
+import type { NatsConnection } from '@nats-io/transport-node';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import type { NatsServer } from '../nats/nats-server.js';
+
+let server: NatsServer;
+let nc: NatsConnection;
+let hal: SimulationHAL;
+let gateway: HalGateway;
+
+beforeAll(async () => {
+  server = await startNatsServer();
+  nc = await connect({ servers: server.url });
+  // The real-time clock: a move takes as long as on the robot, so the state stream can show it.
+  hal = new SimulationHAL({ clock: 'realtime', deviceId: 'sim-cube' });
+  await hal.initialize();
+  gateway = await serveHalOnNats(hal, {
+    servers: server.url,
+    deviceId: 'sim-cube',
+    stateRateHz: 20,
+  });
+}, 30_000);
+
+afterAll(async () => {
+  await gateway?.close();
+  await hal?.cleanup();
+  await nc?.close();
+  await stopAllNatsServers();
+});
+
+const failures = (report: ComplianceReport) =>
+  report.checks.filter((c) => c.status === 'fail').map((c) => `${c.id}: ${c.reason}`);
+
+describe('runCompliance against a gateway serving SimulationHAL', () => {
+  it(
+    'passes every check of every capability the simulated robot announces',
+    { timeout: 120_000 },
+    async () => {
+      const report = await runCompliance({ connection: nc, device: 'sim-cube' });
+      expect(failures(report), formatReport(report)).toEqual([]);
+      expect(report.ok).toBe(true);
+      expect(report.deviceId).toBe('sim-cube');
+      // the simulated robot has all of them: nothing skipped
+      expect(report.capabilities).toEqual([
+        'system',
+        'motor.differential',
+        'safety',
+        'camera',
+        'sensor.imu',
+        'sensor.range',
+      ]);
+      expect(report.summary.skipped).toBe(0);
+      expect(report.checks.some((c) => c.id.endsWith('not-implemented'))).toBe(false);
+      const groups = new Set(report.checks.filter((c) => c.status === 'pass').map((c) => c.group));
+      expect([...groups].sort()).toEqual(['capability', 'errors', 'format', 'state', 'timing']);
+      const stop = report.checks.find((c) => c.id === 'motor.differential/timing/stop-command');
+      expect(stop?.measured?.samples).toBe(20);
+      expect(stop?.latencyClass?.limitMs).toBe(10);
+      // it leaves the robot as it found it: stopped, not e-stopped
+      expect(hal.safety.isEmergencyStopped()).toBe(false);
+      expect((await hal.locomotion.getPose()).velocity.linear).toBe(0);
+    },
+  );
+});
