@@ -75,7 +75,9 @@ export class Session {
   #state: SessionState = 'idle';
   #seq = 0;
   #sid: number | undefined;
-  #queue: Promise<unknown> = Promise.resolve();
+  /** Whether a request holds the queue; the tasks waiting for it, in order. */
+  #running = false;
+  readonly #waiting: (() => void)[] = [];
   #busy = 0;
   #lastRequestAt = 0;
   #heartbeat: ReturnType<typeof setTimeout> | undefined;
@@ -386,15 +388,21 @@ export class Session {
     this.#options.onStateChange?.(state, reason);
   }
 
-  #exclusive<T>(task: () => Promise<T>): Promise<T> {
+  /**
+   * Runs `task` once every task queued before it has ended: at once when none is running (no
+   * promise hop), else when the one before hands over.
+   */
+  async #exclusive<T>(task: () => Promise<T>): Promise<T> {
     this.#busy += 1;
-    const run = this.#queue.then(task);
-    this.#queue = run.then(
-      () => undefined,
-      () => undefined,
-    );
-    return run.finally(() => {
+    if (this.#running) await new Promise<void>((start) => this.#waiting.push(start));
+    this.#running = true;
+    try {
+      return await task();
+    } finally {
       this.#busy -= 1;
-    });
+      const next = this.#waiting.shift();
+      if (next === undefined) this.#running = false;
+      else next(); // the next task runs with #running still set
+    }
   }
 }
