@@ -226,7 +226,7 @@ export class ReplyMatcher {
         resolve,
         reject,
         attempt: 0,
-        sentAt: this.#now(),
+        sentAt: 0, // set by each attempt
         deadline: Infinity,
         lastError: undefined,
       };
@@ -258,22 +258,25 @@ export class ReplyMatcher {
     entry.sentAt = this.#now();
     entry.deadline = Infinity;
     this.counts.sent += 1;
-    const done = (error?: unknown) => {
-      // answered, closed or given up meanwhile, or a late report of an older attempt
-      if (this.#pending.get(entry.seq) !== entry || entry.attempt !== attempt) return;
-      if (error !== undefined) {
-        entry.lastError = error;
-        this.#attempt(entry);
-        return;
-      }
-      entry.deadline = this.#now() + entry.timeoutMs;
-      this.#arm(entry.deadline);
-    };
     try {
-      entry.send(done);
+      // an inline arrow: a named closure per attempt would cost more under some transpilers
+      entry.send((error?: unknown) => this.#sent(entry, attempt, error));
     } catch (error) {
-      done(error ?? new Error('the send failed'));
+      this.#sent(entry, attempt, error ?? new Error('the send failed'));
     }
+  }
+
+  /** An attempt's send has ended: wait for its reply, or try again at once if it failed. */
+  #sent(entry: Pending, attempt: number, error: unknown): void {
+    // answered, closed or given up meanwhile, or a late report of an older attempt
+    if (this.#pending.get(entry.seq) !== entry || entry.attempt !== attempt) return;
+    if (error !== undefined) {
+      entry.lastError = error;
+      this.#attempt(entry);
+      return;
+    }
+    entry.deadline = this.#now() + entry.timeoutMs;
+    this.#arm(entry.deadline);
   }
 
   /** Takes `entry` out of the pending requests. */
