@@ -20,6 +20,7 @@ const { values } = parseArgs({
   options: {
     key: { type: 'boolean', default: false },
     rounds: { type: 'string', default: '8000' },
+    timeline: { type: 'boolean', default: false },
   },
 });
 const ROUNDS = Number(values.rounds);
