@@ -3,9 +3,11 @@
 // replies lost) when the stop is called. Two paths in the same run, interleaved trial by trial:
 // the safety lane (stop sent at once) and the old queued path (the stop sent after the pending
 // request, as one request queue did). On a clean link and through a proxy losing 30 % both ways.
-// ESTOP_TRIALS sets the trials per path and link (default 200). A trial starts once the session
-// is open: at 30 % loss both ways, every resend of a heartbeat is lost now and then, and the HAL
-// then says hello again.
+// The lossy link loses from the stuck request until the move has resolved, and is clean between
+// trials, so setting up and resetting do not wait for resends. ESTOP_TRIALS sets the lane trials
+// per link (default 200), ESTOP_QUEUED_TRIALS the queued ones (default 50, spread evenly among
+// them): a queued trial waits for the stuck request by what it measures, 1-5 s, while a lane
+// trial abandons it and goes on with a fresh session, so the whole run takes minutes.
 import { PhysicalHAL } from '@hal/physical';
 import { startEmulator } from '../tests/physical/emulator.js';
 import type { Emulator } from '../tests/physical/emulator.js';
@@ -22,6 +24,7 @@ import type { EstopPath, EstopTrial } from '../tests/physical/estop-trial.js';
 import { reportFigure } from './report/figures.js';
 
 const TRIALS = Number(process.env['ESTOP_TRIALS'] ?? 200);
+const QUEUED_TRIALS = Math.min(TRIALS, Number(process.env['ESTOP_QUEUED_TRIALS'] ?? 50));
 const LOST_REPLIES = 2;
 const STEP_PERIOD_MS = 1000 / 1024;
 
@@ -52,23 +55,36 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
   const proxy = await startFaultProxy({
     robotPort: emulator.udpPort,
     seed,
-    toRobot: faults,
-    toHost: faults,
+    toRobot: {},
+    toHost: {},
   });
-  const hal = new PhysicalHAL({
-    mode: 'physical',
-    deviceId: 'bench-estop',
-    connection: { type: 'wifi', host: '127.0.0.1', udpPort: proxy.port },
-  });
-  await hal.initialize();
+  const openHal = async (): Promise<PhysicalHAL> => {
+    const fresh = new PhysicalHAL({
+      mode: 'physical',
+      deviceId: 'bench-estop',
+      connection: { type: 'wifi', host: '127.0.0.1', udpPort: proxy.port },
+    });
+    await fresh.initialize();
+    return fresh;
+  };
+  let hal = await openHal();
   const now = robotClock(emulator);
   const results: Record<EstopPath, EstopTrial[]> = { lane: [], queued: [] };
   let bad = 0;
   const failures: string[] = [];
   let rtt: ReturnType<PhysicalHAL['transportStats']>;
+  // the queued trials, spread evenly among the lane trials, each side first in turn
+  const queuedAt = (i: number) =>
+    QUEUED_TRIALS > 0 &&
+    Math.floor((i * QUEUED_TRIALS) / TRIALS) !== Math.floor(((i + 1) * QUEUED_TRIALS) / TRIALS);
   try {
     for (let i = 0; i < TRIALS; i++) {
-      for (const path of (i % 2 === 0 ? ['lane', 'queued'] : ['queued', 'lane']) as EstopPath[]) {
+      const paths: EstopPath[] = !queuedAt(i)
+        ? ['lane']
+        : i % 2 === 0
+          ? ['lane', 'queued']
+          : ['queued', 'lane'];
+      for (const path of paths) {
         try {
           const trial = await estopTrial({
             hal,
@@ -78,7 +94,10 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
             path,
             runMs: 20 + ((i * 7) % 40),
             lostReplies: LOST_REPLIES,
+            reopen: openHal,
+            faults,
           });
+          hal = trial.hal;
           if (!trial.estop.success || trial.move.code !== 'EMERGENCY_STOPPED') {
             bad += 1;
             failures.push(
@@ -89,6 +108,10 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
         } catch (error) {
           // a lossy link can lose every resend of one request: count it, and go on
           failures.push(`${path}: ${String(error)}`);
+          if (!hal.isReady()) {
+            await hal.cleanup();
+            hal = await openHal();
+          }
           await hal.safety.resetEmergencyStop();
         }
       }
@@ -102,7 +125,7 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
   const lane = summary(results.lane);
   const queued = summary(results.queued);
   console.log(
-    `\n${name}: ${TRIALS} trials per path, ${LOST_REPLIES} get_status replies lost at the call`,
+    `\n${name}: ${TRIALS} lane and ${QUEUED_TRIALS} queued trials, ${LOST_REPLIES} get_status replies lost at the call`,
   );
   console.log(
     `  round trip through the link: p50 ${fmt(rtt?.rttP50Ms ?? 0)}, p99 ${fmt(rtt?.rttP99Ms ?? 0)}; one step ${fmt(STEP_PERIOD_MS)}`,
@@ -126,7 +149,7 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
   const roundTrip =
     rtt === undefined
       ? 'the round trip was not measured'
-      : `round trip through the link measured in this run: p50 ${fmt(rtt.rttP50Ms)}, p99 ${fmt(rtt.rttP99Ms)}`;
+      : `round trip through the link measured in this run (the last session): p50 ${fmt(rtt.rttP50Ms)}, p99 ${fmt(rtt.rttP99Ms)}`;
   const trialsNote =
     `${results.lane.length} lane and ${results.queued.length} queued trials on the robot's clock, ` +
     `interleaved, ${LOST_REPLIES} get_status replies lost at the call; ${bad} did not stop and latch, ` +

@@ -5,7 +5,7 @@ import { afterEach, describe, expect, it } from 'vitest';
 import { collectRecords } from './collect.js';
 import { BENCH_JSON_PREFIX, percentile } from './figures.js';
 import type { Figure } from './figures.js';
-import { figuresTable } from './markdown.js';
+import { figuresTable, formatRatioNumber } from './markdown.js';
 import { writeReport } from './write.js';
 
 const latency: Figure = {
@@ -61,6 +61,39 @@ describe('figuresTable', () => {
       '| physical | UDP round trip p99 | 120 us | raw dgram | 60 us | 2.00x (lower is better) ⚠ |',
     );
     expect(table).toContain('| 3.00x (higher is better) |');
+  });
+
+  it('prints a large lead with its digits and in words, never as 0.00x', () => {
+    const table = figuresTable([
+      {
+        ...latency,
+        name: 'e-stop p50',
+        unit: 'ms',
+        value: 1.27,
+        alternative: { name: 'queued', value: 1000 },
+      },
+      {
+        ...latency,
+        name: 'throughput',
+        unit: 'frames/s',
+        better: 'higher',
+        value: 787_000,
+        alternative: { name: 'old', value: 1000 },
+      },
+    ]);
+    expect(table).toContain('| 0.0013x (lower is better; 787x better) |');
+    expect(table).toContain('| 787.00x (higher is better; 787x better) |');
+    expect(table).not.toContain('0.00x');
+  });
+});
+
+describe('formatRatioNumber', () => {
+  it('keeps two decimals from 0.1 up and two significant digits below', () => {
+    expect(formatRatioNumber(1.4449)).toBe('1.44x');
+    expect(formatRatioNumber(0.25)).toBe('0.25x');
+    expect(formatRatioNumber(0.0123)).toBe('0.012x');
+    expect(formatRatioNumber(0.00012345)).toBe('0.00012x');
+    expect(formatRatioNumber(0)).toBe('0.00x');
   });
 });
 

@@ -11,7 +11,7 @@ import { MovePlan } from '@hal/kinematics';
 import type { PhysicalHAL } from '@hal/physical';
 import type { HALToolResult } from '@hal/types';
 import type { Emulator } from './emulator.js';
-import type { FaultProxy } from './fault-proxy.js';
+import type { FaultProxy, Faults } from './fault-proxy.js';
 
 /** The acceleration the trials set, steps/s^2: the move cruises within 10 ms. */
 export const TRIAL_ACCELERATION = 100_000;
@@ -29,6 +29,8 @@ export interface EstopTrial {
   hostLatencyMs: number;
   estop: HALToolResult;
   move: HALToolResult;
+  /** The HAL for the next trial: a fresh one when the trial abandoned the stuck request. */
+  hal: PhysicalHAL;
 }
 
 /** Reads the robot's uptime, µs, through the emulator's monotonic origin (time scale 1 only). */
@@ -67,6 +69,15 @@ const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 /**
  * Runs one trial: a 40 cm move, `runMs` of driving, a get_status whose next `lostReplies`
  * replies the proxy drops, then the e-stop by `path`; then resets the stop.
+ *
+ * Without `reopen`, the trial waits for the stuck get_status to end (its resends, 500 ms each)
+ * before it resets the stop through the same session. With `reopen`, a lane trial does not: once
+ * the stop is measured and the move has resolved, it closes the HAL, abandoning the request, and
+ * resets the stop through the fresh session `reopen` opens (the trial's `hal` is the one to use
+ * next). What is measured is the same; only the wait after it goes. A queued trial has waited for
+ * the request by then anyway. With `faults`, the link is clean between trials and loses by
+ * `faults` (both ways) from the stuck request until the move has resolved: the stop meets the same
+ * lossy link, and the setup and the reset around it no longer wait for resends.
  */
 export async function estopTrial(options: {
   hal: PhysicalHAL;
@@ -76,8 +87,11 @@ export async function estopTrial(options: {
   path: EstopPath;
   runMs: number;
   lostReplies: number;
+  reopen?: () => Promise<PhysicalHAL>;
+  faults?: Faults;
 }): Promise<EstopTrial> {
-  const { hal, emulator, proxy, now, path } = options;
+  const { emulator, proxy, now, path } = options;
+  let hal = options.hal;
   // a lossy link can lose every resend of one request: wait until the session is open again
   for (let waited = 0; hal.linkState !== 'connected'; waited += 10) {
     if (waited > 15_000) throw new Error(`the link stayed ${hal.linkState}`);
@@ -97,6 +111,9 @@ export async function estopTrial(options: {
     }),
   ]);
   await sleep(options.runMs);
+  if (options.faults !== undefined) {
+    proxy.setFaults({ toRobot: options.faults, toHost: options.faults });
+  }
   proxy.dropNextReplies(options.lostReplies);
   const pending = hal.refreshStatus().catch(() => undefined);
   await sleep(1); // the status request is out
@@ -108,7 +125,14 @@ export async function estopTrial(options: {
       : await pending.then(() => hal.safety.emergencyStop('trial'));
   const hostLatencyMs = performance.now() - calledHost;
   const move = await moving;
-  await pending;
+  if (options.faults !== undefined) proxy.setFaults({ toRobot: {}, toHost: {} });
+  if (options.reopen === undefined || path === 'queued') {
+    await pending;
+  } else {
+    await hal.cleanup(); // the stuck request is abandoned: it rejects at once
+    proxy.stopDropping(); // a reply still to drop would be the fresh session's
+    hal = await options.reopen();
+  }
   const stoppedUs = Number(estop.data?.['robotEstopUs']);
   const plan = new MovePlan(
     Number(started['left_steps']),
@@ -129,6 +153,7 @@ export async function estopTrial(options: {
     hostLatencyMs,
     estop,
     move,
+    hal,
   };
 }
 

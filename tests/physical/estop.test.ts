@@ -77,6 +77,56 @@ describe('emergencyStop() against the emulator over UDP', () => {
     }, 60_000);
   }
 
+  it('measures a trial the same when it abandons the stuck request and goes on with a fresh session', async () => {
+    const { emulator, proxy, hal: first, now } = await rig({});
+    const open = async () => {
+      const fresh = new PhysicalHAL({
+        mode: 'physical',
+        deviceId: 'cube-estop',
+        connection: { type: 'wifi', host: '127.0.0.1', udpPort: proxy.port },
+      });
+      await fresh.initialize();
+      return fresh;
+    };
+    let hal = first;
+    try {
+      for (let i = 0; i < 4; i++) {
+        const path = i % 2 === 0 ? 'lane' : 'queued';
+        const before = hal;
+        const trial = await estopTrial({
+          hal,
+          emulator,
+          proxy,
+          now,
+          path,
+          runMs: 30,
+          lostReplies: 2,
+          reopen: open,
+          faults: { drop: 0.3 },
+        });
+        hal = trial.hal;
+        expect(trial.move.code, JSON.stringify(trial.move)).toBe('EMERGENCY_STOPPED');
+        expect(trial.robotLatencyMs).toBeGreaterThanOrEqual(0);
+        // a lane trial leaves the stuck request (two 500 ms resends) behind; a queued one waits
+        if (path === 'lane') {
+          expect(trial.robotLatencyMs).toBeLessThan(BOUND_MS);
+          expect(hal).not.toBe(before);
+          expect(before.isReady()).toBe(false);
+        } else {
+          expect(trial.robotLatencyMs).toBeGreaterThan(900);
+          expect(hal).toBe(before);
+        }
+        expect(hal.isReady()).toBe(true);
+        expect(hal.safety.isEmergencyStopped()).toBe(false);
+      }
+      expect(emulator.events.filter((e) => e.event === 'move_started')).toHaveLength(4);
+    } finally {
+      await hal.cleanup();
+      await proxy.close();
+      await emulator.stop();
+    }
+  }, 60_000);
+
   it('latches the robot and reports a sanitized reason, whatever the reason was', async () => {
     const { emulator, proxy, hal } = await rig({});
     try {

@@ -28,6 +28,10 @@ export interface FaultProxy {
   toHost: DirectionStats;
   /** Drops the next `count` datagrams from the robot to the host, whatever the faults say. */
   dropNextReplies(count: number): void;
+  /** Forgets the replies still to drop by `dropNextReplies`. */
+  stopDropping(): void;
+  /** Changes the faults of both directions from now on. */
+  setFaults(faults: { toRobot: Faults; toHost: Faults }): void;
   close(): Promise<void>;
 }
 
@@ -66,6 +70,8 @@ export async function startFaultProxy(options: {
   let host: RemoteInfo | undefined;
   let closed = false;
   let dropReplies = 0;
+  let faultsToRobot = options.toRobot;
+  let faultsToHost = options.toHost;
 
   const pass = (
     message: Buffer,
@@ -98,9 +104,7 @@ export async function startFaultProxy(options: {
 
   hostSide.on('message', (message, remote) => {
     host = remote;
-    pass(message, options.toRobot, toRobot, (m) =>
-      robotSide.send(m, options.robotPort, '127.0.0.1'),
-    );
+    pass(message, faultsToRobot, toRobot, (m) => robotSide.send(m, options.robotPort, '127.0.0.1'));
   });
   robotSide.on('message', (message) => {
     const to = host;
@@ -111,7 +115,7 @@ export async function startFaultProxy(options: {
       toHost.dropped += 1;
       return;
     }
-    pass(message, options.toHost, toHost, (m) => hostSide.send(m, to.port, to.address));
+    pass(message, faultsToHost, toHost, (m) => hostSide.send(m, to.port, to.address));
   });
   await Promise.all([
     new Promise<void>((resolve) => hostSide.bind(0, '127.0.0.1', resolve)),
@@ -123,6 +127,13 @@ export async function startFaultProxy(options: {
     toHost,
     dropNextReplies: (count) => {
       dropReplies += count;
+    },
+    stopDropping: () => {
+      dropReplies = 0;
+    },
+    setFaults: (faults) => {
+      faultsToRobot = faults.toRobot;
+      faultsToHost = faults.toHost;
     },
     close: async () => {
       closed = true;

@@ -1,60 +1,20 @@
-import { HAL_ERROR_CODES, HalError, isHalError } from '@hal/types';
-import type { HalErrorCode } from '@hal/types';
+import { HalError, isHalError } from '@hal/types';
 import { scoped } from './logger.js';
-import type { Logger, ScopedLogger } from './logger.js';
-import type { MessageCodec, WireReply } from './protocol/codec.js';
+import type { ScopedLogger } from './logger.js';
+import type { WireReply } from './protocol/codec.js';
+import { randomNonce, robotError } from './session-errors.js';
+import type { SessionOptions, SessionState } from './session-options.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
 import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
 import { DEFAULT_SAFETY_LANE, isMotionCommand, laneAttempts, StopSignal } from './safety-lane.js';
 import type { SafetyCommand, SafetyInterrupt, SafetyLaneTiming } from './safety-lane.js';
-import type { RequestOptions, Transport } from './transport/transport.js';
+import type { RequestOptions } from './transport/transport.js';
 
-/** Where a session is. */
-export type SessionState = 'idle' | 'connected' | 'lost' | 'closed';
-
-/** Options of a {@link Session}. */
-export interface SessionOptions {
-  transport: Transport;
-  codec: MessageCodec;
-  logger: Logger;
-  /** Names the host software in `hello`. */
-  client?: string;
-  /** Heartbeat period, real ms (asked each time, as the robot's host timeout may change). */
-  heartbeatIntervalMs: () => number;
-  /** While the link is lost, try `hello` again this often, ms. */
-  reconnectIntervalMs: number;
-  /** Per-request timeout and attempts (asked before every request). */
-  request?: () => RequestOptions;
-  /** Called after every successful (re)connection, outside the request queue. */
-  onConnected?: (hello: HelloReply, reconnect: boolean) => void | Promise<void>;
-  /** Called with every successful reply's data. */
-  onReply?: (cmd: Command, data: Record<string, unknown>) => void;
-  /** Called when the state changes. */
-  onStateChange?: (state: SessionState, reason: string) => void;
-  /** Timing of the safety lane (asked before every stop); default {@link DEFAULT_SAFETY_LANE}. */
-  safetyLane?: () => SafetyLaneTiming;
-}
+export type { SessionOptions, SessionState } from './session-options.js';
+export { robotError } from './session-errors.js';
 
 /** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
 const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
-
-function randomNonce(): string {
-  const bytes = new Uint8Array(8);
-  globalThis.crypto.getRandomValues(bytes);
-  return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
-}
-
-/** The HalError for a refused request, carrying the robot's own code. */
-export function robotError(cmd: string, reply: WireReply): HalError {
-  const error = reply.error;
-  const robotCode = error?.code ?? 'UNKNOWN';
-  const code: HalErrorCode = (HAL_ERROR_CODES as readonly string[]).includes(robotCode)
-    ? (robotCode as HalErrorCode)
-    : 'HARDWARE_ERROR';
-  return new HalError(code, `the robot refused "${cmd}": ${error?.message ?? 'no reason given'}`, {
-    details: { command: cmd, robotCode, robotDetails: error?.details ?? {} },
-  });
-}
 
 /**
  * One host session with the robot over a transport: `hello`, then requests numbered by a
@@ -75,7 +35,9 @@ export class Session {
   #state: SessionState = 'idle';
   #seq = 0;
   #sid: number | undefined;
-  #queue: Promise<unknown> = Promise.resolve();
+  /** Whether a request holds the queue; the tasks waiting for it, in order. */
+  #running = false;
+  readonly #waiting: (() => void)[] = [];
   #busy = 0;
   #lastRequestAt = 0;
   #heartbeat: ReturnType<typeof setTimeout> | undefined;
@@ -149,40 +111,65 @@ export class Session {
     const safety = SAFETY_COMMANDS.has(cmd);
     this.#checkUsable(cmd, safety);
     const epoch = this.#stops.epoch;
-    return this.#exclusive(async () => {
+    // the queue, the send and the reply's checks in this one async function: each further layer
+    // was a promise and a suspended frame more per request
+    this.#busy += 1;
+    try {
+      if (this.#running) await new Promise<void>((start) => this.#waiting.push(start));
+      this.#running = true;
       this.#checkUsable(cmd, safety);
       if (isMotionCommand(cmd) && epoch !== this.#stops.epoch) throw this.#stops.overtaken(cmd);
       const seq = this.#nextSeq();
       const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
-      const reply = await this.#send(cmd, seq, bytes, { ...this.#options.request?.(), ...options });
-      if (!reply.ok) {
-        if (reply.error?.code === 'SESSION_MISMATCH') {
-          this.#lose('the robot no longer knows this session');
-          throw new HalError(
-            'NOT_CONNECTED',
-            `the robot's session changed (it restarted or another host connected); reconnecting`,
-            {
-              cause: robotError(cmd, reply),
-              details: { command: cmd, robotCode: 'SESSION_MISMATCH' },
-            },
-          );
-        }
-        throw robotError(cmd, reply);
+      const timing = this.#options.request?.();
+      let reply: WireReply;
+      this.#lastRequestAt = performance.now();
+      try {
+        reply = await this.#options.transport.request(
+          seq,
+          bytes,
+          timing === undefined ? options : { ...timing, ...options },
+        );
+      } catch (thrown) {
+        throw this.#sendFailed(cmd, thrown);
+      } finally {
+        this.#lastRequestAt = performance.now();
       }
-      const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
-      if (!parsed.success) {
-        this.malformedReplies += 1;
-        const issue = parsed.error.issues[0];
+      return this.#accept(cmd, reply);
+    } finally {
+      this.#release();
+    }
+  }
+
+  /** The checked data of a reply to `cmd`, or the HalError it amounts to. */
+  #accept<C extends Command>(cmd: C, reply: WireReply): ReplyOf<C> {
+    if (!reply.ok) {
+      if (reply.error?.code === 'SESSION_MISMATCH') {
+        this.#lose('the robot no longer knows this session');
         throw new HalError(
-          'MALFORMED',
-          `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
-          { details: { command: cmd } },
+          'NOT_CONNECTED',
+          `the robot's session changed (it restarted or another host connected); reconnecting`,
+          {
+            cause: robotError(cmd, reply),
+            details: { command: cmd, robotCode: 'SESSION_MISMATCH' },
+          },
         );
       }
-      const data = parsed.data as ReplyOf<C>;
-      this.#options.onReply?.(cmd, data as Record<string, unknown>);
-      return data;
-    });
+      throw robotError(cmd, reply);
+    }
+    const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
+    if (!parsed.success) {
+      this.malformedReplies += 1;
+      const issue = parsed.error.issues[0];
+      throw new HalError(
+        'MALFORMED',
+        `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
+        { details: { command: cmd } },
+      );
+    }
+    const data = parsed.data as ReplyOf<C>;
+    this.#options.onReply?.(cmd, data as Record<string, unknown>);
+    return data;
   }
 
   /** The number of stops issued so far (see {@link interrupted}). */
@@ -264,31 +251,16 @@ export class Session {
     return this.#seq;
   }
 
-  async #send(
-    cmd: string,
-    seq: number,
-    bytes: Uint8Array,
-    options: RequestOptions,
-  ): Promise<WireReply> {
-    this.#lastRequestAt = performance.now();
-    try {
-      return await this.#options.transport.request(seq, bytes, options);
-    } catch (thrown) {
-      if (isHalError(thrown) && thrown.code === 'TIMEOUT') {
-        this.#lose(`no reply to "${cmd}"`);
-        throw new HalError(
-          'NOT_CONNECTED',
-          `the robot did not answer "${cmd}": ${thrown.message}`,
-          {
-            cause: thrown,
-            details: { command: cmd, ...thrown.details },
-          },
-        );
-      }
-      throw thrown;
-    } finally {
-      this.#lastRequestAt = performance.now();
+  /** What a failed request amounts to: a timeout loses the link (NOT_CONNECTED). */
+  #sendFailed(cmd: string, thrown: unknown): unknown {
+    if (isHalError(thrown) && thrown.code === 'TIMEOUT') {
+      this.#lose(`no reply to "${cmd}"`);
+      return new HalError('NOT_CONNECTED', `the robot did not answer "${cmd}": ${thrown.message}`, {
+        cause: thrown,
+        details: { command: cmd, ...thrown.details },
+      });
     }
+    return thrown;
   }
 
   async #sayHello(options: RequestOptions | undefined): Promise<HelloReply> {
@@ -386,15 +358,26 @@ export class Session {
     this.#options.onStateChange?.(state, reason);
   }
 
-  #exclusive<T>(task: () => Promise<T>): Promise<T> {
+  /**
+   * Runs `task` once every task queued before it has ended: at once when none is running (no
+   * promise hop), else when the one before hands over.
+   */
+  async #exclusive<T>(task: () => Promise<T>): Promise<T> {
     this.#busy += 1;
-    const run = this.#queue.then(task);
-    this.#queue = run.then(
-      () => undefined,
-      () => undefined,
-    );
-    return run.finally(() => {
-      this.#busy -= 1;
-    });
+    try {
+      if (this.#running) await new Promise<void>((start) => this.#waiting.push(start));
+      this.#running = true;
+      return await task();
+    } finally {
+      this.#release();
+    }
+  }
+
+  /** Ends a request's hold on the queue: the next one waiting runs, with #running still set. */
+  #release(): void {
+    this.#busy -= 1;
+    const next = this.#waiting.shift();
+    if (next === undefined) this.#running = false;
+    else next();
   }
 }

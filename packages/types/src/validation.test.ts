@@ -145,4 +145,23 @@ describe('HalBoundary', () => {
       expect(crash).toMatchObject({ success: false, code: 'HARDWARE_ERROR', error: 'boom' });
     });
   });
+
+  describe('#schemas', () => {
+    it('shares the call schemas of equal configurations between boundaries, and follows a change', () => {
+      const first = boundary({ config: { ...V1_ROBOT } });
+      const second = boundary({ config: { ...V1_ROBOT } });
+      expect(second.schemas()).toBe(first.schemas());
+      const state: { config: RobotConfig } = { config: { ...V1_ROBOT } };
+      const changing = boundary(state);
+      const before = changing.schemas();
+      state.config = robotConfig({
+        ...V1_ROBOT,
+        maxStepsPerCommand: V1_ROBOT.maxStepsPerCommand / 2,
+      });
+      expect(changing.schemas()).not.toBe(before);
+      const cm = maxDistancePerCommandCm(state.config);
+      expect(() => changing.validate('moveForward', { distanceCm: cm * 1.5 })).toThrow(HalError);
+      expect(() => first.validate('moveForward', { distanceCm: cm * 1.5 })).not.toThrow();
+    });
+  });
 });

@@ -83,6 +83,29 @@ export interface HalBoundaryOptions {
   now?: () => number;
 }
 
+/** Call schemas by configuration value, shared by every boundary (zod schemas are immutable). */
+const sharedSchemas = new Map<string, CallSchemas>();
+const SHARED_SCHEMAS_MAX = 32;
+
+/**
+ * The call schemas of a configuration, built once per distinct value: building them costs
+ * milliseconds, and each new set runs cold (zod compiles a parser per schema) for its first few
+ * hundred calls, which a HAL made anew for the same robot should not pay again.
+ */
+function sharedCallSchemas(config: RobotConfig): CallSchemas {
+  const key = JSON.stringify(config);
+  let schemas = sharedSchemas.get(key);
+  if (schemas === undefined) {
+    schemas = createCallSchemas(config);
+    if (sharedSchemas.size >= SHARED_SCHEMAS_MAX) {
+      const oldest = sharedSchemas.keys().next().value;
+      if (oldest !== undefined) sharedSchemas.delete(oldest);
+    }
+    sharedSchemas.set(key, schemas);
+  }
+  return schemas;
+}
+
 /**
  * Safety layer 2, shared by every HAL implementation. Every public call goes through it, with the
  * same rules in the same order: not ready (before `initialize()`, after `cleanup()`): NOT_READY;
@@ -112,7 +135,7 @@ export class HalBoundary {
   schemas(): CallSchemas {
     const config = this.#options.config();
     if (this.#schemas === undefined || this.#schemasFor !== config) {
-      this.#schemas = createCallSchemas(config);
+      this.#schemas = sharedCallSchemas(config);
       this.#schemasFor = config;
     }
     return this.#schemas;

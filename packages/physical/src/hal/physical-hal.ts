@@ -58,6 +58,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   readonly #camera: MjpegCamera | undefined;
   readonly #tracker: PoseTracker;
   readonly #safety = new SafetyCache();
+  readonly #boundary: HalBoundary;
   #robot: RobotConfig;
   #transport: Transport | undefined;
   #session: Session | undefined;
@@ -96,6 +97,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       isReady: () => this.#initialized,
       now: options.now ?? Date.now,
     });
+    this.#boundary = boundary;
     const ctx: HalContext = {
       boundary,
       robot: () => this.#robot,
@@ -290,6 +292,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     };
     this.#robot = robotConfigFromDevice(this.#robot, hello.config);
     this.#tracker.setConfig(this.#robot);
+    this.#boundary.schemas(); // the call schemas for this robot now, not on the first call
   }
 
   async #resync(hello: HelloReply): Promise<void> {

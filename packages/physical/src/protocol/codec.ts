@@ -1,7 +1,7 @@
 import { HalError, sanitizeEstopReason } from '@hal/types';
 import type { MessageAuthenticator } from './auth.js';
 import { appendMac, splitMac } from './auth.js';
-import { ReplyEnvelopeSchema } from './schemas.js';
+import { parseEnvelope } from './envelope.js';
 import type { ReplyEnvelope } from './schemas.js';
 
 /** The largest message either side sends: 1024 bytes, MAC suffix included. */
@@ -107,7 +107,7 @@ export class MessageCodec {
         error: new HalError('MALFORMED', 'reply is not UTF-8 JSON', { cause }),
       };
     }
-    const parsed = ReplyEnvelopeSchema.safeParse(value);
+    const parsed = parseEnvelope(value);
     if (!parsed.success) {
       const issue = parsed.error.issues[0];
       return {

@@ -1,4 +1,4 @@
-import { describe, expect, it } from 'vitest';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { ReplyMatcher } from './transport.js';
 
 const reply = (seq: number) => ({ ok: true as const, reply: { seq, ok: true } });
@@ -29,5 +29,75 @@ describe('ReplyMatcher', () => {
     await expect(matcher.request(103, async () => undefined)).rejects.toMatchObject({
       code: 'NOT_CONNECTED',
     });
+  });
+});
+
+describe('ReplyMatcher timing (fake clock)', () => {
+  beforeEach(() => {
+    vi.useFakeTimers({ toFake: ['setTimeout', 'clearTimeout', 'performance'] });
+  });
+  afterEach(() => {
+    vi.useRealTimers();
+  });
+
+  it('arms one timer for all its requests, not one per request', async () => {
+    const matcher = new ReplyMatcher();
+    for (let seq = 1; seq <= 100; seq++) {
+      const answered = matcher.request(seq, async () => {
+        queueMicrotask(() => matcher.deliver(reply(seq)));
+      });
+      await answered;
+    }
+    expect(vi.getTimerCount()).toBeLessThanOrEqual(1);
+    expect(matcher.stats()).toMatchObject({ sent: 100, received: 100, retries: 0, timeouts: 0 });
+  });
+
+  it('resends a short-timeout request on time while a long one waits', async () => {
+    const matcher = new ReplyMatcher();
+    const sends: number[] = [];
+    const long = matcher
+      .requestWith(
+        1,
+        (done) => {
+          sends.push(1);
+          done();
+        },
+        { timeoutMs: 2000, attempts: 1 },
+      )
+      .catch((error: unknown) => error);
+    const short = matcher.requestWith(
+      2,
+      (done) => {
+        sends.push(2);
+        done();
+      },
+      { timeoutMs: 20, attempts: 3 },
+    );
+    await vi.advanceTimersByTimeAsync(45);
+    expect(sends).toEqual([1, 2, 2, 2]);
+    matcher.deliver(reply(2));
+    await expect(short).resolves.toMatchObject({ seq: 2 });
+    await vi.advanceTimersByTimeAsync(2000);
+    expect(await long).toMatchObject({ code: 'TIMEOUT' });
+    expect(matcher.stats()).toMatchObject({ sent: 4, retries: 2, timeouts: 1, received: 1 });
+  });
+
+  it('counts a failed send as a used attempt and sends again at once, keeping its error as the cause', async () => {
+    const matcher = new ReplyMatcher();
+    let sends = 0;
+    const failing = matcher.requestWith(
+      5,
+      (done) => {
+        sends += 1;
+        done(new Error('EHOSTUNREACH'));
+      },
+      { timeoutMs: 1000, attempts: 3 },
+    );
+    await expect(failing).rejects.toMatchObject({
+      code: 'TIMEOUT',
+      cause: { message: 'EHOSTUNREACH' },
+    });
+    expect(sends).toBe(3);
+    expect(vi.getTimerCount()).toBe(0);
   });
 });

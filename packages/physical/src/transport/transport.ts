@@ -118,22 +118,41 @@ export class RttWindow {
   }
 }
 
+/** Reports the end of one send: with the error when it failed. */
+export type SendDone = (error?: unknown) => void;
+
+/** One request in flight: its attempt loop, as state rather than as a chain of promises. */
 interface Pending {
-  resolve(reply: WireReply): void;
+  readonly seq: number;
+  readonly send: (done: SendDone) => void;
+  readonly attempts: number;
+  readonly timeoutMs: number;
+  readonly resolve: (reply: WireReply) => void;
+  readonly reject: (error: unknown) => void;
+  attempt: number;
   sentAt: number;
+  /** When this attempt times out (on the matcher's clock); Infinity while the send is under way. */
+  deadline: number;
+  lastError: unknown;
 }
 
 /**
  * The request/reply half both transports share: matching replies to pending requests by their
  * echoed `seq`, the attempt loop with its timeouts, and the statistics.
+ *
+ * A request is one promise and one record; its timeouts share one timer, armed for the earliest
+ * deadline and left running when a reply comes (it re-arms itself for whatever is then due), so a
+ * round trip arms and clears no timer of its own and allocates no promise per attempt: on a fast
+ * link the timer fires about once per timeout, not once per request.
  */
 export class ReplyMatcher {
   readonly #pending = new Map<number, Pending>();
-  /** Wakes the requests in flight when the transport closes. */
-  readonly #closeListeners = new Set<() => void>();
   readonly #rtt = new RttWindow();
   readonly #now: () => number;
   #closed = false;
+  #timer: ReturnType<typeof setTimeout> | undefined;
+  /** When the timer fires (matcher clock); Infinity when it is not armed. */
+  #timerDue = Infinity;
   readonly counts = { sent: 0, received: 0, timeouts: 0, retries: 0, dropped: 0 };
 
   constructor(now: () => number = () => performance.now()) {
@@ -152,7 +171,7 @@ export class ReplyMatcher {
       this.counts.dropped += 1;
       return false;
     }
-    this.#pending.delete(seq);
+    this.#finish(pending);
     this.counts.received += 1;
     this.#rtt.add(this.#now() - pending.sentAt);
     pending.resolve(result.reply);
@@ -164,84 +183,145 @@ export class ReplyMatcher {
    * serial ACK, and an attempt whose send fails counts as used); after a successful send each
    * attempt waits `timeoutMs` for the reply.
    */
-  async request(
+  request(
     seq: number,
     send: () => Promise<void>,
     options: RequestOptions = {},
   ): Promise<WireReply> {
-    const attempts = options.attempts ?? DEFAULT_ATTEMPTS;
-    const timeoutMs = options.timeoutMs ?? DEFAULT_REPLY_TIMEOUT_MS;
-    if (this.#closed) throw new HalError('NOT_CONNECTED', 'the transport is closed');
+    return this.requestWith(
+      seq,
+      (done) => {
+        send().then(
+          () => done(),
+          (error: unknown) => done(error ?? new Error('the send failed')),
+        );
+      },
+      options,
+    );
+  }
+
+  /**
+   * {@link request} with a send that reports its end through a callback (`done()`, or
+   * `done(error)`), as a socket does: no promise per attempt.
+   */
+  requestWith(
+    seq: number,
+    send: (done: SendDone) => void,
+    options: RequestOptions = {},
+  ): Promise<WireReply> {
+    if (this.#closed) {
+      return Promise.reject(new HalError('NOT_CONNECTED', 'the transport is closed'));
+    }
     if (this.#pending.has(seq)) {
-      throw new HalError('INVALID_PARAMETER', `a request with seq ${seq} is already pending`);
-    }
-    let resolveReply!: (reply: WireReply) => void;
-    const answered = new Promise<WireReply>((resolve) => {
-      resolveReply = resolve;
-    });
-    const entry: Pending = { resolve: resolveReply, sentAt: this.#now() };
-    this.#pending.set(seq, entry);
-    // A close signal of this request's own, dropped when it ends: racing every request against
-    // one long-lived promise would add a reaction to it each time, kept until the transport
-    // closes (a leak of about 1 KB per request on a long-running host).
-    let onClose!: () => void;
-    const closedSignal = new Promise<'closed'>((resolve) => {
-      onClose = () => resolve('closed');
-    });
-    this.#closeListeners.add(onClose);
-    let lastError: unknown;
-    try {
-      for (let attempt = 1; attempt <= attempts; attempt++) {
-        if (this.#closed) throw new HalError('NOT_CONNECTED', 'the transport is closed');
-        if (attempt > 1) this.counts.retries += 1;
-        entry.sentAt = this.#now();
-        this.counts.sent += 1;
-        const sending = await Promise.race([
-          send().then(
-            () => 'sent' as const,
-            (error: unknown) => {
-              lastError = error;
-              return 'failed' as const;
-            },
-          ),
-          answered,
-          closedSignal,
-        ]);
-        if (sending === 'closed') throw new HalError('NOT_CONNECTED', 'the transport is closed');
-        if (typeof sending === 'object') return sending;
-        if (sending === 'failed') continue;
-        let timer: ReturnType<typeof setTimeout> | undefined;
-        try {
-          const outcome = await Promise.race([
-            answered,
-            closedSignal,
-            new Promise<'timeout'>((resolve) => {
-              timer = setTimeout(() => resolve('timeout'), timeoutMs);
-            }),
-          ]);
-          if (outcome === 'closed') throw new HalError('NOT_CONNECTED', 'the transport is closed');
-          if (outcome !== 'timeout') return outcome;
-        } finally {
-          clearTimeout(timer);
-        }
-      }
-      this.counts.timeouts += 1;
-      throw new HalError(
-        'TIMEOUT',
-        `no reply to request ${seq} after ${attempts} attempts of ${timeoutMs} ms`,
-        { details: { seq, attempts, timeoutMs }, cause: lastError },
+      return Promise.reject(
+        new HalError('INVALID_PARAMETER', `a request with seq ${seq} is already pending`),
       );
-    } finally {
-      this.#closeListeners.delete(onClose);
-      if (this.#pending.get(seq) === entry) this.#pending.delete(seq);
     }
+    return new Promise<WireReply>((resolve, reject) => {
+      const entry: Pending = {
+        seq,
+        send,
+        attempts: options.attempts ?? DEFAULT_ATTEMPTS,
+        timeoutMs: options.timeoutMs ?? DEFAULT_REPLY_TIMEOUT_MS,
+        resolve,
+        reject,
+        attempt: 0,
+        sentAt: 0, // set by each attempt
+        deadline: Infinity,
+        lastError: undefined,
+      };
+      this.#pending.set(seq, entry);
+      this.#attempt(entry);
+    });
+  }
+
+  /** Sends the next attempt of `entry`, or gives it up when none is left. */
+  #attempt(entry: Pending): void {
+    if (entry.attempt >= entry.attempts) {
+      this.#finish(entry);
+      this.counts.timeouts += 1;
+      entry.reject(
+        new HalError(
+          'TIMEOUT',
+          `no reply to request ${entry.seq} after ${entry.attempts} attempts of ${entry.timeoutMs} ms`,
+          {
+            details: { seq: entry.seq, attempts: entry.attempts, timeoutMs: entry.timeoutMs },
+            cause: entry.lastError,
+          },
+        ),
+      );
+      return;
+    }
+    entry.attempt += 1;
+    const attempt = entry.attempt;
+    if (attempt > 1) this.counts.retries += 1;
+    entry.sentAt = this.#now();
+    entry.deadline = Infinity;
+    this.counts.sent += 1;
+    try {
+      // an inline arrow: a named closure per attempt would cost more under some transpilers
+      entry.send((error?: unknown) => this.#sent(entry, attempt, error));
+    } catch (error) {
+      this.#sent(entry, attempt, error ?? new Error('the send failed'));
+    }
+  }
+
+  /** An attempt's send has ended: wait for its reply, or try again at once if it failed. */
+  #sent(entry: Pending, attempt: number, error: unknown): void {
+    // answered, closed or given up meanwhile, or a late report of an older attempt
+    if (this.#pending.get(entry.seq) !== entry || entry.attempt !== attempt) return;
+    if (error !== undefined) {
+      entry.lastError = error;
+      this.#attempt(entry);
+      return;
+    }
+    entry.deadline = this.#now() + entry.timeoutMs;
+    this.#arm(entry.deadline);
+  }
+
+  /** Takes `entry` out of the pending requests. */
+  #finish(entry: Pending): void {
+    if (this.#pending.get(entry.seq) === entry) this.#pending.delete(entry.seq);
+    entry.deadline = Infinity;
+    if (this.#pending.size === 0) this.#timer?.unref();
+  }
+
+  /** Makes the shared timer fire by `deadline`. */
+  #arm(deadline: number): void {
+    if (this.#timer !== undefined && this.#timerDue <= deadline) {
+      this.#timer.ref(); // a request waits on it again
+      return;
+    }
+    clearTimeout(this.#timer);
+    this.#timerDue = deadline;
+    this.#timer = setTimeout(() => this.#expire(), Math.max(0, deadline - this.#now()));
+  }
+
+  /** Times out every attempt whose deadline has passed, and re-arms for the next one. */
+  #expire(): void {
+    this.#timer = undefined;
+    this.#timerDue = Infinity;
+    const now = this.#now();
+    let next = Infinity;
+    for (const entry of [...this.#pending.values()]) {
+      if (entry.deadline <= now) this.#attempt(entry);
+      else if (entry.deadline < next) next = entry.deadline;
+    }
+    // #attempt may have armed the timer for a resend already
+    if (next !== Infinity) this.#arm(next);
   }
 
   /** Rejects every pending and later request with NOT_CONNECTED. */
   close(): void {
     this.#closed = true;
-    for (const wake of this.#closeListeners) wake();
-    this.#closeListeners.clear();
+    clearTimeout(this.#timer);
+    this.#timer = undefined;
+    this.#timerDue = Infinity;
+    const pending = [...this.#pending.values()];
+    this.#pending.clear();
+    for (const entry of pending) {
+      entry.reject(new HalError('NOT_CONNECTED', 'the transport is closed'));
+    }
   }
 
   stats(): TransportStats {

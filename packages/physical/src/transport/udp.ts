@@ -104,19 +104,18 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
         type: 'udp',
         localPort,
         request: (seq, bytes, requestOptions) =>
-          matcher.request(
+          matcher.requestWith(
             seq,
-            () =>
-              new Promise<void>((resolve, reject) => {
-                if (closed) {
-                  reject(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
-                  return;
-                }
-                socket.send(bytes, (error) =>
-                  error && !isUnreachable(error) ? reject(error) : resolve(),
-                );
-              }),
-            { ...defaults, ...requestOptions },
+            (done) => {
+              if (closed) {
+                done(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
+                return;
+              }
+              socket.send(bytes, (error) =>
+                error && !isUnreachable(error) ? done(error) : done(),
+              );
+            },
+            requestOptions === undefined ? defaults : { ...defaults, ...requestOptions },
           ),
         stats: (): TransportStats => matcher.stats(),
         close: async () => {
