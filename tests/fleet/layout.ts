@@ -17,3 +17,8 @@ export function gridStart(index: number): { x: number; y: number; yaw: number } 
 export function deviceId(prefix: string, index: number): string {
   return `${prefix}${String(index).padStart(2, '0')}`;
 }
+
+/** Start pose of robot `index` in single file: each SPACING_M behind the one before. */
+export function columnStart(index: number): { x: number; y: number; yaw: number } {
+  return { x: -index * SPACING_M, y: 0, yaw: 0 };
+}

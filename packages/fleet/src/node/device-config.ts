@@ -66,7 +66,9 @@ export const FleetConfigSchema = z
   .object({
     mode: z.enum(FLEET_MODES).default('independent').describe('The fleet mode tools start in'),
     devices: z.array(DeviceConfigSchema).default([]),
-    nats: FleetNatsSchema.optional().describe('Required when any device is of type "nats"'),
+    nats: FleetNatsSchema.optional().describe(
+      'NATS servers for the devices of type "nats" (or give the manager an open connection)',
+    ),
     telemetryRateHz: z
       .number()
       .gt(0)
@@ -92,13 +94,6 @@ export const FleetConfigSchema = z
         });
       }
       seen.add(d.id);
-      if (d.type === 'nats' && config.nats === undefined) {
-        ctx.addIssue({
-          code: 'custom',
-          path: ['nats'],
-          message: `device "${d.id}" is on NATS: give "nats.servers"`,
-        });
-      }
     });
   });
 

@@ -24,7 +24,7 @@ describe('fleet config', () => {
     expect(() => parseFleetConfig({ devices: [sim('a', 0), sim('a', 1)] })).toThrow(
       /devices\.1\.id: duplicate id "a"/,
     );
-    expect(() => parseFleetConfig({ devices: [{ type: 'nats', id: 'n' }] })).toThrow(
+    expect(() => new DeviceManager({ devices: [{ type: 'nats', id: 'n' }] })).toThrow(
       /nats: device "n" is on NATS/,
     );
     expect(() => parseFleetConfig({ devices: [{ type: 'drone', id: 'd' }] })).toThrow(

@@ -62,6 +62,14 @@ export class DeviceManager {
     this.#log = options.logger ?? silentFleetLogger;
     this.fleet = new Fleet([], { ...options.fleet, logger: this.#log });
     if (options.natsConnection !== undefined) this.#nats = { source: options.natsConnection };
+    const onNats = this.config.devices.find((d) => d.type === 'nats');
+    if (onNats !== undefined && this.#nats === undefined && this.config.nats === undefined) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `fleet config: nats: device "${onNats.id}" is on NATS: give "nats.servers" (or an open connection)`,
+        { details: { device: onNats.id, parameter: 'nats' } },
+      );
+    }
     for (const device of this.config.devices) this.#add(device);
   }
 
