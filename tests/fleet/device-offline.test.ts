@@ -1,6 +1,7 @@
 // A device that disappears from a managed fleet on a real nats-server: its robot host is killed
 // mid-run. The manager sees it offline (an event), its calls fail at once with NOT_CONNECTED and
-// details { device, offline: true }, nothing hangs, and the other robots go on.
+// details { device, offline: true }, nothing hangs, and the other robots go on; when its host
+// comes back, so does the device.
 import { DeviceManager } from '@hal/fleet/node';
 import { afterAll, describe, expect, it } from 'vitest';
 import { startHostProcess, stopAllHostProcesses } from '../physical/host-process.js';

@@ -30,6 +30,8 @@ interface Managed {
   online: boolean;
   initialized: boolean;
   busy: boolean;
+  /** A connection attempt still running (never two at once: a HAL's initialize is not reentrant). */
+  initializing?: Promise<void> | undefined;
   lastSeen?: number;
   telemetry?: DeviceTelemetry;
   lastError?: string;
@@ -261,7 +263,10 @@ export class DeviceManager {
     const waitMs = Math.min(this.config.offlineAfterMs, 5000);
     try {
       if (!m.initialized) {
-        await boundedWait(m.raw.initialize(), waitMs);
+        m.initializing ??= m.raw.initialize().finally(() => {
+          m.initializing = undefined;
+        });
+        await boundedWait(m.initializing, waitMs);
         m.initialized = true;
       }
       const pose = await boundedWait(m.raw.locomotion.getPose(), waitMs);
