@@ -9,6 +9,7 @@ import { registerTeleop } from './teleop.js';
 import { registerDiscover } from './discover.js';
 import { registerEmulate } from './emulate.js';
 import { registerTest } from './test.js';
+import { registerFleet } from './fleet.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -29,4 +30,5 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerEmulate,
   registerDiscover,
   registerTest,
+  registerFleet,
 ];
