@@ -36,6 +36,17 @@ describe('hal', () => {
     expect(bad.stderr()).toContain("unknown option '--no-such-option'");
   });
 
+  it('exits 2 on a bad option of any subcommand, nested ones too, without ending the process', async () => {
+    const nested = (cmd: Command): Command | undefined =>
+      cmd.commands.find((c) => c.commands.length > 0);
+    const parent = nested(buildProgram(captureIO()));
+    expect(parent).toBeDefined();
+    const child = parent!.commands[0]!;
+    const io = captureIO();
+    expect(await runHal([parent!.name(), child.name(), '--no-such-option'], io)).toBe(2);
+    expect(io.stderr()).toContain("unknown option '--no-such-option'");
+  });
+
   it('reports a usage error as a JSON error document with --json', async () => {
     const io = captureIO();
     expect(await runHal(['--json', '--no-such-option'], io)).toBe(2);

@@ -21,9 +21,12 @@ export function buildProgram(io: CliIO): Command {
     .version(version);
   const global = (): GlobalOptions => ({ json: program.opts<{ json: boolean }>().json });
   for (const register of COMMANDS) register(program, { io, global });
-  // every subcommand reports its usage errors through the root's output and exits the same way
-  for (const sub of program.commands) {
+  // every subcommand, nested ones too (`hal fleet health`), reports its usage errors through the
+  // CLI's output and exits the same way, never through process.exit
+  const pending = [...program.commands];
+  for (let sub = pending.pop(); sub !== undefined; sub = pending.pop()) {
     sub.exitOverride().configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) });
+    pending.push(...sub.commands);
   }
   return program;
 }

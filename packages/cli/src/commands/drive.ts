@@ -49,13 +49,7 @@ export const registerDrive: RegisterCommand = (program, { io, global }) => {
   );
   addTargetOptions(parent);
   const sub = (name: string, description: string) =>
-    parent
-      .command(name)
-      .description(description)
-      .allowExcessArguments(false)
-      // the root applies these to its own subcommands only; these are one level further down
-      .exitOverride()
-      .configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) });
+    parent.command(name).description(description).allowExcessArguments(false);
   const run = (command: Command, action: DriveAction) => drive(command, action, io, global());
 
   sub('forward', 'drive straight: metres, negative to reverse')

@@ -232,11 +232,4 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
         },
       ),
   );
-
-  // nested subcommands report usage errors through the program's output and exit path too
-  for (const sub of fleet.commands) {
-    sub
-      .exitOverride()
-      .configureOutput({ writeOut: (t) => ctx.io.out(t), writeErr: (t) => ctx.io.err(t) });
-  }
 };
