@@ -10,7 +10,7 @@ export const registerTest: RegisterCommand = (program, ctx) => {
   const command = program
     .command('test')
     .description(
-      'Check a device on NATS against the Tafy HAL spec: message format, timing classes, error handling, capability accuracy, state consistency',
+      'check a device on NATS against the Tafy HAL spec: message format, timing classes, error handling, capability accuracy, state consistency',
     )
     .argument('<suite>', 'what to test: "hal", as the spec writes it (hal test hal ...)')
     .option(
