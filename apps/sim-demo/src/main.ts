@@ -1,5 +1,5 @@
 import './style.css';
-import { BUILTIN_MAPS, SimulationHAL, World } from '@hal/simulation';
+import { BUILTIN_MAPS, World } from '@hal/simulation';
 import { createThreeFrameSource, WorldScene } from '@hal/simulation/three';
 import { DemoControls } from './demo-controls.js';
 import { element } from './dom.js';
@@ -8,6 +8,10 @@ import { KeyboardTeleop } from './keyboard-teleop.js';
 import { TrajectoryPlot } from './plot.js';
 import { AgentPanel } from './panels/agent-panel.js';
 import { noteHalEvents, ResultsLog } from './results-log.js';
+import { RobotLabels } from './robots/robot-labels.js';
+import { RobotsCard } from './robots/robots-card.js';
+import { RobotRoster } from './robots/roster.js';
+import { selectedHal } from './robots/selected-hal.js';
 import { StatusLine } from './status-line.js';
 import { TelemetryPanel } from './telemetry-panel.js';
 import { RemotePanel } from './remote-panel.js';
@@ -15,27 +19,27 @@ import { readUrlSettings } from './url-settings.js';
 import { Viewport } from './viewport.js';
 
 /*
- * The browser demo: builds the world, its 3D scene and the robot's HAL, puts the page's panels
+ * The browser demo: builds the world, its 3D scene and the robots' HALs, puts the page's panels
  * together, and runs the frame loop. Each panel lives in its own module.
  */
 
-// ---- the world, its view and the robot's HAL ---------------------------------------------------
+// ---- the world, its view and the robots' HALs ------------------------------------------------
 
-const { mapName, speed } = readUrlSettings(location.search);
+const { mapName, speed, robots: robotCount } = readUrlSettings(location.search);
 const world = new World({ map: mapName, seed: 1 });
 world.startRealtime({ speed });
-const scene = new WorldScene(world, { showRangeRays: true });
+const colors = new Map<string, string>();
+const scene = new WorldScene(world, { showRangeRays: true, robotColor: (id) => colors.get(id) });
 const robotCamera = createThreeFrameSource(scene, { canvas: element('camera-view') });
-const hal = new SimulationHAL({ world, clock: 'realtime', frameSource: robotCamera.frameSource });
-await hal.initialize();
-const robotId = hal.robot.id;
+const roster = await RobotRoster.create({ world, frameSource: robotCamera.frameSource });
+// Every robot has its own HAL; the panels hold this one, which is always the selected robot's.
+const hal = selectedHal(() => roster.selected.hal);
 
 // ---- the panels ----------------------------------------------------------------------------------
 
 const viewport = new Viewport(element('viewport'), world, () => hal.robot);
 const status = new StatusLine(element('status'));
 const log = new ResultsLog(element('log'));
-noteHalEvents(hal, log);
 
 const planToggle = element<HTMLInputElement>('plan-toggle');
 const gridToggle = element<HTMLInputElement>('grid-toggle');
@@ -69,6 +73,7 @@ plotCanvas.addEventListener('click', (e) =>
 
 new DemoControls({
   hal,
+  setMap: (name) => roster.resetWorld(name),
   goals,
   teleop,
   viewport,
@@ -91,20 +96,53 @@ const telemetry = new TelemetryPanel({
 
 const remote = new RemotePanel(element('remote-card'), hal, log);
 
+// ---- several robots: colours, labels, events, and the robot the panels drive --------------------
+
+const robotsCard = new RobotsCard(element('robots-card'), roster, status);
+const labels = new RobotLabels(roster, viewport);
+const noted = new Map<string, () => void>();
+let driven = roster.selected;
+function robotsChanged(): void {
+  for (const robot of roster.robots) {
+    colors.set(robot.id, robot.color);
+    if (!noted.has(robot.id)) noted.set(robot.id, noteHalEvents(robot.hal, log, robot.label));
+  }
+  for (const [id, off] of noted) {
+    if (!roster.robots.some((r) => r.id === id)) {
+      off();
+      noted.delete(id);
+    }
+  }
+  if (roster.selected !== driven) {
+    // The goal and the keys belonged to the robot driven until now.
+    driven = roster.selected;
+    void goals.cancel();
+    teleop.releaseKeys();
+    teleop.forgetLastDrive();
+    plot.clear();
+    status.set(`Driving ${driven.label}`);
+  }
+}
+roster.onChange(robotsChanged);
+robotsChanged();
+for (let i = 1; i < robotCount; i += 1) await roster.add();
+
 // ---- the frame loop ------------------------------------------------------------------------------
 
 let lastTelemetry = 0;
 function frame(now: number): void {
   scene.update();
   viewport.render(scene.scene);
-  robotCamera.render(robotId);
+  labels.update();
   const robot = hal.robot;
+  robotCamera.render(robot.id);
   plot.record(robot.x, robot.y);
-  plot.draw(world, robotId, goals.goal, goals.plannedPath);
+  plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
   goals.refreshGrid();
   if (now - lastTelemetry > 100) {
     lastTelemetry = now;
     telemetry.show(world, hal.robot);
+    robotsCard.refresh();
   }
   requestAnimationFrame(frame);
 }
@@ -115,7 +153,11 @@ status.set(`Map "${mapName}": ${BUILTIN_MAPS[mapName].description}`);
 const hooks = {
   hal,
   world,
-  robotId,
+  roster,
+  /** The id of the robot the panels drive. */
+  get robotId() {
+    return roster.selected.id;
+  },
   goalState: () => goals.state,
   remote: () => remote.state,
   agentRunning: () => agent.running,
