@@ -162,6 +162,17 @@ const hooks = {
   remote: () => remote.state,
   agentRunning: () => agent.running,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
+  /** Every robot's id, label, pose and e-stop state, by number. */
+  robots: () =>
+    roster.robots.map(({ id, label, hal: { robot } }) => ({
+      id,
+      label,
+      x: robot.x,
+      y: robot.y,
+      yaw: robot.yaw,
+      running: robot.running,
+      emergencyStopped: robot.emergencyStopped,
+    })),
   /** Where a world point (metres) is on the screen, in client pixels. */
   worldToClient: (x: number, y: number) => viewport.worldToClient(x, y),
 };

@@ -3,7 +3,7 @@ import type { World } from '@hal/simulation';
 /** Room kept between a new robot and anything else, metres. */
 const CLEARANCE_M = 0.06;
 /** Spacing of the grid of places tried around the map's first start, metres. */
-const SPACING_M = 0.3;
+const SPACING_M = 0.4;
 
 /**
  * Where a new robot of radius `radius` can start in `world`: the map's start poses in order,
