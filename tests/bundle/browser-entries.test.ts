@@ -60,6 +60,13 @@ describe('the browser entries import nothing Node-only statically', () => {
     expect(bare).toEqual(['@hal/types', 'zod']);
   });
 
+  it('@hal/fleet: the fleet modes reach neither NATS nor the device manager', () => {
+    const { files, bare } = reachable('fleet/src/index.ts');
+    expect(files.length).toBeGreaterThan(5);
+    expect(files.some((f) => f.includes('/node/'))).toBe(false);
+    expect(bare).toEqual(['@hal/types', 'zod']);
+  });
+
   it('@hal/remote/server keeps ws and the Node built-ins (so the check above can fail)', () => {
     const { bare } = reachable('remote/src/server/index.ts');
     expect(bare).toEqual(expect.arrayContaining(['node:crypto', 'node:http', 'ws']));

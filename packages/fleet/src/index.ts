@@ -1,0 +1,41 @@
+// Browser-safe: no Node imports and no NATS. The device manager is in '@hal/fleet/node'.
+export { Fleet } from './fleet.js';
+export type { FleetOptions } from './fleet.js';
+
+export { FLEET_MODES, fleetReport } from './report.js';
+export type { FleetMode, FleetReport, MemberResult } from './report.js';
+
+export {
+  FLEET_COMMAND_KINDS,
+  FleetCommandSchema,
+  parseFleetCommand,
+  runFleetCommand,
+} from './commands.js';
+export type { FleetCommand } from './commands.js';
+
+export { checkDeviceId, selectMembers } from './members.js';
+export type { FleetMember } from './members.js';
+
+export { DEFAULT_CALL_TIMEOUT_MS } from './synchronized.js';
+export type { MemberCall, SynchronizedOptions } from './synchronized.js';
+export { callWithTimeout } from './call-with-timeout.js';
+
+export { LeaderFollower } from './leader-follower.js';
+export type {
+  FollowerReport,
+  FormationEndReason,
+  FormationReport,
+  LeaderFollowerOptions,
+} from './leader-follower-options.js';
+export {
+  FORMATION_SHAPES,
+  decideFollowerAction,
+  formationOffsets,
+  slotPosition,
+} from './formation.js';
+export type { FollowerAction, FormationOffset, FormationShape, PlanarPose } from './formation.js';
+
+export { SteppedScheduler, realTimeScheduler } from './scheduler.js';
+export type { FleetScheduler } from './scheduler.js';
+export { silentFleetLogger } from './logger.js';
+export type { FleetLogger } from './logger.js';
