@@ -23,9 +23,23 @@ interface RobotView {
   emergencyStopped: boolean;
 }
 
+interface FleetState {
+  mode: string;
+  busy: boolean;
+  lastReport: {
+    success: boolean;
+    results: Array<{ device: string; success: boolean; code?: string }>;
+  } | null;
+  formation: { running: boolean; leader: string; shape: string } | null;
+  formationEnd: string | null;
+  estopped: boolean;
+}
+
 interface FleetDemoHooks {
   robotId: string;
   robots(): RobotView[];
+  fleet(): FleetState;
+  slotErrors(): Array<{ device: string; errorM: number }>;
 }
 
 /** The page's window with the demo's hooks (functions passed to the page must name it inline). */
@@ -108,9 +122,90 @@ describe('apps/sim-demo with several robots, in Chromium', () => {
     expect(demo.problems).toEqual([]);
   }, 120_000);
 
-  it('saves a screenshot with no console errors', async () => {
+  it("runs the fleet modes: one command to all with each robot's own result, a formation behind the leader, the fleet e-stop", async () => {
+    // Every robot back at a free place, facing +x.
+    await page.locator('#reset-button').click();
+    await page.waitForFunction(
+      () => (window as unknown as DemoWindow).simDemo.robots().every((r) => !r.running),
+      undefined,
+      { timeout: 10_000 },
+    );
+
+    // Synchronized, with R3's own e-stop latched: R3 alone fails, with its own code.
+    await page.locator('.robot-item[data-robot-id="robot-3"]').click();
+    await page.locator('#estop-button').click();
+    await page.locator('#fleet-mode').selectOption('synchronized');
+    await page.locator('#fleet-command').selectOption('forward');
+    await page.locator('#fleet-amount').fill('20');
+    const before = await robots();
+    await page.locator('#fleet-send').click();
+    await page.waitForFunction(
+      () => (window as unknown as DemoWindow).simDemo.fleet().lastReport !== null,
+      undefined,
+      { timeout: 60_000 },
+    );
+    const report = (await page.evaluate(() => (window as unknown as DemoWindow).simDemo.fleet()))
+      .lastReport;
+    expect(report?.success).toBe(false);
+    expect(report?.results.map((r) => [r.device, r.success, r.code])).toEqual([
+      ['robot-1', true, undefined],
+      ['robot-2', true, undefined],
+      ['robot-3', false, 'EMERGENCY_STOPPED'],
+      ['robot-4', true, undefined],
+    ]);
+    await expect(page.locator('#fleet-results li.fail').textContent()).resolves.toContain(
+      'R3 ✗ EMERGENCY_STOPPED',
+    );
+    const after = await robots();
+    after.forEach((robot, i) => {
+      const moved = robot.x - (before[i]?.x ?? 0);
+      // 20 cm ahead (+x), to a few millimetres (whole steps); R3 did not move.
+      expect(moved).toBeCloseTo(robot.id === 'robot-3' ? 0 : 0.2, 2);
+    });
+    await page.locator('#estop-button').click(); // resets R3's e-stop
+
+    // Leader-follower: R1 leads a wedge; the others gather in their slots, then follow it.
+    await page.locator('.robot-item[data-robot-id="robot-1"]').click();
+    await page.locator('#fleet-mode').selectOption('leader-follower');
+    await page.locator('#formation-shape').selectOption('wedge');
+    await page.locator('#formation-toggle').click();
+    const inSlots = () => {
+      const errors = (window as unknown as DemoWindow).simDemo.slotErrors();
+      return errors.length === 3 && errors.every((e) => e.errorM < 0.06);
+    };
+    await page.waitForFunction(inSlots, undefined, { timeout: 90_000 });
+    const start = (await robots())[0];
+    await page.locator('#viewport > canvas').focus();
+    await page.keyboard.down('ArrowUp');
+    await page.waitForFunction(
+      (x0) => ((window as unknown as DemoWindow).simDemo.robots()[0]?.x ?? 0) > x0 + 0.4,
+      start?.x ?? 0,
+      { timeout: 30_000 },
+    );
+    await page.keyboard.up('ArrowUp');
+    await page.waitForFunction(inSlots, undefined, { timeout: 90_000 });
+    const state = await page.evaluate(() => (window as unknown as DemoWindow).simDemo.fleet());
+    expect(state.formation).toEqual({ running: true, leader: 'robot-1', shape: 'wedge' });
+
+    // The fleet e-stop latches every robot and ends the formation; its reset clears them all.
+    await page.locator('#fleet-estop').click();
+    await page.waitForFunction(
+      () => (window as unknown as DemoWindow).simDemo.fleet().formationEnd === 'estop',
+      undefined,
+      { timeout: 20_000 },
+    );
+    expect((await robots()).map((r) => r.emergencyStopped)).toEqual([true, true, true, true]);
+    await expect(page.locator('#fleet-estop').textContent()).resolves.toBe('RESET FLEET E-STOP');
+    await page.locator('#fleet-estop').click();
+    await page.waitForFunction(
+      () => !(window as unknown as DemoWindow).simDemo.fleet().estopped,
+      undefined,
+      { timeout: 20_000 },
+    );
+    expect((await robots()).map((r) => r.emergencyStopped)).toEqual([false, false, false, false]);
+
     mkdirSync(artifacts, { recursive: true });
     await page.screenshot({ path: join(artifacts, 'fleet-demo.png') });
     expect(demo.problems).toEqual([]);
-  });
+  }, 300_000);
 });

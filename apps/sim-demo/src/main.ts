@@ -2,6 +2,9 @@ import './style.css';
 import { BUILTIN_MAPS, World } from '@hal/simulation';
 import { createThreeFrameSource, WorldScene } from '@hal/simulation/three';
 import { DemoControls } from './demo-controls.js';
+import { DemoFleet } from './fleet/demo-fleet.js';
+import { FleetPanel } from './fleet/fleet-panel.js';
+import { fleetLogger } from './fleet/fleet-logger.js';
 import { element } from './dom.js';
 import { GoalDriver } from './goal-driver.js';
 import { KeyboardTeleop } from './keyboard-teleop.js';
@@ -99,10 +102,18 @@ const remote = new RemotePanel(element('remote-card'), hal, log);
 // ---- several robots: colours, labels, events, and the robot the panels drive --------------------
 
 const robotsCard = new RobotsCard(element('robots-card'), roster, status);
+const fleet = new FleetPanel(
+  element('fleet-card'),
+  new DemoFleet(roster, fleetLogger(log)),
+  roster,
+  log,
+  status,
+);
 const labels = new RobotLabels(roster, viewport);
 const noted = new Map<string, () => void>();
 let driven = roster.selected;
 function robotsChanged(): void {
+  fleet.robotsChanged();
   for (const robot of roster.robots) {
     colors.set(robot.id, robot.color);
     if (!noted.has(robot.id)) noted.set(robot.id, noteHalEvents(robot.hal, log, robot.label));
@@ -173,6 +184,10 @@ const hooks = {
       running: robot.running,
       emergencyStopped: robot.emergencyStopped,
     })),
+  /** The Fleet card's mode, last per-robot results, formation and fleet e-stop. */
+  fleet: () => fleet.state,
+  /** While a formation runs: each follower's distance to its slot, metres. */
+  slotErrors: () => fleet.slotErrors(),
   /** Where a world point (metres) is on the screen, in client pixels. */
   worldToClient: (x: number, y: number) => viewport.worldToClient(x, y),
 };
