@@ -127,7 +127,8 @@ function robotsChanged(): void {
   if (roster.selected !== driven) {
     // The goal and the keys belonged to the robot driven until now.
     driven = roster.selected;
-    void goals.cancel();
+    // A fresh occupancy grid too: the old one was mapped by the other robot's sensors.
+    void goals.cancel().then(() => goals.startOver());
     teleop.releaseKeys();
     teleop.forgetLastDrive();
     plot.clear();
