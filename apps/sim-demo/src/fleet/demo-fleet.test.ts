@@ -65,4 +65,16 @@ describe('DemoFleet', () => {
     demo.sync();
     expect(demo.fleet.devices).toEqual(['robot-1', 'robot-2', 'robot-4', added.id]);
   });
+
+  it('stops a running formation when the map changes', async () => {
+    const { roster, demo } = await fourRobots();
+    const formation = await demo.fleet.leaderFollower({
+      leader: 'robot-1',
+      formation: formationOffsets('column', ['robot-2', 'robot-3', 'robot-4'], 0.35),
+    });
+    roster.resetWorld('obstacles');
+    expect(formation.running).toBe(false);
+    expect((await formation.done).reason).toBe('stopped');
+    expect(demo.fleet.formation).toBeUndefined();
+  });
 });

@@ -5,7 +5,7 @@ import type { RobotRoster } from '../robots/roster.js';
 /**
  * The demo's robots as a `@hal/fleet` Fleet: one member per robot (its id, its own HAL), kept in
  * step with the Robots card. Call {@link sync} whenever the roster changes; a running formation
- * is stopped first (its members may be gone).
+ * is stopped first (its members may be gone), and when the map changes.
  *
  * The fleet runs on the wall clock (its default), not on the world's: the real-time ticker moves
  * the world in bursts of many ticks between two browser tasks, and a simulated-time timeout
@@ -19,6 +19,8 @@ export class DemoFleet {
   constructor(roster: RobotRoster, logger?: FleetLogger) {
     this.#roster = roster;
     this.fleet = new Fleet([], logger === undefined ? {} : { logger });
+    // A new map puts every robot at a start again: a formation's slots no longer mean anything.
+    roster.world.events.on('map', () => void this.fleet.formation?.stop());
     this.sync();
   }
 
