@@ -28,21 +28,22 @@ interface Published {
   files: string[];
 }
 
-/** Whether every entry of a package resolves only for Node (a `node` condition, no `import`). */
+/** Whether an export entry resolves only for Node (a `node` condition, no `import`). */
+function entryNodeOnly(entry: unknown): boolean {
+  return (
+    typeof entry === 'object' &&
+    entry !== null &&
+    'node' in entry &&
+    !('import' in entry) &&
+    !('default' in entry) &&
+    !('browser' in entry)
+  );
+}
+
+/** Whether every entry of a package resolves only for Node. */
 function nodeOnly(manifest: { exports?: Record<string, unknown> }): boolean {
   const entries = Object.values(manifest.exports ?? {});
-  return (
-    entries.length > 0 &&
-    entries.every(
-      (entry) =>
-        typeof entry === 'object' &&
-        entry !== null &&
-        'node' in entry &&
-        !('import' in entry) &&
-        !('default' in entry) &&
-        !('browser' in entry),
-    )
-  );
+  return entries.length > 0 && entries.every(entryNodeOnly);
 }
 
 /** The version of three the workspace uses: the one a user's app adds for the scene binding. */
@@ -163,8 +164,10 @@ describe('the packages as published', () => {
       const peersInstalled = peers.every((peer) =>
         existsSync(join(appDir, 'node_modules', peer, 'package.json')),
       );
-      return Object.keys(manifest.exports ?? {})
-        .filter((subpath) => subpath === '.' || peersInstalled)
+      // a Node-only subpath (@hal/fleet/node, the device manager) is not for browsers
+      return Object.entries(manifest.exports ?? {})
+        .filter(([subpath, entry]) => (subpath === '.' || peersInstalled) && !entryNodeOnly(entry))
+        .map(([subpath]) => subpath)
         .map((subpath) =>
           subpath === '.' ? manifest.name : `${manifest.name}/${subpath.slice(2)}`,
         );

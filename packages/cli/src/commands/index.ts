@@ -2,6 +2,7 @@
 // options shared by all (--json) are read through `global()` when it runs.
 import type { Command } from 'commander';
 import type { CliIO, GlobalOptions } from '../io.js';
+import { registerFleet } from './fleet.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -14,4 +15,4 @@ export interface CommandContext {
 export type RegisterCommand = (program: Command, ctx: CommandContext) => void;
 
 /** The subcommands, in the order `hal --help` lists them. */
-export const COMMANDS: readonly RegisterCommand[] = [];
+export const COMMANDS: readonly RegisterCommand[] = [registerFleet];

@@ -1,0 +1,242 @@
+// `hal fleet`: the devices on NATS as one fleet: list them, read their health, e-stop them all,
+// and run the fleet modes (synchronized, leader-follower).
+import { FORMATION_SHAPES } from '@hal/fleet';
+import type { FormationShape } from '@hal/fleet';
+import { Command, InvalidArgumentError, Option } from 'commander';
+import { CliError } from '../cli-error.js';
+import { parseCommandSpec, COMMAND_SPEC_HELP } from '../fleet/command-spec.js';
+import { openFleetSession } from '../fleet/fleet-session.js';
+import type { FleetCliOptions } from '../fleet/fleet-session.js';
+import { formatFormation, formatHealth, formatReport } from '../fleet/format.js';
+import { runLeaderFollower, runSynchronized } from '../fleet/run.js';
+import { emit } from '../io.js';
+import { addNatsOptions, deviceIdArg } from '../nats-options.js';
+import type { CommandContext, RegisterCommand } from './index.js';
+
+function positiveNumber(value: string): number {
+  const n = Number(value);
+  if (!Number.isFinite(n) || n <= 0)
+    throw new InvalidArgumentError(`expected a positive number, got "${value}"`);
+  return n;
+}
+
+const collectDevice = (value: string, previous: string[] = []): string[] => [
+  ...previous,
+  deviceIdArg(value),
+];
+
+/** A fleet subcommand with the shared device and NATS options. */
+function fleetSubcommand(name: string, description: string): Command {
+  const command = new Command(name)
+    .description(description)
+    .option(
+      '--device <id>',
+      'a device on NATS (repeat for more; default: every device that announces itself)',
+      collectDevice,
+    )
+    .addOption(
+      new Option('--discover-ms <ms>', 'how long to listen for announcements')
+        .default(6000)
+        .argParser(positiveNumber),
+    )
+    .addOption(
+      new Option('--offline-after-ms <ms>', 'a device is offline after this long without an answer')
+        .default(3000)
+        .argParser(positiveNumber),
+    );
+  return addNatsOptions(command);
+}
+
+/** Runs `body` with an open fleet session, closing it whatever happens. */
+async function withSession<T>(
+  options: FleetCliOptions,
+  ctx: CommandContext,
+  body: (session: Awaited<ReturnType<typeof openFleetSession>>) => Promise<T>,
+): Promise<T> {
+  const session = await openFleetSession(options, ctx.io, ctx.global());
+  try {
+    return await body(session);
+  } finally {
+    await session.close();
+  }
+}
+
+function failIfAny(what: string, failed: string[]): void {
+  if (failed.length > 0) throw new CliError('FAILED', `${what} failed on ${failed.join(', ')}`);
+}
+
+export const registerFleet: RegisterCommand = (program, ctx) => {
+  const fleet = program
+    .command('fleet')
+    .description(
+      'Several robots on NATS as one fleet: devices, health, e-stop and the fleet modes',
+    );
+
+  fleet.addCommand(
+    fleetSubcommand(
+      'devices',
+      'list the devices, their type, mode, capabilities and whether they answer',
+    ).action((options: FleetCliOptions) =>
+      withSession(options, ctx, async ({ manager }) => {
+        const devices = manager.health().map((h) => {
+          const info = manager.createDeviceHAL(h.device).getDeviceInfo();
+          return {
+            device: h.device,
+            online: h.online,
+            type: info.type,
+            mode: info.mode,
+            capabilities: info.capabilities,
+          };
+        });
+        emit(ctx.io, ctx.global(), { devices }, () =>
+          devices
+            .map(
+              (d) =>
+                `${d.device}  ${d.online ? 'online' : 'OFFLINE'}  ${d.type} (${d.mode})  ${d.capabilities.join(' ')}`,
+            )
+            .join('\n'),
+        );
+      }),
+    ),
+  );
+
+  fleet.addCommand(
+    fleetSubcommand('health', 'every device: online, e-stop, pose, faults').action(
+      (options: FleetCliOptions) =>
+        withSession(options, ctx, async ({ manager }) => {
+          const health = manager.health();
+          emit(ctx.io, ctx.global(), { health }, () => formatHealth(health));
+        }),
+    ),
+  );
+
+  fleet.addCommand(
+    fleetSubcommand('estop', 'emergency-stop every device at once (latched until reset)')
+      .argument('[reason]', 'why, stored with the latch', 'fleet e-stop')
+      .action((reason: string, options: FleetCliOptions) =>
+        withSession(options, ctx, async ({ manager }) => {
+          const report = await manager.emergencyStop(reason);
+          emit(ctx.io, ctx.global(), report, () => formatReport('e-stop', report));
+          failIfAny('the e-stop', report.failed);
+        }),
+      ),
+  );
+
+  fleet.addCommand(
+    fleetSubcommand('reset', "reset every device's emergency stop").action(
+      (options: FleetCliOptions) =>
+        withSession(options, ctx, async ({ manager }) => {
+          const report = await manager.fleet.resetEmergencyStop();
+          emit(ctx.io, ctx.global(), report, () => formatReport('reset', report));
+          failIfAny('the reset', report.failed);
+        }),
+    ),
+  );
+
+  fleet.addCommand(
+    fleetSubcommand(
+      'run',
+      'run a fleet mode: one command to all, or a leader with followers in formation',
+    )
+      .addOption(
+        new Option('--mode <mode>', 'the fleet mode')
+          .choices(['synchronized', 'leader-follower'])
+          .makeOptionMandatory(),
+      )
+      .requiredOption('--command <command>', `what to do: ${COMMAND_SPEC_HELP}`)
+      .addOption(
+        new Option('--timeout-ms <ms>', 'per-device wait (synchronized)')
+          .default(60_000)
+          .argParser(positiveNumber),
+      )
+      .option('--leader <id>', 'leader-follower: the leader (runs --command)', deviceIdArg)
+      .addOption(
+        new Option('--formation <shape>', 'leader-follower: the formation')
+          .choices([...FORMATION_SHAPES])
+          .default('column'),
+      )
+      .addOption(
+        new Option('--spacing <m>', 'leader-follower: spacing, metres')
+          .default(0.3)
+          .argParser(positiveNumber),
+      )
+      .addOption(
+        new Option('--tolerance <m>', 'leader-follower: slot tolerance, metres')
+          .default(0.03)
+          .argParser(positiveNumber),
+      )
+      .addOption(
+        new Option(
+          '--settle-timeout-ms <ms>',
+          'leader-follower: how long followers may take to settle',
+        )
+          .default(120_000)
+          .argParser(positiveNumber),
+      )
+      .action(
+        (
+          options: FleetCliOptions & {
+            mode: 'synchronized' | 'leader-follower';
+            command: string;
+            timeoutMs: number;
+            leader?: string;
+            formation: FormationShape;
+            spacing: number;
+            tolerance: number;
+            settleTimeoutMs: number;
+          },
+        ) => {
+          const command = parseCommandSpec(options.command);
+          if (options.mode === 'leader-follower' && options.leader === undefined) {
+            throw new CliError('USAGE', '--mode leader-follower needs --leader <id>');
+          }
+          return withSession(options, ctx, async ({ manager }) => {
+            if (options.mode === 'synchronized') {
+              const report = await runSynchronized(
+                manager,
+                command,
+                options.timeoutMs,
+                ctx.io,
+                ctx.global(),
+              );
+              emit(ctx.io, ctx.global(), report, () =>
+                formatReport(`synchronized ${command.kind}`, report),
+              );
+              failIfAny(command.kind, report.failed);
+              return;
+            }
+            const result = await runLeaderFollower(
+              manager,
+              command,
+              {
+                leader: options.leader as string,
+                formation: options.formation,
+                spacing: options.spacing,
+                toleranceM: options.tolerance,
+                settleTimeoutMs: options.settleTimeoutMs,
+              },
+              ctx.io,
+              ctx.global(),
+            );
+            emit(ctx.io, ctx.global(), result, () => formatFormation(result.formation));
+            if (!result.leader.result.success) {
+              throw new CliError(
+                'FAILED',
+                `the leader's ${command.kind} failed: ${result.leader.result.code}`,
+              );
+            }
+            if (result.formation.reason !== 'leader-stopped') {
+              throw new CliError('FAILED', `the formation ended: ${result.formation.reason}`);
+            }
+          });
+        },
+      ),
+  );
+
+  // nested subcommands report usage errors through the program's output and exit path too
+  for (const sub of fleet.commands) {
+    sub
+      .exitOverride()
+      .configureOutput({ writeOut: (t) => ctx.io.out(t), writeErr: (t) => ctx.io.err(t) });
+  }
+};

@@ -1,0 +1,84 @@
+// `--command` for `hal fleet run`: a short form people type (forward:5, rotate:left:90,
+// moveTo:0.5,0.2) or a fleet command as JSON; both become a checked FleetCommand.
+import { parseFleetCommand } from '@hal/fleet';
+import type { FleetCommand } from '@hal/fleet';
+import { isHalError } from '@hal/types';
+import { CliError } from '../cli-error.js';
+
+export const COMMAND_SPEC_HELP =
+  'forward:<cm> | backward:<cm> | rotate:<left|right>:<degrees> | moveTo:<x>,<y>[,<m/s>] | ' +
+  'drive:<left>,<right>[,<ms>] (power -255..255) | led:<r>,<g>,<b> | stop | a JSON fleet command';
+
+function numbers(text: string | undefined, count: [number, number], spec: string): number[] {
+  const parts = (text ?? '').split(',').map((p) => p.trim());
+  const values = parts.map(Number);
+  if (
+    text === undefined ||
+    parts.length < count[0] ||
+    parts.length > count[1] ||
+    parts.some((p) => p === '') ||
+    values.some((v) => !Number.isFinite(v))
+  ) {
+    throw new CliError('USAGE', `--command "${spec}": expected ${COMMAND_SPEC_HELP}`);
+  }
+  return values;
+}
+
+/** Parses `--command`; a malformed one is a USAGE error that names the accepted forms. */
+export function parseCommandSpec(spec: string): FleetCommand {
+  const text = spec.trim();
+  let raw: unknown;
+  if (text.startsWith('{')) {
+    try {
+      raw = JSON.parse(text);
+    } catch {
+      throw new CliError('USAGE', `--command: not valid JSON: ${text}`);
+    }
+  } else {
+    const [verb = '', ...rest] = text.split(':');
+    const arg = rest.join(':');
+    switch (verb.toLowerCase()) {
+      case 'forward':
+      case 'backward': {
+        const [cm] = numbers(arg, [1, 1], text);
+        raw = {
+          kind: verb.toLowerCase() === 'forward' ? 'moveForward' : 'moveBackward',
+          distanceCm: cm,
+        };
+        break;
+      }
+      case 'rotate': {
+        const [direction, degrees] = arg.split(':');
+        const [value] = numbers(degrees, [1, 1], text);
+        raw = { kind: 'rotate', direction, degrees: value };
+        break;
+      }
+      case 'moveto': {
+        const [x, y, speed] = numbers(arg, [2, 3], text);
+        raw = { kind: 'moveTo', x, y, ...(speed === undefined ? {} : { speed }) };
+        break;
+      }
+      case 'drive': {
+        const [left, right, durationMs] = numbers(arg, [2, 3], text);
+        raw = { kind: 'drive', left, right, ...(durationMs === undefined ? {} : { durationMs }) };
+        break;
+      }
+      case 'led': {
+        const [r, g, b] = numbers(arg, [3, 3], text);
+        raw = { kind: 'setLED', r, g, b };
+        break;
+      }
+      case 'stop':
+        raw = { kind: 'stop' };
+        break;
+      default:
+        throw new CliError('USAGE', `--command "${text}": expected ${COMMAND_SPEC_HELP}`);
+    }
+  }
+  try {
+    return parseFleetCommand(raw);
+  } catch (error) {
+    if (isHalError(error)) throw new CliError('USAGE', `--command "${text}": ${error.message}`);
+    throw error;
+  }
+}

@@ -1,0 +1,136 @@
+import { NatsHAL } from '@hal/nats';
+import { PhysicalHAL } from '@hal/physical';
+import { SimulationHAL } from '@hal/simulation';
+import { describe, expect, it } from 'vitest';
+import { createDeviceHAL } from './create-device-hal.js';
+import { parseFleetConfig } from './device-config.js';
+import { DeviceManager } from './device-manager.js';
+
+const sim = (id: string, y: number) => ({
+  type: 'simulated' as const,
+  id,
+  start: { x: 0, y, yaw: 0 },
+  realtimeSpeed: 20,
+});
+
+describe('fleet config', () => {
+  it('fills defaults and checks every device', () => {
+    const config = parseFleetConfig({ devices: [sim('a', 0)] });
+    expect(config).toMatchObject({ mode: 'independent', telemetryRateHz: 2, offlineAfterMs: 3000 });
+    expect(config.devices[0]).toMatchObject({ world: 'default', clock: 'realtime' });
+  });
+
+  it('refuses duplicate ids, a NATS device without servers, an unknown type and bad ids, by path', () => {
+    expect(() => parseFleetConfig({ devices: [sim('a', 0), sim('a', 1)] })).toThrow(
+      /devices\.1\.id: duplicate id "a"/,
+    );
+    expect(() => new DeviceManager({ devices: [{ type: 'nats', id: 'n' }] })).toThrow(
+      /nats: device "n" is on NATS/,
+    );
+    expect(() => parseFleetConfig({ devices: [{ type: 'drone', id: 'd' }] })).toThrow(
+      /devices\.0\.type/,
+    );
+    expect(() => parseFleetConfig({ devices: [sim('a b', 0)] })).toThrow(/devices\.0\.id/);
+    expect(() => parseFleetConfig({ mode: 'swarm' })).toThrow(/mode/);
+    expect(() =>
+      parseFleetConfig({ devices: [{ type: 'physical', id: 'p', connection: { type: 'can' } }] }),
+    ).toThrow(/connection\.type/);
+  });
+});
+
+describe('createDeviceHAL routing', () => {
+  it('routes simulated, physical and NATS devices to their HALs', () => {
+    const worlds = new DeviceManager();
+    const ctx = {
+      world: (name: string) => worlds.world(name),
+      nats: { servers: 'nats://127.0.0.1:1' },
+    };
+    const s = createDeviceHAL(parseFleetConfig({ devices: [sim('s', 0)] }).devices[0]!, ctx);
+    expect(s).toBeInstanceOf(SimulationHAL);
+    expect((s as SimulationHAL).world).toBe(worlds.world('default'));
+    const p = createDeviceHAL(
+      parseFleetConfig({
+        devices: [
+          {
+            type: 'physical',
+            id: 'p',
+            connection: { type: 'wifi', host: '127.0.0.1', udpPort: 4210 },
+          },
+        ],
+      }).devices[0]!,
+      ctx,
+    );
+    expect(p).toBeInstanceOf(PhysicalHAL);
+    const n = createDeviceHAL({ type: 'nats', id: 'n' }, ctx);
+    expect(n).toBeInstanceOf(NatsHAL);
+    expect(n.getDeviceInfo().id).toBe('n');
+    expect(() => createDeviceHAL({ type: 'nats', id: 'n' }, { world: ctx.world })).toThrow(
+      /no NATS servers/,
+    );
+  });
+});
+
+describe('DeviceManager with simulated devices', () => {
+  it('connects every device, reports health and telemetry, and drives them in the fleet modes', async () => {
+    const manager = new DeviceManager({
+      telemetryRateHz: 10,
+      devices: [sim('a', 0), sim('b', 0.3), sim('c', 0.6)],
+    });
+    const online: string[] = [];
+    manager.on('online', (e) => online.push(e.device));
+    try {
+      const health = await manager.start();
+      expect(health.map((h) => [h.device, h.online, h.ready])).toEqual([
+        ['a', true, true],
+        ['b', true, true],
+        ['c', true, true],
+      ]);
+      expect(online).toEqual(['a', 'b', 'c']);
+      expect(health[1]?.telemetry?.pose.y).toBeCloseTo(0.3, 6);
+      // one world for all three
+      expect(
+        (manager.createDeviceHAL('a') as unknown as { inner: SimulationHAL }).inner.world,
+      ).toBe(manager.world());
+      const report = await manager.fleet.synchronized({ kind: 'moveForward', distanceCm: 2 });
+      expect(report.succeeded).toEqual(['a', 'b', 'c']);
+      const telemetry = await new Promise<number>((resolve) => {
+        const off = manager.on('telemetry', (t) => {
+          if (t.device === 'c' && t.pose.x > 0.019) {
+            off();
+            resolve(t.pose.x);
+          }
+        });
+      });
+      expect(telemetry).toBeCloseTo(0.02, 3);
+      // the configured speed: the world runs 20x faster than the wall clock
+      expect(manager.world().realtimeSpeed).toBe(20);
+      const estop = await manager.emergencyStop('test');
+      expect(estop.success).toBe(true);
+      expect(manager.health().every((h) => h.emergencyStopped)).toBe(true);
+    } finally {
+      await manager.stop();
+    }
+  });
+
+  it('refuses to register a bad or duplicate device and answers an unknown id clearly', () => {
+    const manager = new DeviceManager({ devices: [sim('a', 0)] });
+    expect(() => manager.register(sim('a', 1))).toThrow(/already registered/);
+    expect(() => manager.register({ type: 'simulated' })).toThrow(/id/);
+    expect(() => manager.register({ type: 'nats', id: 'n' })).toThrow(/no NATS servers/);
+    expect(() => manager.createDeviceHAL('zz')).toThrow(/no device "zz" \(devices: a\)/);
+    expect(manager.devices).toEqual(['a']);
+  });
+
+  it('fails calls to a device that is not online yet with NOT_CONNECTED, offline: true', async () => {
+    const manager = new DeviceManager({ devices: [sim('a', 0)] });
+    const result = await manager.createDeviceHAL('a').locomotion.moveForward(1);
+    expect(result).toMatchObject({
+      code: 'NOT_CONNECTED',
+      details: { device: 'a', offline: true },
+    });
+    // the e-stop is never refused
+    expect((await manager.createDeviceHAL('a').safety.emergencyStop('x')).code).not.toBe(
+      'NOT_CONNECTED',
+    );
+  });
+});

@@ -1,0 +1,342 @@
+import { openConnection } from '@hal/nats';
+import type { NatsConnectionSource, NatsLogger } from '@hal/nats';
+import { World } from '@hal/simulation';
+import { HalError, toHalError } from '@hal/types';
+import type { HardwareAbstractionLayer } from '@hal/types';
+import { Fleet } from '../fleet.js';
+import type { FleetOptions } from '../fleet.js';
+import { silentFleetLogger } from '../logger.js';
+import type { FleetLogger } from '../logger.js';
+import { createDeviceHAL, definedFields } from './create-device-hal.js';
+import { parseDeviceConfig, parseFleetConfig } from './device-config.js';
+import type { DeviceConfig, FleetConfig, FleetConfigInput } from './device-config.js';
+import type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
+import { OfflineGuardHAL } from './offline-guard.js';
+import { boundedWait } from './bounded-wait.js';
+
+export interface DeviceManagerOptions {
+  /** An open NATS connection for the "nats" devices (not closed by the manager). */
+  natsConnection?: NatsConnectionSource;
+  logger?: FleetLogger;
+  natsLogger?: NatsLogger;
+  /** Options of the fleet the manager drives (scheduler, timeouts). */
+  fleet?: Omit<FleetOptions, 'logger'>;
+}
+
+interface Managed {
+  config: DeviceConfig;
+  raw: HardwareAbstractionLayer;
+  guarded: OfflineGuardHAL;
+  online: boolean;
+  initialized: boolean;
+  busy: boolean;
+  /** A connection attempt still running (never two at once: a HAL's initialize is not reentrant). */
+  initializing?: Promise<void> | undefined;
+  lastSeen?: number;
+  telemetry?: DeviceTelemetry;
+  lastError?: string;
+}
+
+type Listener<E extends keyof DeviceManagerEvents> = (event: DeviceManagerEvents[E]) => void;
+
+/**
+ * The fleet's devices, from config: each routed to its HAL (SimulationHAL, PhysicalHAL or
+ * NatsHAL), read at `telemetryRateHz` (pose, safety), seen online or offline (events), and
+ * driven in the fleet modes through {@link fleet}. A call to an offline device fails at once
+ * with NOT_CONNECTED, details `{ device, offline: true }`; the fleet e-stop reaches every device.
+ */
+export class DeviceManager {
+  readonly config: FleetConfig;
+  /** The fleet modes over the managed devices (their offline-guarded HALs). */
+  readonly fleet: Fleet;
+  readonly #devices = new Map<string, Managed>();
+  readonly #worlds = new Map<string, World>();
+  readonly #listeners = new Map<keyof DeviceManagerEvents, Set<(e: never) => void>>();
+  readonly #log: FleetLogger;
+  readonly #options: DeviceManagerOptions;
+  #nats: { source: NatsConnectionSource; close?: () => Promise<void> } | undefined;
+  #timer: ReturnType<typeof setInterval> | undefined;
+  #started = false;
+
+  constructor(config: FleetConfigInput | FleetConfig = {}, options: DeviceManagerOptions = {}) {
+    this.config = parseFleetConfig(config);
+    this.#options = options;
+    this.#log = options.logger ?? silentFleetLogger;
+    this.fleet = new Fleet([], { ...options.fleet, logger: this.#log });
+    if (options.natsConnection !== undefined) this.#nats = { source: options.natsConnection };
+    const onNats = this.config.devices.find((d) => d.type === 'nats');
+    if (onNats !== undefined && this.#nats === undefined && this.config.nats === undefined) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `fleet config: nats: device "${onNats.id}" is on NATS: give "nats.servers" (or an open connection)`,
+        { details: { device: onNats.id, parameter: 'nats' } },
+      );
+    }
+    for (const device of this.config.devices) this.#add(device);
+  }
+
+  /** The managed device ids, in registration order. */
+  get devices(): string[] {
+    return [...this.#devices.keys()];
+  }
+
+  /** The shared world `name` of the simulated devices (created on first use). */
+  world(name = 'default'): World {
+    let world = this.#worlds.get(name);
+    if (world === undefined) {
+      world = new World();
+      this.#worlds.set(name, world);
+    }
+    return world;
+  }
+
+  /** Registers a device (checked: INVALID_PARAMETER naming the field); connected on the next round. */
+  register(input: unknown): void {
+    const config = parseDeviceConfig(input);
+    if (this.#devices.has(config.id)) {
+      throw new HalError('INVALID_PARAMETER', `device "${config.id}" is already registered`, {
+        details: { device: config.id },
+      });
+    }
+    if (config.type === 'nats' && this.#nats === undefined && this.config.nats === undefined) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `device "${config.id}" is on NATS: no NATS servers given`,
+        {
+          details: { device: config.id, parameter: 'nats' },
+        },
+      );
+    }
+    this.#add(config);
+    if (this.#started) void this.#poll(this.#devices.get(config.id) as Managed);
+  }
+
+  /** Removes a device, stopping it and releasing its HAL. Returns whether it was registered. */
+  async unregister(id: string): Promise<boolean> {
+    const managed = this.#devices.get(id);
+    if (managed === undefined) return false;
+    this.#devices.delete(id);
+    this.fleet.remove(id);
+    await boundedWait(managed.raw.cleanup(), 5000).catch(() => undefined);
+    return true;
+  }
+
+  /**
+   * The HAL of one device, as every caller should use it (offline: NOT_CONNECTED at once). The
+   * device keeps one HAL, and so one controlling session. Unknown id: INVALID_PARAMETER.
+   */
+  createDeviceHAL(id: string): HardwareAbstractionLayer {
+    return this.#get(id).guarded;
+  }
+
+  /** Whether a device answered within `offlineAfterMs`. */
+  isOnline(id: string): boolean {
+    return this.#get(id).online;
+  }
+
+  /** Every device's health, in registration order. */
+  health(): DeviceHealth[] {
+    return [...this.#devices.values()].map((m) => {
+      const h: DeviceHealth = {
+        device: m.config.id,
+        type: m.config.type,
+        online: m.online,
+        ready: m.guarded.isReady(),
+        emergencyStopped: m.raw.safety.isEmergencyStopped(),
+      };
+      if (m.lastSeen !== undefined) h.lastSeen = m.lastSeen;
+      if (m.telemetry !== undefined) h.telemetry = m.telemetry;
+      if (m.lastError !== undefined) h.lastError = m.lastError;
+      return h;
+    });
+  }
+
+  /** Calls `listener` on every `event`; returns the function that unsubscribes it. */
+  on<E extends keyof DeviceManagerEvents>(event: E, listener: Listener<E>): () => void {
+    let set = this.#listeners.get(event);
+    if (set === undefined) {
+      set = new Set();
+      this.#listeners.set(event, set);
+    }
+    set.add(listener as (e: never) => void);
+    return () => set.delete(listener as (e: never) => void);
+  }
+
+  /**
+   * Connects every device (in parallel, each bounded) and starts the telemetry loop. Resolves
+   * once every device has answered or failed its first attempt: devices not there stay offline
+   * and are retried every round.
+   */
+  async start(): Promise<DeviceHealth[]> {
+    if (this.#started) return this.health();
+    this.#started = true;
+    if (this.#nats === undefined && this.config.nats !== undefined) {
+      const connection = await openConnection({
+        ...definedFields(this.config.nats),
+        servers: this.config.nats.servers,
+        name: 'hal-fleet',
+      });
+      this.#nats = { source: { connection }, close: () => connection.close() };
+      for (const m of this.#devices.values()) {
+        if (m.config.type === 'nats') this.#rebuild(m); // now that NATS is open
+      }
+    }
+    await Promise.all([...this.#devices.values()].map((m) => this.#poll(m)));
+    const periodMs = 1000 / this.config.telemetryRateHz;
+    this.#timer = setInterval(() => {
+      for (const m of this.#devices.values()) void this.#poll(m);
+    }, periodMs);
+    return this.health();
+  }
+
+  /** Stops telemetry, stops and releases every device's HAL, and closes NATS if it opened it. */
+  async stop(): Promise<void> {
+    clearInterval(this.#timer);
+    this.#timer = undefined;
+    this.#started = false;
+    await this.fleet.formation?.stop();
+    await Promise.all(
+      [...this.#devices.values()].map((m) =>
+        boundedWait(m.raw.cleanup(), 5000).catch((e: unknown) => {
+          this.#log.warn('cleanup failed', { device: m.config.id, error: toHalError(e).message });
+        }),
+      ),
+    );
+    for (const world of this.#worlds.values()) world.stopRealtime();
+    await this.#nats?.close?.();
+    if (this.#nats?.close !== undefined) this.#nats = undefined;
+  }
+
+  /** The fleet-wide e-stop: every device latched at once (see {@link Fleet.emergencyStop}). */
+  emergencyStop(reason?: string): ReturnType<Fleet['emergencyStop']> {
+    return this.fleet.emergencyStop(reason);
+  }
+
+  #get(id: string): Managed {
+    const managed = this.#devices.get(id);
+    if (managed === undefined) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `no device "${id}" (devices: ${this.devices.join(', ') || 'none'})`,
+        { details: { device: id, devices: this.devices } },
+      );
+    }
+    return managed;
+  }
+
+  #add(config: DeviceConfig): void {
+    const managed = { config, online: false, initialized: false, busy: false } as Managed;
+    this.#build(managed);
+    this.#devices.set(config.id, managed);
+    this.fleet.add({ id: config.id, hal: managed.guarded });
+  }
+
+  #build(m: Managed): void {
+    const nats = this.#nats?.source;
+    m.raw =
+      m.config.type === 'nats' && nats === undefined
+        ? placeholderHAL()
+        : createDeviceHAL(m.config, {
+            world: (name) => this.world(name),
+            ...(nats === undefined ? {} : { nats }),
+            ...(this.#options.natsLogger === undefined
+              ? {}
+              : { natsLogger: this.#options.natsLogger }),
+          });
+    m.guarded = new OfflineGuardHAL(m.raw, m.config.id, () => !m.online);
+  }
+
+  #rebuild(m: Managed): void {
+    this.#build(m);
+    this.fleet.remove(m.config.id);
+    this.fleet.add({ id: m.config.id, hal: m.guarded });
+  }
+
+  #emit<E extends keyof DeviceManagerEvents>(event: E, payload: DeviceManagerEvents[E]): void {
+    for (const listener of this.#listeners.get(event) ?? []) (listener as Listener<E>)(payload);
+  }
+
+  /** One round for one device: connect if needed, read, and update online/offline. */
+  async #poll(m: Managed): Promise<void> {
+    if (m.busy) return;
+    m.busy = true;
+    const waitMs = Math.min(this.config.offlineAfterMs, 5000);
+    try {
+      if (!m.initialized) {
+        m.initializing ??= m.raw.initialize().finally(() => {
+          m.initializing = undefined;
+        });
+        await boundedWait(m.initializing, waitMs);
+        m.initialized = true;
+      }
+      const pose = await boundedWait(m.raw.locomotion.getPose(), waitMs);
+      if (!m.raw.isReady()) throw new HalError('NOT_CONNECTED', 'the HAL is not ready');
+      const safety = m.raw.safety.getSafetyStatus();
+      const telemetry: DeviceTelemetry = {
+        device: m.config.id,
+        at: Date.now(),
+        pose: { x: pose.position.x, y: pose.position.y, yaw: pose.rotation.yaw },
+        velocity: { linear: pose.velocity.linear, angular: pose.velocity.angular },
+        emergencyStopped: safety.emergencyStopped,
+        errors: [...safety.errors],
+      };
+      if (safety.batteryLevel !== undefined) telemetry.batteryLevel = safety.batteryLevel;
+      m.telemetry = telemetry;
+      m.lastSeen = telemetry.at;
+      delete m.lastError;
+      if (!m.online && this.#devices.get(m.config.id) === m) {
+        m.online = true;
+        this.#log.info('device online', { device: m.config.id });
+        this.#emit('online', { device: m.config.id });
+      }
+      this.#emit('telemetry', telemetry);
+    } catch (thrown) {
+      const error = toHalError(thrown);
+      m.lastError = `${error.code}: ${error.message}`;
+      const silentMs = Date.now() - (m.lastSeen ?? 0);
+      if (m.online && silentMs >= this.config.offlineAfterMs) {
+        m.online = false;
+        this.#log.warn('device offline', { device: m.config.id, reason: m.lastError });
+        this.#emit('offline', { device: m.config.id, reason: m.lastError });
+      }
+    } finally {
+      m.busy = false;
+    }
+  }
+}
+
+/** Stands in for a NATS device until the connection is open (never called: guarded offline). */
+function placeholderHAL(): HardwareAbstractionLayer {
+  const refuse = (): Promise<never> =>
+    Promise.reject(new HalError('NOT_CONNECTED', 'NATS is not connected yet'));
+  return {
+    mode: 'simulation',
+    locomotion: {
+      drive: refuse,
+      moveTo: refuse,
+      rotate: refuse,
+      moveForward: refuse,
+      moveBackward: refuse,
+      stop: refuse,
+      getPose: refuse,
+    },
+    vision: {
+      captureFrame: refuse,
+      scan: refuse,
+      getDistanceSensors: refuse,
+      getLineSensors: refuse,
+      getIMU: refuse,
+    },
+    communication: { speak: refuse, setLED: refuse, playSound: refuse, log: () => undefined },
+    safety: {
+      emergencyStop: refuse,
+      resetEmergencyStop: refuse,
+      isEmergencyStopped: () => false,
+      getSafetyStatus: () => ({ emergencyStopped: false, batteryLevel: 0, errors: [] }),
+    },
+    initialize: refuse,
+    cleanup: () => Promise.resolve(),
+    isReady: () => false,
+    getDeviceInfo: () => ({ id: 'pending', type: 'nats', mode: 'simulation', capabilities: [] }),
+  };
+}

@@ -1,0 +1,29 @@
+// Node only: the device manager routes devices to SimulationHAL, PhysicalHAL and NatsHAL.
+export { DeviceManager } from './device-manager.js';
+export type { DeviceManagerOptions } from './device-manager.js';
+export { createDeviceHAL } from './create-device-hal.js';
+export type { DeviceHALContext } from './create-device-hal.js';
+export {
+  DeviceConfigSchema,
+  FleetConfigSchema,
+  FleetNatsSchema,
+  NatsDeviceSchema,
+  PhysicalDeviceSchema,
+  SimulatedDeviceSchema,
+  parseDeviceConfig,
+  parseFleetConfig,
+} from './device-config.js';
+export type {
+  DeviceConfig,
+  DeviceConfigInput,
+  FleetConfig,
+  FleetConfigInput,
+  NatsDeviceConfig,
+  PhysicalDeviceConfig,
+  SimulatedDeviceConfig,
+} from './device-config.js';
+export type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
+export { OfflineGuardHAL, offlineError } from './offline-guard.js';
+export { discoverNatsDevices } from './discover.js';
+export type { DiscoveredDevice } from './discover.js';
+export { boundedWait } from './bounded-wait.js';
