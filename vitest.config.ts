@@ -17,6 +17,10 @@ export default defineConfig({
       })),
       {
         extends: true as const,
+        test: { name: 'apps', include: ['apps/*/src/**/*.test.ts'] },
+      },
+      {
+        extends: true as const,
         test: { name: 'bench', include: ['bench/**/*.test.ts'] },
       },
       {

@@ -67,6 +67,23 @@ describe('the browser entries import nothing Node-only statically', () => {
     expect(bare).toEqual(['@hal/types', 'zod']);
   });
 
+  it('the browser demo reaches only the browser entries (@hal/fleet, not @hal/fleet/node)', () => {
+    const { files, bare } = reachable('../apps/sim-demo/src/main.ts');
+    expect(files.some((f) => f.includes('/fleet/demo-fleet.ts'))).toBe(true);
+    expect(bare).toEqual([
+      '@hal/agent',
+      '@hal/fleet',
+      '@hal/hybrid',
+      '@hal/navigation',
+      '@hal/remote',
+      '@hal/simulation',
+      '@hal/simulation/three',
+      '@hal/types',
+      'three',
+      'three/addons/controls/OrbitControls.js',
+    ]);
+  });
+
   it('@hal/remote/server keeps ws and the Node built-ins (so the check above can fail)', () => {
     const { bare } = reachable('remote/src/server/index.ts');
     expect(bare).toEqual(expect.arrayContaining(['node:crypto', 'node:http', 'ws']));

@@ -17,6 +17,8 @@ export interface DemoControlsOptions {
   plot: TrajectoryPlot;
   log: ResultsLog;
   status: StatusLine;
+  /** Loads a map, putting every robot at a start again. */
+  setMap: (name: BuiltinMapName) => void;
   /** The map shown first. */
   mapName: BuiltinMapName;
   /** The simulation speed the ticker runs at first. */
@@ -122,14 +124,14 @@ export class DemoControls {
     teleop.forgetLastDrive();
   }
 
-  /** Loads map `name` and puts the robot back at its start (Reset: the same map again). */
+  /** Loads map `name` and puts the robots back at their starts (Reset: the same map again). */
   async resetWorld(name: BuiltinMapName): Promise<void> {
-    const { hal, goals, teleop, viewport, plot, status } = this.#options;
+    const { hal, goals, teleop, viewport, plot, status, setMap } = this.#options;
     await goals.cancel();
     teleop.releaseKeys();
     teleop.forgetLastDrive();
     this.#mapName = name;
-    hal.world.setMap(name);
+    setMap(name);
     hal.simulateHostSilence(this.#silentToggle.checked);
     goals.startOver();
     plot.clear();

@@ -4,3 +4,14 @@ export function element<T extends HTMLElement>(id: string): T {
   if (found === null) throw new Error(`#${id} is missing from the page`);
   return found as T;
 }
+
+/** A new element with these properties and children. */
+export function make<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  props: Partial<HTMLElementTagNameMap[K]> = {},
+  ...children: Array<Node | string>
+): HTMLElementTagNameMap[K] {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+}

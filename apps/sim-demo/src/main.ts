@@ -1,13 +1,20 @@
 import './style.css';
-import { BUILTIN_MAPS, SimulationHAL, World } from '@hal/simulation';
+import { BUILTIN_MAPS, World } from '@hal/simulation';
 import { createThreeFrameSource, WorldScene } from '@hal/simulation/three';
 import { DemoControls } from './demo-controls.js';
+import { DemoFleet } from './fleet/demo-fleet.js';
+import { FleetPanel } from './fleet/fleet-panel.js';
+import { fleetLogger } from './fleet/fleet-logger.js';
 import { element } from './dom.js';
 import { GoalDriver } from './goal-driver.js';
 import { KeyboardTeleop } from './keyboard-teleop.js';
 import { TrajectoryPlot } from './plot.js';
 import { AgentPanel } from './panels/agent-panel.js';
 import { noteHalEvents, ResultsLog } from './results-log.js';
+import { RobotLabels } from './robots/robot-labels.js';
+import { RobotsCard } from './robots/robots-card.js';
+import { RobotRoster } from './robots/roster.js';
+import { selectedHal } from './robots/selected-hal.js';
 import { StatusLine } from './status-line.js';
 import { TelemetryPanel } from './telemetry-panel.js';
 import { RemotePanel } from './remote-panel.js';
@@ -15,27 +22,27 @@ import { readUrlSettings } from './url-settings.js';
 import { Viewport } from './viewport.js';
 
 /*
- * The browser demo: builds the world, its 3D scene and the robot's HAL, puts the page's panels
+ * The browser demo: builds the world, its 3D scene and the robots' HALs, puts the page's panels
  * together, and runs the frame loop. Each panel lives in its own module.
  */
 
-// ---- the world, its view and the robot's HAL ---------------------------------------------------
+// ---- the world, its view and the robots' HALs ------------------------------------------------
 
-const { mapName, speed } = readUrlSettings(location.search);
+const { mapName, speed, robots: robotCount } = readUrlSettings(location.search);
 const world = new World({ map: mapName, seed: 1 });
 world.startRealtime({ speed });
-const scene = new WorldScene(world, { showRangeRays: true });
+const colors = new Map<string, string>();
+const scene = new WorldScene(world, { showRangeRays: true, robotColor: (id) => colors.get(id) });
 const robotCamera = createThreeFrameSource(scene, { canvas: element('camera-view') });
-const hal = new SimulationHAL({ world, clock: 'realtime', frameSource: robotCamera.frameSource });
-await hal.initialize();
-const robotId = hal.robot.id;
+const roster = await RobotRoster.create({ world, frameSource: robotCamera.frameSource });
+// Every robot has its own HAL; the panels hold this one, which is always the selected robot's.
+const hal = selectedHal(() => roster.selected.hal);
 
 // ---- the panels ----------------------------------------------------------------------------------
 
 const viewport = new Viewport(element('viewport'), world, () => hal.robot);
 const status = new StatusLine(element('status'));
 const log = new ResultsLog(element('log'));
-noteHalEvents(hal, log);
 
 const planToggle = element<HTMLInputElement>('plan-toggle');
 const gridToggle = element<HTMLInputElement>('grid-toggle');
@@ -69,6 +76,7 @@ plotCanvas.addEventListener('click', (e) =>
 
 new DemoControls({
   hal,
+  setMap: (name) => roster.resetWorld(name),
   goals,
   teleop,
   viewport,
@@ -91,20 +99,62 @@ const telemetry = new TelemetryPanel({
 
 const remote = new RemotePanel(element('remote-card'), hal, log);
 
+// ---- several robots: colours, labels, events, and the robot the panels drive --------------------
+
+const robotsCard = new RobotsCard(element('robots-card'), roster, status);
+const fleet = new FleetPanel(
+  element('fleet-card'),
+  new DemoFleet(roster, fleetLogger(log)),
+  roster,
+  log,
+  status,
+);
+const labels = new RobotLabels(roster, viewport);
+const noted = new Map<string, () => void>();
+let driven = roster.selected;
+function robotsChanged(): void {
+  fleet.robotsChanged();
+  for (const robot of roster.robots) {
+    colors.set(robot.id, robot.color);
+    if (!noted.has(robot.id)) noted.set(robot.id, noteHalEvents(robot.hal, log, robot.label));
+  }
+  for (const [id, off] of noted) {
+    if (!roster.robots.some((r) => r.id === id)) {
+      off();
+      noted.delete(id);
+    }
+  }
+  if (roster.selected !== driven) {
+    // The goal and the keys belonged to the robot driven until now.
+    driven = roster.selected;
+    // A fresh occupancy grid too: the old one was mapped by the other robot's sensors.
+    void goals.cancel().then(() => goals.startOver());
+    teleop.releaseKeys();
+    teleop.forgetLastDrive();
+    plot.clear();
+    status.set(`Driving ${driven.label}`);
+  }
+}
+roster.onChange(robotsChanged);
+robotsChanged();
+for (let i = 1; i < robotCount; i += 1) await roster.add();
+
 // ---- the frame loop ------------------------------------------------------------------------------
 
 let lastTelemetry = 0;
 function frame(now: number): void {
   scene.update();
   viewport.render(scene.scene);
-  robotCamera.render(robotId);
+  labels.update();
   const robot = hal.robot;
+  robotCamera.render(robot.id);
   plot.record(robot.x, robot.y);
-  plot.draw(world, robotId, goals.goal, goals.plannedPath);
+  plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
   goals.refreshGrid();
   if (now - lastTelemetry > 100) {
     lastTelemetry = now;
     telemetry.show(world, hal.robot);
+    robotsCard.refresh();
   }
   requestAnimationFrame(frame);
 }
@@ -115,11 +165,30 @@ status.set(`Map "${mapName}": ${BUILTIN_MAPS[mapName].description}`);
 const hooks = {
   hal,
   world,
-  robotId,
+  roster,
+  /** The id of the robot the panels drive. */
+  get robotId() {
+    return roster.selected.id;
+  },
   goalState: () => goals.state,
   remote: () => remote.state,
   agentRunning: () => agent.running,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
+  /** Every robot's id, label, pose and e-stop state, by number. */
+  robots: () =>
+    roster.robots.map(({ id, label, hal: { robot } }) => ({
+      id,
+      label,
+      x: robot.x,
+      y: robot.y,
+      yaw: robot.yaw,
+      running: robot.running,
+      emergencyStopped: robot.emergencyStopped,
+    })),
+  /** The Fleet card's mode, last per-robot results, formation and fleet e-stop. */
+  fleet: () => fleet.state,
+  /** While a formation runs: each follower's distance to its slot, metres. */
+  slotErrors: () => fleet.slotErrors(),
   /** Where a world point (metres) is on the screen, in client pixels. */
   worldToClient: (x: number, y: number) => viewport.worldToClient(x, y),
 };

@@ -47,6 +47,7 @@ export class TrajectoryPlot {
     robotId: string,
     goal: { x: number; y: number } | undefined,
     path?: ReadonlyArray<{ x: number; y: number }>,
+    colorOf?: (robotId: string) => string | undefined,
   ): void {
     const ctx = this.#ctx;
     const { width: w, height: h } = this.#canvas;
@@ -124,9 +125,11 @@ export class TrajectoryPlot {
       ctx.save();
       ctx.translate(x, y);
       ctx.rotate(-robot.yaw);
-      ctx.fillStyle = robot.id === robotId ? '#f4b400' : '#4285f4';
+      const selected = robot.id === robotId;
+      ctx.fillStyle = colorOf?.(robot.id) ?? (selected ? '#f4b400' : '#4285f4');
       ctx.strokeStyle = '#263238';
-      ctx.lineWidth = 1 * k;
+      // The robot the page drives has the heavier outline.
+      ctx.lineWidth = (selected ? 2 : 1) * k;
       ctx.beginPath();
       ctx.moveTo(r * 1.3, 0);
       ctx.lineTo(-r, r * 0.9);

@@ -2,6 +2,7 @@ import { HybridHAL } from '@hal/hybrid';
 import type { DivergenceEvent } from '@hal/hybrid';
 import { RemoteHAL } from '@hal/remote';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
+import { make } from './dom.js';
 import type { ResultsLog } from './results-log.js';
 
 /*
@@ -29,16 +30,6 @@ const ACTIONS: Array<[string, string, (hal: HardwareAbstractionLayer) => Promise
     ['estop', 'E-stop', (hal) => hal.safety.emergencyStop('remote panel')],
     ['reset', 'Reset e-stop', (hal) => hal.safety.resetEmergencyStop()],
   ];
-
-function make<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  props: Partial<HTMLElementTagNameMap[K]> = {},
-  ...children: Array<Node | string>
-): HTMLElementTagNameMap[K] {
-  const node = Object.assign(document.createElement(tag), props);
-  node.append(...children);
-  return node;
-}
 
 export class RemotePanel {
   readonly state: RemoteState = {

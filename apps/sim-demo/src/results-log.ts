@@ -37,20 +37,31 @@ export class ResultsLog {
   }
 }
 
-/** Notes the HAL's communication events, collisions and host timeouts in `log`. */
-export function noteHalEvents(hal: SimulationHAL, log: ResultsLog): void {
-  hal.events.on('communication', (e) => {
-    if (e.type === 'led') log.note(`LED ${e.pattern} rgb(${e.r}, ${e.g}, ${e.b})`);
-    else if (e.type === 'log') log.note(`log [${e.level}] ${e.message}`);
-    else if (e.type === 'speak') log.note(`says "${e.text}"`);
-    else log.note(`plays ${e.soundId}`);
+/**
+ * Notes the HAL's communication events, collisions and host timeouts in `log`, each after
+ * `label` (the robot's, when there are several). Returns the function that stops it.
+ */
+export function noteHalEvents(hal: SimulationHAL, log: ResultsLog, label = ''): () => void {
+  const note = (text: string) => log.note(label === '' ? text : `${label}: ${text}`);
+  const offCommunication = hal.events.on('communication', (e) => {
+    if (e.type === 'led') note(`LED ${e.pattern} rgb(${e.r}, ${e.g}, ${e.b})`);
+    else if (e.type === 'log') note(`log [${e.level}] ${e.message}`);
+    else if (e.type === 'speak') note(`says "${e.text}"`);
+    else note(`plays ${e.soundId}`);
   });
-  hal.events.on('motionFinished', (m) => {
+  const offMotion = hal.events.on('motionFinished', (m) => {
     if (m.outcome === 'collision' && m.contact !== undefined) {
       const p = m.contact.point;
-      log.note(`bumped into a ${m.contact.role} at (${p.x.toFixed(2)}, ${p.y.toFixed(2)}) m`);
+      const what = m.contact.robotId === undefined ? m.contact.role : m.contact.robotId;
+      note(
+        `bumped into ${m.contact.role === 'robot' ? '' : 'a '}${what} at (${p.x.toFixed(2)}, ${p.y.toFixed(2)}) m`,
+      );
     } else if (m.outcome === 'host_timeout') {
-      log.note('host timeout: the robot stopped by itself');
+      note('host timeout: the robot stopped by itself');
     }
   });
+  return () => {
+    offCommunication();
+    offMotion();
+  };
 }

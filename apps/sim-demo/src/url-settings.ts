@@ -1,5 +1,6 @@
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
+import { MAX_ROBOTS } from './robots/palette.js';
 
 /** The built-in maps, in the order the map menu lists them. */
 export const MAP_NAMES = Object.keys(BUILTIN_MAPS) as BuiltinMapName[];
@@ -7,8 +8,14 @@ export const MAP_NAMES = Object.keys(BUILTIN_MAPS) as BuiltinMapName[];
 /** The simulation speeds the speed menu offers. */
 const SPEEDS = [1, 2, 5, 10, 20];
 
-/** What the page's URL asks for (`?map=maze&speed=10`), with defaults for anything else. */
-export function readUrlSettings(search: string): { mapName: BuiltinMapName; speed: number } {
+/**
+ * What the page's URL asks for (`?map=maze&speed=10&robots=3`), with defaults for anything else.
+ */
+export function readUrlSettings(search: string): {
+  mapName: BuiltinMapName;
+  speed: number;
+  robots: number;
+} {
   const params = new URLSearchParams(search);
   const requestedMap = params.get('map');
   const mapName: BuiltinMapName = MAP_NAMES.includes(requestedMap as BuiltinMapName)
@@ -16,5 +23,10 @@ export function readUrlSettings(search: string): { mapName: BuiltinMapName; spee
     : 'obstacles';
   const requestedSpeed = Number(params.get('speed') ?? '5');
   const speed = SPEEDS.includes(requestedSpeed) ? requestedSpeed : 5;
-  return { mapName, speed };
+  const requestedRobots = Number(params.get('robots') ?? '1');
+  const robots =
+    Number.isInteger(requestedRobots) && requestedRobots >= 1 && requestedRobots <= MAX_ROBOTS
+      ? requestedRobots
+      : 1;
+  return { mapName, speed, robots };
 }

@@ -100,9 +100,9 @@ export class Viewport {
     });
   }
 
-  /** Where a world point (metres) is on the screen, in client pixels. */
-  worldToClient(x: number, y: number): { x: number; y: number } {
-    const p = toThree(x, y).project(this.camera);
+  /** Where a world point (metres; z above the floor) is on the screen, in client pixels. */
+  worldToClient(x: number, y: number, z = 0): { x: number; y: number } {
+    const p = toThree(x, y, z).project(this.camera);
     const rect = this.renderer.domElement.getBoundingClientRect();
     return {
       x: rect.left + ((p.x + 1) / 2) * rect.width,

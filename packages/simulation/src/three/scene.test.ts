@@ -49,6 +49,33 @@ describe('WorldScene', () => {
     expect(trail.geometry.drawRange.count).toBeGreaterThan(10);
   });
 
+  it('keeps a colour with its robot by id when another robot is removed', () => {
+    const world = new World();
+    world.addRobot({ id: 'a', start: { x: 0, y: 0, yaw: 0 } });
+    world.addRobot({ id: 'b', start: { x: 0.5, y: 0, yaw: 0 } });
+    world.addRobot({ id: 'c', start: { x: 1, y: 0, yaw: 0 } });
+    const colors: Record<string, string> = { a: '#ff0000', b: '#00ff00' };
+    const view = new WorldScene(world, { shadows: false, robotColor: (id) => colors[id] });
+    /** The colours of the robots' bodies (boxes 8.5 cm tall), by x. */
+    const bodies = () =>
+      meshes(view.scene)
+        .filter(
+          (m) => m.geometry instanceof THREE.BoxGeometry && m.geometry.parameters.height === 0.085,
+        )
+        .map((m) => ({
+          x: fromThree(m.getWorldPosition(new THREE.Vector3())).x,
+          color: `#${(m.material as THREE.MeshStandardMaterial).color.getHexString()}`,
+        }))
+        .sort((p, q) => p.x - q.x)
+        .map((p) => p.color);
+    // 'c' has no colour of its own: the default palette's third.
+    expect(bodies()).toEqual(['#ff0000', '#00ff00', '#db4437']);
+    world.removeRobot('a');
+    // 'b' keeps its colour; 'c', now second, takes the palette's second.
+    expect(bodies()).toEqual(['#00ff00', '#4285f4']);
+    view.dispose();
+  });
+
   it('overlays an occupancy grid, a planned path and a goal, and removes them', () => {
     const world = new World();
     const view = new WorldScene(world, { shadows: false });

@@ -25,6 +25,11 @@ export interface WorldSceneOptions {
   trailLength?: number;
   /** Colours of robots by index (cycled). */
   robotColors?: readonly string[];
+  /**
+   * A robot's colour by its id, for colours that stay with a robot when others are added or
+   * removed; `undefined` falls back to `robotColors` by index.
+   */
+  robotColor?: (robotId: string) => string | undefined;
   /** Cast shadows. Default true. */
   shadows?: boolean;
   /** Draw each robot's range-sensor rays (front, diagonals, sides) up to what they hit. Default false. */
@@ -44,7 +49,8 @@ interface RobotView {
 export class WorldScene {
   readonly scene = new THREE.Scene();
   readonly world: World;
-  readonly #options: Required<WorldSceneOptions>;
+  readonly #options: Required<Omit<WorldSceneOptions, 'robotColor'>>;
+  readonly #robotColor: ((robotId: string) => string | undefined) | undefined;
   readonly #static = new THREE.Group();
   readonly #robots = new Map<string, RobotView>();
   readonly #overlays = new THREE.Group();
@@ -62,6 +68,7 @@ export class WorldScene {
       showRangeRays: options.showRangeRays ?? false,
       rangeRayLength: options.rangeRayLength ?? 2,
     };
+    this.#robotColor = options.robotColor;
     this.scene.background = new THREE.Color('#dfe7f1');
     this.scene.fog = new THREE.Fog('#dfe7f1', 12, 30);
     addLights(this.scene, this.#options.shadows);
@@ -190,7 +197,7 @@ export class WorldScene {
   /** Adds robot number `index`'s model to the scene, its trail and rays to the overlays. */
   #addRobot(robot: SimRobot, index: number): RobotView {
     const colors = this.#options.robotColors;
-    const color = colors[index % colors.length] ?? '#f4b400';
+    const color = this.#robotColor?.(robot.id) ?? colors[index % colors.length] ?? '#f4b400';
     const model = new RobotModel(robot, color, this.#options.shadows);
     this.scene.add(model.group);
     const trail = new Trail(this.#options.trailLength, color, robot.x, robot.y);
