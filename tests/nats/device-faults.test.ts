@@ -43,9 +43,15 @@ describe('a device that disappears', () => {
       const inFlight = await moving;
       expect(inFlight.success).toBe(false);
       expect(inFlight.code).toBe('NOT_CONNECTED');
+      // The same code and details the device manager's offline guard gives.
+      expect(inFlight.details).toMatchObject({ device: 'sim-gone', offline: true });
       const next = await hal.locomotion.moveForward(1);
       expect(next.code).toBe('NOT_CONNECTED');
-      await expect(hal.locomotion.getPose()).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
+      expect(next.details).toMatchObject({ device: 'sim-gone', offline: true });
+      await expect(hal.locomotion.getPose()).rejects.toMatchObject({
+        code: 'NOT_CONNECTED',
+        details: { device: 'sim-gone', offline: true },
+      });
       expect(hal.isReady()).toBe(false);
       // Bounded by the offline window plus slack, far below the 120 s call timeout.
       expect(Date.now() - started).toBeLessThan(10_000);

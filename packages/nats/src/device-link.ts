@@ -1,4 +1,4 @@
-import { HAL_ERROR_CODES, HalError } from '@hal/types';
+import { HAL_ERROR_CODES, HalError, deviceOfflineError } from '@hal/types';
 import type { HalErrorCode, HalErrorPayload } from '@hal/types';
 import { errors, headers as natsHeaders } from '@nats-io/transport-node';
 import type { NatsConnection, Status, Subscription } from '@nats-io/transport-node';
@@ -20,6 +20,9 @@ export interface DeviceLinkOptions {
   /** The device counts as gone after this long without a word from it, ms (NOT_CONNECTED). */
   offlineAfterMs: number;
 }
+
+/** How an offline error names the default device (the spec's bare subjects carry no id). */
+export const DEFAULT_DEVICE_LABEL = '(default)';
 
 const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 
@@ -137,10 +140,11 @@ export class DeviceLink {
           throw new HalError('NOT_CONNECTED', 'the NATS connection is closed', { cause: error });
         }
         if (this.offline()) {
-          throw new HalError(
-            'NOT_CONNECTED',
-            `device ${this.options.deviceId ?? '(default)'} is offline: nothing from it for ${this.options.offlineAfterMs} ms`,
-            { cause: error, details: { subject } },
+          throw deviceOfflineError(
+            this.options.deviceId ?? DEFAULT_DEVICE_LABEL,
+            `nothing from it for ${this.options.offlineAfterMs} ms`,
+            { subject },
+            error,
           );
         }
         // No responders (a gateway restarting) or a lost reply: repeat after a short pause.

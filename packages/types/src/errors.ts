@@ -87,3 +87,22 @@ export function toHalError(value: unknown): HalError {
   const message = value instanceof Error ? value.message : String(value);
   return new HalError('HARDWARE_ERROR', message, { cause: value });
 }
+
+/**
+ * The error of a call to a fleet device that is offline: NOT_CONNECTED with details
+ * `{ device, offline: true }` (plus anything in `extra`), the same whether the call went through
+ * the device manager or straight through NATS, so a program tells "offline" apart from other
+ * link failures by the details, not the message.
+ */
+export function deviceOfflineError(
+  device: string,
+  reason?: string,
+  extra: HalErrorDetails = {},
+  cause?: unknown,
+): HalError {
+  const message = `device "${device}" is offline${reason === undefined ? '' : `: ${reason}`}`;
+  return new HalError('NOT_CONNECTED', message, {
+    details: { ...extra, device, offline: true },
+    ...(cause === undefined ? {} : { cause }),
+  });
+}

@@ -1,4 +1,11 @@
-export { HAL_ERROR_CODES, HalError, HalErrorCodeSchema, isHalError, toHalError } from './errors.js';
+export {
+  HAL_ERROR_CODES,
+  HalError,
+  HalErrorCodeSchema,
+  deviceOfflineError,
+  isHalError,
+  toHalError,
+} from './errors.js';
 export type { HalErrorCode, HalErrorDetails, HalErrorOptions } from './errors.js';
 
 export { HALModeSchema } from './mode.js';

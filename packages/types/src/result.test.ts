@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { HalError, isHalError, toHalError } from './errors.js';
+import { deviceOfflineError, HalError, isHalError, toHalError } from './errors.js';
 import { failureResult, HALToolResultSchema, successResult } from './result.js';
 import { HALConfigSchema, robotConfig, V1_ROBOT } from './robot-config.js';
 import { V1_CALL_SCHEMAS } from './schemas/calls.js';
@@ -51,6 +51,26 @@ describe('HalError', () => {
     expect(isHalError(new Error('x'))).toBe(false);
     expect(toHalError(error)).toBe(error);
     expect(toHalError('text')).toMatchObject({ code: 'HARDWARE_ERROR', message: 'text' });
+  });
+
+  it('says a device is offline with NOT_CONNECTED and details that name it, whatever else it adds', () => {
+    const cause = new Error('no responders');
+    const error = deviceOfflineError(
+      'cube-01',
+      'silent for 3000 ms',
+      { subject: 'x', offline: 0 },
+      cause,
+    );
+    expect(error).toMatchObject({
+      code: 'NOT_CONNECTED',
+      message: 'device "cube-01" is offline: silent for 3000 ms',
+      details: { subject: 'x', device: 'cube-01', offline: true },
+    });
+    expect(error.cause).toBe(cause);
+    expect(failureResult('physical', 1, deviceOfflineError('cube-02'))).toMatchObject({
+      code: 'NOT_CONNECTED',
+      details: { device: 'cube-02', offline: true },
+    });
   });
 });
 

@@ -1,5 +1,5 @@
-// `hal fleet`: the devices on NATS as one fleet: list them, read their health, e-stop them all,
-// and run the fleet modes (synchronized, leader-follower).
+// `hal fleet`: the devices on NATS, or those of a config file, as one fleet: list them, read
+// their health, e-stop them all, and run the fleet modes (synchronized, leader-follower).
 import { FORMATION_SHAPES } from '@hal/fleet';
 import type { FormationShape } from '@hal/fleet';
 import { Command, InvalidArgumentError, Option } from 'commander';
@@ -30,8 +30,12 @@ function fleetSubcommand(name: string, description: string): Command {
   const command = new Command(name)
     .description(description)
     .option(
+      '--config <file>',
+      'a fleet config file (JSON: simulated, physical and NATS devices); no discovery',
+    )
+    .option(
       '--device <id>',
-      'a device on NATS (repeat for more; default: every device that announces itself)',
+      'a device on NATS, or one of the config file (repeat for more; default: every device that announces itself, or all in the file)',
       collectDevice,
     )
     .addOption(
@@ -40,9 +44,10 @@ function fleetSubcommand(name: string, description: string): Command {
         .argParser(positiveNumber),
     )
     .addOption(
-      new Option('--offline-after-ms <ms>', 'a device is offline after this long without an answer')
-        .default(3000)
-        .argParser(positiveNumber),
+      new Option(
+        '--offline-after-ms <ms>',
+        "a device is offline after this long without an answer (default 3000, or the config file's)",
+      ).argParser(positiveNumber),
     );
   return addNatsOptions(command);
 }
@@ -69,7 +74,7 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
   const fleet = program
     .command('fleet')
     .description(
-      'Several robots on NATS as one fleet: devices, health, e-stop and the fleet modes',
+      'Several robots (on NATS, or from --config) as one fleet: devices, health, e-stop and the fleet modes',
     );
 
   fleet.addCommand(

@@ -1,9 +1,11 @@
-// Opens what every `hal fleet` subcommand needs: a NATS connection, the device list (given with
-// --device, or heard in the devices' capability announcements) and a started DeviceManager.
+// Opens what every `hal fleet` subcommand needs: the device list (from --config, given with
+// --device, or heard in the devices' capability announcements on NATS) and a started
+// DeviceManager over it. NATS is opened only when a device is on NATS.
 import { DeviceManager, discoverNatsDevices } from '@hal/fleet/node';
-import type { DiscoveredDevice } from '@hal/fleet/node';
+import type { DiscoveredDevice, FleetConfig } from '@hal/fleet/node';
 import { openConnection } from '@hal/nats';
 import { CliError } from '../cli-error.js';
+import { readFleetConfigFile, selectDevices } from './fleet-config-file.js';
 import { progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { natsConnectOptions } from '../nats-options.js';
@@ -12,9 +14,14 @@ import type { NatsCliOptions } from '../nats-options.js';
 /** Options every `hal fleet` subcommand takes. */
 export interface FleetCliOptions extends NatsCliOptions {
   device?: string[];
+  /** A fleet config file (JSON): its devices instead of NATS discovery. */
+  config?: string;
   discoverMs: number;
-  offlineAfterMs: number;
+  /** Overrides the config file's; default 3000. */
+  offlineAfterMs?: number;
 }
+
+const DEFAULT_OFFLINE_AFTER_MS = 3000;
 
 export interface FleetSession {
   manager: DeviceManager;
@@ -29,6 +36,8 @@ export async function openFleetSession(
   io: CliIO,
   global: GlobalOptions,
 ): Promise<FleetSession> {
+  if (options.config !== undefined)
+    return openConfiguredSession(options.config, options, io, global);
   const connection = await openConnection(natsConnectOptions(options, io.env, 'hal-fleet'));
   try {
     let ids = options.device ?? [];
@@ -48,7 +57,7 @@ export async function openFleetSession(
       {
         devices: ids.map((id) => ({ type: 'nats', id })),
         telemetryRateHz: 1,
-        offlineAfterMs: options.offlineAfterMs,
+        offlineAfterMs: options.offlineAfterMs ?? DEFAULT_OFFLINE_AFTER_MS,
       },
       { natsConnection: { connection } },
     );
@@ -64,6 +73,50 @@ export async function openFleetSession(
     };
   } catch (error) {
     await connection.close();
+    throw error;
+  }
+}
+
+/**
+ * The session of `--config <file>`: the file's devices (narrowed by --device). NATS is reached
+ * through the file's `nats` section, else through the --nats options, and only when a device is
+ * of type "nats"; simulated and physical devices need no NATS at all.
+ */
+async function openConfiguredSession(
+  path: string,
+  options: FleetCliOptions,
+  io: CliIO,
+  global: GlobalOptions,
+): Promise<FleetSession> {
+  const file = await readFleetConfigFile(path);
+  const config: FleetConfig = {
+    ...selectDevices(file, options.device ?? []),
+    ...(options.offlineAfterMs === undefined ? {} : { offlineAfterMs: options.offlineAfterMs }),
+  };
+  if (config.devices.length === 0) {
+    throw new CliError('NOT_FOUND', `--config ${path}: the file lists no devices`);
+  }
+  const needsCliNats = config.nats === undefined && config.devices.some((d) => d.type === 'nats');
+  const connection = needsCliNats
+    ? await openConnection(natsConnectOptions(options, io.env, 'hal-fleet'))
+    : undefined;
+  try {
+    const manager = new DeviceManager(
+      config,
+      connection === undefined ? {} : { natsConnection: { connection } },
+    );
+    progress(io, global, `connecting to ${config.devices.length} device(s)...`);
+    await manager.start();
+    return {
+      manager,
+      discovered: [],
+      close: async () => {
+        await manager.stop();
+        await connection?.close();
+      },
+    };
+  } catch (error) {
+    await connection?.close();
     throw error;
   }
 }

@@ -1,4 +1,5 @@
-import { HalError, V1_ROBOT, failureResult } from '@hal/types';
+import { V1_ROBOT, deviceOfflineError, failureResult } from '@hal/types';
+import type { HalError } from '@hal/types';
 import type {
   CommunicationInterface,
   HALToolResult,
@@ -11,9 +12,7 @@ import type {
 
 /** The error of a call to a device the manager sees offline. */
 export function offlineError(device: string): HalError {
-  return new HalError('NOT_CONNECTED', `device "${device}" is offline`, {
-    details: { device, offline: true },
-  });
+  return deviceOfflineError(device);
 }
 
 /**
