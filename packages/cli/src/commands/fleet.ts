@@ -74,7 +74,7 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
   const fleet = program
     .command('fleet')
     .description(
-      'Several robots (on NATS, or from --config) as one fleet: devices, health, e-stop and the fleet modes',
+      'several robots (on NATS, or from --config) as one fleet: devices, health, e-stop and the fleet modes',
     );
 
   fleet.addCommand(
