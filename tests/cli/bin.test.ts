@@ -1,7 +1,7 @@
 // The `hal` program as a child process: its help, a refusal without a terminal, and a robot that
 // is not there, each with the exit code a script sees.
 import { describe, expect, it } from 'vitest';
-import { runHalProcess } from './hal-process.js';
+import { runHalProcess } from '../helpers/hal-process.js';
 
 describe('the hal program', () => {
   it('lists status, drive, teleop and serve in its help', async () => {

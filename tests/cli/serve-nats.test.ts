@@ -5,8 +5,8 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import type { NatsServer } from '../nats/nats-server.js';
 import { captureIO } from './capture-io.js';
-import { runHalProcess, startHalProcess } from './hal-process.js';
-import type { HalProcess } from './hal-process.js';
+import { runHalProcess, startHalProcess } from '../helpers/hal-process.js';
+import type { HalProcess } from '../helpers/hal-process.js';
 
 interface ServeEvent {
   event: string;

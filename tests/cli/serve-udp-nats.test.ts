@@ -8,8 +8,8 @@ import type { NatsServer } from '../nats/nats-server.js';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
-import { runHalProcess, startHalProcess } from './hal-process.js';
-import type { HalProcess } from './hal-process.js';
+import { runHalProcess, startHalProcess } from '../helpers/hal-process.js';
+import type { HalProcess } from '../helpers/hal-process.js';
 
 interface ServeEvent {
   event: string;

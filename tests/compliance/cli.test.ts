@@ -1,9 +1,6 @@
 // `hal test hal ...` as a user runs it: the real bin as a child process against a gateway serving
 // SimulationHAL on a real nats-server, and in-process (runHal) against a broken device.
-import { spawn } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
 import { runHal } from '@hal/cli';
-import type { CliIO } from '@hal/cli';
 import type { ComplianceReport } from '@hal/compliance';
 import { serveHalOnNats } from '@hal/nats';
 import type { HalGateway } from '@hal/nats';
@@ -11,12 +8,12 @@ import { SimulationHAL } from '@hal/simulation';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { captureIO } from '../cli/capture-io.js';
+import { runHalProcess } from '../helpers/hal-process.js';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import type { NatsServer } from '../nats/nats-server.js';
 import { startFakeSpecDevice } from './fake-spec-device.js';
 import type { FakeSpecDevice } from './fake-spec-device.js';
-
-const MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
 
 let server: NatsServer;
 let nc: NatsConnection;
@@ -42,57 +39,24 @@ afterAll(async () => {
   await stopAllNatsServers();
 });
 
-/** Records what an in-process `hal` run writes. */
-function captureIO(): CliIO & { stdout(): string; stderr(): string } {
-  let out = '';
-  let err = '';
-  return {
-    out: (text) => void (out += text),
-    err: (text) => void (err += text),
-    signal: new AbortController().signal,
-    env: {},
-    stdout: () => out,
-    stderr: () => err,
-  };
-}
-
-/** Runs `hal ...args` as a process; every run is bounded. */
-function hal_(args: string[]): Promise<{ code: number | null; stdout: string; stderr: string }> {
-  const child = spawn(
-    process.execPath,
-    ['--conditions=@hal/source', '--import', 'tsx', MAIN, ...args],
-    {
-      stdio: ['ignore', 'pipe', 'pipe'],
-    },
-  );
-  let stdout = '';
-  let stderr = '';
-  child.stdout.on('data', (chunk: Buffer) => (stdout += chunk.toString()));
-  child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
-  const timer = setTimeout(() => child.kill('SIGKILL'), 90_000);
-  return new Promise((resolve) =>
-    child.once('exit', (code) => {
-      clearTimeout(timer);
-      resolve({ code, stdout, stderr });
-    }),
-  );
-}
-
 describe('hal test hal', () => {
   it(
     'checks motor.differential of a device as a process: progress on stderr, the table on stdout, exit 0',
     { timeout: 120_000 },
     async () => {
-      const run = await hal_([
-        'test',
-        'hal',
-        '--device',
-        'sim-cli',
-        '--capability',
-        'motor.differential',
-        '--nats',
-        server.url,
-      ]);
+      const run = await runHalProcess(
+        [
+          'test',
+          'hal',
+          '--device',
+          'sim-cli',
+          '--capability',
+          'motor.differential',
+          '--nats',
+          server.url,
+        ],
+        90_000,
+      );
       expect(run.code, run.stderr).toBe(0);
       expect(run.stderr).toContain('checking sim-cli');
       expect(run.stderr).toContain('PASS  motor.differential/state/drive-forward');
@@ -109,17 +73,10 @@ describe('hal test hal', () => {
     'writes the report as JSON with --json, for the default device when --device is left out',
     { timeout: 120_000 },
     async () => {
-      const run = await hal_([
-        '--json',
-        'test',
-        'hal',
-        '--capability',
-        'system',
-        '--samples',
-        '5',
-        '--nats',
-        server.url,
-      ]);
+      const run = await runHalProcess(
+        ['--json', 'test', 'hal', '--capability', 'system', '--samples', '5', '--nats', server.url],
+        90_000,
+      );
       expect(run.code, run.stderr).toBe(0);
       expect(run.stderr).toBe('');
       const report = JSON.parse(run.stdout) as ComplianceReport;

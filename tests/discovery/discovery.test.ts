@@ -10,8 +10,12 @@ import {
   physicalHalConfigFor,
 } from '@hal/discovery';
 import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
-import { startHal, stopAllHal } from './hal-process.js';
-import type { HalProcess } from './hal-process.js';
+import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
+import type { HalProcess } from '../helpers/hal-process.js';
+
+/** A `hal --json` line: an event, or one of discover's robots (which have no `event`). */
+type HalLine = Record<string, unknown> & { event: string };
+const startHal = (args: readonly string[]) => startHalProcess<HalLine>(['--json', ...args]);
 
 const KEY = '00112233445566778899aabbccddeeff';
 const TIME_SCALE = 5;
@@ -20,7 +24,7 @@ afterAll(stopAllHal);
 
 const uniqueId = (prefix: string) => `${prefix}-${randomBytes(4).toString('hex')}`;
 
-async function emulate(deviceId: string, extra: string[] = []): Promise<HalProcess> {
+async function emulate(deviceId: string, extra: string[] = []): Promise<HalProcess<HalLine>> {
   requireEmulator();
   const hal = startHal([
     'emulate',
@@ -72,7 +76,7 @@ describe('discovery between processes', () => {
       await hal.cleanup();
     }
 
-    expect(await emulator.interrupt()).toBe(0);
+    expect(await emulator.stop()).toBe(0);
     expect(emulator.events).toContainEqual({ event: 'stopped', deviceId: id });
   });
 
@@ -95,7 +99,7 @@ describe('discovery between processes', () => {
     } finally {
       await hal.cleanup();
     }
-    await emulator.interrupt();
+    await emulator.stop();
   });
 
   it('`hal discover` in a third process lists the robot until `hal emulate` is stopped', async () => {
@@ -107,7 +111,7 @@ describe('discovery between processes', () => {
     const listed = discover.events.find((l) => l['deviceId'] === id);
     expect(listed).toMatchObject({ deviceId: id, onThisMachine: true, auth: 'none' });
 
-    expect(await emulator.interrupt()).toBe(0);
+    expect(await emulator.stop()).toBe(0);
     const after = await discoverRobots({ timeoutMs: 1500 });
     expect(after.map((r) => r.deviceId)).not.toContain(id);
   });

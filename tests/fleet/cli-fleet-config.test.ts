@@ -7,7 +7,7 @@ import { join } from 'node:path';
 import { runHal } from '@hal/cli';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { captureIO } from '../cli/capture-io.js';
-import { runHalProcess } from '../cli/hal-process.js';
+import { runHalProcess } from '../helpers/hal-process.js';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
 

@@ -1,38 +1,18 @@
 // `hal fleet` against a real nats-server and a robot host serving three simulated robots: run
 // in-process (as `hal` parses its argv) and once as the real program in its own process.
-import { spawn } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
 import { runHal } from '@hal/cli';
-import type { CliIO } from '@hal/cli';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { captureIO } from '../cli/capture-io.js';
+import { runHalProcess } from '../helpers/hal-process.js';
 import { startHostProcess, stopAllHostProcesses } from '../physical/host-process.js';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import type { NatsServer } from '../nats/nats-server.js';
 
-const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const DEVICES = ['--device', 'c00', '--device', 'c01', '--device', 'c02'];
 let server: NatsServer;
 
-function capture(): CliIO & { stdout(): string; stderr(): string; json(): unknown[] } {
-  let out = '';
-  let err = '';
-  return {
-    out: (t) => void (out += t),
-    err: (t) => void (err += t),
-    signal: new AbortController().signal,
-    env: {},
-    stdout: () => out,
-    stderr: () => err,
-    json: () =>
-      out
-        .split('\n')
-        .filter((l) => l.trim() !== '')
-        .map((l) => JSON.parse(l) as unknown),
-  };
-}
-
 async function hal(...argv: string[]) {
-  const io = capture();
+  const io = captureIO();
   const code = await runHal([...argv, '--nats', server.url], io);
   return { code, io };
 }
@@ -59,7 +39,7 @@ describe('hal fleet', () => {
   it('finds the devices from their announcements and lists them', async () => {
     const { code, io } = await hal('--json', 'fleet', 'devices', '--discover-ms', '5500');
     expect(code).toBe(0);
-    const [doc] = io.json() as Array<{ devices: Array<Record<string, unknown>> }>;
+    const [doc] = io.jsonLines() as Array<{ devices: Array<Record<string, unknown>> }>;
     expect(doc?.devices.map((d) => d['device'])).toEqual(['c00', 'c01', 'c02']);
     expect(doc?.devices[0]).toMatchObject({ online: true, mode: 'simulation' });
     expect(doc?.devices[0]).toMatchObject({ type: 'v1-stepper-cube' });
@@ -104,7 +84,7 @@ describe('hal fleet', () => {
     );
     expect(io.stderr()).toBe('');
     expect(code).toBe(0);
-    const [doc] = io.json() as Array<{
+    const [doc] = io.jsonLines() as Array<{
       leader: { result: { success: boolean } };
       formation: { reason: string; followers: Array<{ device: string; errorM: number }> };
     }>;
@@ -129,7 +109,9 @@ describe('hal fleet', () => {
       ...DEVICES,
     );
     expect(refused.code).toBe(1);
-    const [report] = refused.io.json() as Array<{ results: Array<{ result: { code?: string } }> }>;
+    const [report] = refused.io.jsonLines() as Array<{
+      results: Array<{ result: { code?: string } }>;
+    }>;
     expect(report?.results.map((r) => r.result.code)).toEqual([
       'EMERGENCY_STOPPED',
       'EMERGENCY_STOPPED',
@@ -178,13 +160,8 @@ describe('hal fleet', () => {
   });
 
   it('reports a device that does not answer as offline, and exits through the real program', async () => {
-    const child = spawn(
-      process.execPath,
+    const run = await runHalProcess(
       [
-        '--conditions=@hal/source',
-        '--import',
-        'tsx',
-        'packages/cli/src/main.ts',
         '--json',
         'fleet',
         'health',
@@ -197,13 +174,12 @@ describe('hal fleet', () => {
         '--nats',
         server.url,
       ],
-      { cwd: ROOT, stdio: ['ignore', 'pipe', 'pipe'] },
+      50_000,
     );
-    let out = '';
-    child.stdout.on('data', (chunk: Buffer) => (out += chunk.toString()));
-    const code = await new Promise<number | null>((resolve) => child.once('exit', resolve));
-    expect(code).toBe(0);
-    const doc = JSON.parse(out.trim()) as { health: Array<{ device: string; online: boolean }> };
+    expect(run.code, run.stderr).toBe(0);
+    const doc = JSON.parse(run.stdout.trim()) as {
+      health: Array<{ device: string; online: boolean }>;
+    };
     expect(doc.health.map((h) => [h.device, h.online])).toEqual([
       ['c01', true],
       ['nobody', false],

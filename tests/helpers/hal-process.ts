@@ -1,5 +1,6 @@
-// Runs the `hal` command as a user runs it: a child process from source (the package's `hal`
-// script), with every wait bounded and every child killed when the test process exits.
+// Runs the `hal` command as a user runs it: a child process from source (the CLI's main.ts), with
+// every wait bounded and every child killed when the test process exits. One helper for every
+// test folder that runs `hal` as a process.
 import { spawn } from 'node:child_process';
 import type { ChildProcessByStdio } from 'node:child_process';
 import type { Readable, Writable } from 'node:stream';
@@ -51,21 +52,25 @@ export function runHalProcess(args: readonly string[], timeoutMs = 30_000): Prom
 }
 
 export interface HalProcess<E> extends EventLines<E> {
-  /** Sends `signal` and resolves the exit code (SIGKILL after `timeoutMs`). */
+  /** Resolves with the exit code once it has exited by itself or been stopped. */
+  exited: Promise<number | null>;
+  /** Sends `signal` (Ctrl-C by default) and resolves the exit code (SIGKILL after `timeoutMs`). */
   stop(signal?: NodeJS.Signals, timeoutMs?: number): Promise<number | null>;
 }
 
-/** Starts a long-running `hal --json ...` (e.g. `serve`) whose stdout is JSON lines. */
+/** Starts a long-running `hal --json ...` (serve, emulate, discover) whose stdout is JSON lines. */
 export function startHalProcess<E extends { event: string }>(
   args: readonly string[],
 ): HalProcess<E> {
   const child = spawnHal(args);
+  child.stdin.end();
   const lines = readEventLines<E>(child, `hal ${args.join(' ')}`, 30_000);
   const exited = new Promise<number | null>((resolve) =>
     child.once('exit', (code) => resolve(code)),
   );
   return {
     ...lines,
+    exited,
     stop: async (signal = 'SIGINT', timeoutMs = 10_000) => {
       if (child.exitCode !== null || child.signalCode !== null) return child.exitCode;
       child.kill(signal);
@@ -75,4 +80,17 @@ export function startHalProcess<E extends { event: string }>(
       return code;
     },
   };
+}
+
+/** Kills every `hal` child still running (for afterAll). */
+export async function stopAllHal(): Promise<void> {
+  await Promise.all(
+    [...running].map(
+      (child) =>
+        new Promise<void>((resolve) => {
+          child.once('exit', () => resolve());
+          child.kill('SIGKILL');
+        }),
+    ),
+  );
 }
