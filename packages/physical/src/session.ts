@@ -4,6 +4,7 @@ import type { ScopedLogger } from './logger.js';
 import type { WireReply } from './protocol/codec.js';
 import { randomNonce, robotError } from './session-errors.js';
 import type { SessionOptions, SessionState } from './session-options.js';
+import { fastReply } from './protocol/reply-fast.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
 import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
 import { DEFAULT_SAFETY_LANE, isMotionCommand, laneAttempts, StopSignal } from './safety-lane.js';
@@ -157,6 +158,11 @@ export class Session {
       }
       throw robotError(cmd, reply);
     }
+    const fast = fastReply(cmd, reply);
+    if (fast !== undefined) {
+      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
+      return fast;
+    }
     const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
     if (!parsed.success) {
       this.malformedReplies += 1;
@@ -213,6 +219,11 @@ export class Session {
       });
     }
     if (!reply.ok) throw robotError(cmd, reply);
+    const fast = fastReply(cmd, reply);
+    if (fast !== undefined) {
+      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
+      return fast;
+    }
     const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
     if (!parsed.success) {
       this.malformedReplies += 1;
