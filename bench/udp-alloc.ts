@@ -11,8 +11,9 @@ import { startEmulator } from '../tests/physical/emulator.js';
 const WARMUP = 20_000;
 const CALLS = 5_000;
 const KEY = createHash('sha256').update('bench key').digest('hex');
-const gc = (globalThis as { gc?: () => void }).gc;
-if (gc === undefined) throw new Error('run with --expose-gc');
+const exposedGc = (globalThis as { gc?: () => void }).gc;
+if (exposedGc === undefined) throw new Error('run with --expose-gc');
+const gc: () => void = exposedGc;
 
 async function bytesPerCall(key?: string): Promise<{ bytes: number; gcs: number }> {
   const emulator = await startEmulator(key === undefined ? {} : { key });
