@@ -1,5 +1,6 @@
 import { HalError } from '@hal/types';
 import type { Command, ReplyOf } from './protocol/schemas.js';
+import type { RequestOptions } from './transport/transport.js';
 
 /*
  * The safety lane of protocol 1.1, section 4.1: `stop` and `estop` are sent at once, beside any
@@ -39,6 +40,18 @@ const MOTION_COMMANDS: ReadonlySet<Command> = new Set([
 /** Whether a command moves the wheels. */
 export function isMotionCommand(cmd: Command): boolean {
   return MOTION_COMMANDS.has(cmd);
+}
+
+/**
+ * The lane timing a command's request options ask for: their attempts x timeout as its total
+ * wait, at the lane's usual resend period; undefined (the session's own) when they set neither.
+ */
+export function laneBound(options: RequestOptions): SafetyLaneTiming | undefined {
+  if (options.attempts === undefined && options.timeoutMs === undefined) return undefined;
+  return {
+    resendMs: DEFAULT_SAFETY_LANE.resendMs,
+    totalMs: (options.attempts ?? 1) * (options.timeoutMs ?? DEFAULT_SAFETY_LANE.totalMs),
+  };
 }
 
 /** The resend period and the number of sends for a lane timing. */

@@ -24,6 +24,8 @@ export interface SessionOptions {
   onConnected?: (hello: HelloReply, reconnect: boolean) => void | Promise<void>;
   /** Called with every successful reply's data. */
   onReply?: (cmd: Command, data: Record<string, unknown>) => void;
+  /** Called with whatever a {@link Session.command} rejects with, before it rejects. */
+  onCommandFailed?: (error: unknown) => void;
   /** Called when the state changes. */
   onStateChange?: (state: SessionState, reason: string) => void;
   /** Timing of the safety lane (asked before every stop); default {@link DEFAULT_SAFETY_LANE}. */

@@ -4,9 +4,16 @@ import type { ScopedLogger } from './logger.js';
 import type { WireReply } from './protocol/codec.js';
 import { randomNonce, robotError } from './session-errors.js';
 import type { SessionOptions, SessionState } from './session-options.js';
+import { fastReply } from './protocol/reply-fast.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
 import type { Command, HelloReply, ReplyOf, RequestParams } from './protocol/schemas.js';
-import { DEFAULT_SAFETY_LANE, isMotionCommand, laneAttempts, StopSignal } from './safety-lane.js';
+import {
+  DEFAULT_SAFETY_LANE,
+  isMotionCommand,
+  laneAttempts,
+  laneBound,
+  StopSignal,
+} from './safety-lane.js';
 import type { SafetyCommand, SafetyInterrupt, SafetyLaneTiming } from './safety-lane.js';
 import type { RequestOptions } from './transport/transport.js';
 
@@ -15,6 +22,11 @@ export { robotError } from './session-errors.js';
 
 /** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
 const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
+/** A command's options when none are given (one object, not one per call). */
+const NO_OPTIONS: RequestOptions = Object.freeze({});
+/** A request's options over the link's timing: a new object only when both set some. */
+const withTiming = (timing: RequestOptions | undefined, options: RequestOptions) =>
+  timing === undefined ? options : options === NO_OPTIONS ? timing : { ...timing, ...options };
 
 /**
  * One host session with the robot over a transport: `hello`, then requests numbered by a
@@ -93,51 +105,45 @@ export class Session {
   async command<C extends Command>(
     cmd: C,
     params: RequestParams[C],
-    options: RequestOptions = {},
+    options: RequestOptions = NO_OPTIONS,
   ): Promise<ReplyOf<C>> {
-    if (cmd === 'stop' || cmd === 'estop') {
-      // the safety lane; `options` bound its total wait (attempts x timeout)
-      const bound =
-        options.attempts !== undefined || options.timeoutMs !== undefined
-          ? {
-              resendMs: DEFAULT_SAFETY_LANE.resendMs,
-              totalMs: (options.attempts ?? 1) * (options.timeoutMs ?? DEFAULT_SAFETY_LANE.totalMs),
-            }
-          : undefined;
-      return this.safetyCommand(cmd, params as RequestParams[SafetyCommand], bound) as Promise<
-        ReplyOf<C>
-      >;
-    }
-    const safety = SAFETY_COMMANDS.has(cmd);
-    this.#checkUsable(cmd, safety);
-    const epoch = this.#stops.epoch;
-    // the queue, the send and the reply's checks in this one async function: each further layer
-    // was a promise and a suspended frame more per request
-    this.#busy += 1;
+    // the queue, the send, the reply's checks and the failure hook in this one async function:
+    // each further layer was a promise and a suspended frame more per request
     try {
-      if (this.#running) await new Promise<void>((start) => this.#waiting.push(start));
-      this.#running = true;
-      this.#checkUsable(cmd, safety);
-      if (isMotionCommand(cmd) && epoch !== this.#stops.epoch) throw this.#stops.overtaken(cmd);
-      const seq = this.#nextSeq();
-      const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
-      const timing = this.#options.request?.();
-      let reply: WireReply;
-      this.#lastRequestAt = performance.now();
-      try {
-        reply = await this.#options.transport.request(
-          seq,
-          bytes,
-          timing === undefined ? options : { ...timing, ...options },
-        );
-      } catch (thrown) {
-        throw this.#sendFailed(cmd, thrown);
-      } finally {
-        this.#lastRequestAt = performance.now();
+      if (cmd === 'stop' || cmd === 'estop') {
+        // the safety lane; `options` bound its total wait (attempts x timeout)
+        const lane = laneBound(options);
+        const safety = params as RequestParams[SafetyCommand];
+        return (await this.safetyCommand(cmd, safety, lane)) as ReplyOf<C>;
       }
-      return this.#accept(cmd, reply);
-    } finally {
-      this.#release();
+      const safety = SAFETY_COMMANDS.has(cmd);
+      this.#checkUsable(cmd, safety);
+      const epoch = this.#stops.epoch;
+      this.#busy += 1;
+      try {
+        if (this.#running) await new Promise<void>((start) => this.#waiting.push(start));
+        this.#running = true;
+        this.#checkUsable(cmd, safety);
+        if (isMotionCommand(cmd) && epoch !== this.#stops.epoch) throw this.#stops.overtaken(cmd);
+        const seq = this.#nextSeq();
+        const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
+        const timing = this.#options.request?.();
+        let reply: WireReply;
+        this.#lastRequestAt = performance.now();
+        try {
+          reply = await this.#options.transport.request(seq, bytes, withTiming(timing, options));
+        } catch (thrown) {
+          throw this.#sendFailed(cmd, thrown);
+        } finally {
+          this.#lastRequestAt = performance.now();
+        }
+        return this.#accept(cmd, reply);
+      } finally {
+        this.#release();
+      }
+    } catch (thrown) {
+      this.#options.onCommandFailed?.(thrown);
+      throw thrown;
     }
   }
 
@@ -156,6 +162,11 @@ export class Session {
         );
       }
       throw robotError(cmd, reply);
+    }
+    const fast = fastReply(cmd, reply);
+    if (fast !== undefined) {
+      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
+      return fast;
     }
     const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
     if (!parsed.success) {
@@ -213,6 +224,11 @@ export class Session {
       });
     }
     if (!reply.ok) throw robotError(cmd, reply);
+    const fast = fastReply(cmd, reply);
+    if (fast !== undefined) {
+      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
+      return fast;
+    }
     const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
     if (!parsed.success) {
       this.malformedReplies += 1;

@@ -151,6 +151,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
         this.#tracker.observe(cmd, data);
         this.#safety.observe(cmd, data);
       },
+      onCommandFailed: (error) => this.#safety.refused(error),
       onStateChange: (state, reason) => this.#linkChanged(state, reason),
       onConnected: (hello, reconnect) => (reconnect ? this.#resync(hello) : undefined),
     });
@@ -263,10 +264,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     if (session === undefined) {
       return Promise.reject(new HalError('NOT_READY', 'the HAL is not initialised'));
     }
-    return session.command(cmd, params).catch((error: unknown) => {
-      this.#safety.refused(error);
-      throw error;
-    });
+    // a refusal reaches the safety cache through the session's onCommandFailed
+    return session.command(cmd, params);
   }
 
   /** Resend every 20 ms, within the same total budget as any other request. */

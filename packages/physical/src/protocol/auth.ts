@@ -18,7 +18,6 @@ export interface MessageAuthenticator {
 export const MAC_SUFFIX_LENGTH = 33;
 
 const HASH = 0x23;
-const encoder = new TextEncoder();
 const ascii = new TextDecoder();
 
 function isLowerHex(bytes: Uint8Array): boolean {
@@ -42,13 +41,25 @@ export function splitMac(bytes: Uint8Array): { json: Uint8Array; mac: string } |
   return { json: bytes.subarray(0, at), mac: ascii.decode(mac) };
 }
 
-/** The JSON bytes followed by `#` and their MAC. */
+/** The JSON bytes followed by `#` and their MAC (written in place: one array per message). */
 export function appendMac(json: Uint8Array, auth: MessageAuthenticator): Uint8Array {
-  const suffix = encoder.encode(`#${auth.mac(json)}`);
-  const bytes = new Uint8Array(json.length + suffix.length);
+  const mac = auth.mac(json);
+  const bytes = new Uint8Array(json.length + 1 + mac.length);
   bytes.set(json, 0);
-  bytes.set(suffix, json.length);
+  bytes[json.length] = HASH;
+  // the MAC is hex digits: one byte each
+  for (let i = 0; i < mac.length; i++) bytes[json.length + 1 + i] = mac.charCodeAt(i);
   return bytes;
+}
+
+/** Whether `text` is 32 lowercase hex digits, as a MAC is written. */
+function isMacText(text: string): boolean {
+  if (text.length !== MAC_HEX_DIGITS) return false;
+  for (let i = 0; i < text.length; i++) {
+    const c = text.charCodeAt(i);
+    if (!((c >= 0x30 && c <= 0x39) || (c >= 0x61 && c <= 0x66))) return false;
+  }
+  return true;
 }
 
 /** The MAC's length in hex digits. */
@@ -71,15 +82,18 @@ export async function createAuthenticator(keyHex: string): Promise<MessageAuthen
   }
   const { createHmac, timingSafeEqual } = await import('node:crypto');
   const key = Buffer.from(keyHex, 'hex');
-  const mac = (json: Uint8Array) =>
-    createHmac('sha256', key).update(json).digest('hex').slice(0, MAC_HEX_DIGITS);
+  const digest = (json: Uint8Array) => createHmac('sha256', key).update(json).digest();
+  // the MAC read from a message, as bytes; reused: verify is synchronous
+  const got = Buffer.alloc(MAC_HEX_DIGITS / 2);
+  const want = Buffer.alloc(MAC_HEX_DIGITS / 2);
   return {
-    mac,
+    mac: (json) => digest(json).toString('hex', 0, MAC_HEX_DIGITS / 2),
     verify: (json, received) => {
-      // timingSafeEqual needs equal lengths; the length of a MAC is public (always 32 digits)
-      const want = Buffer.from(mac(json), 'latin1');
-      const got = Buffer.from(received, 'latin1');
-      return got.length === want.length && timingSafeEqual(got, want);
+      // the length and the alphabet of a MAC are public; its digits are compared in constant time
+      if (!isMacText(received)) return false;
+      got.write(received, 'hex');
+      digest(json).copy(want, 0, 0, want.length);
+      return timingSafeEqual(got, want);
     },
   };
 }

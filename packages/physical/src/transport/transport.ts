@@ -146,7 +146,12 @@ interface Pending {
  * link the timer fires about once per timeout, not once per request.
  */
 export class ReplyMatcher {
-  readonly #pending = new Map<number, Pending>();
+  /**
+   * The requests in flight, in no order: one or two at a time (a command and a stop on the safety
+   * lane), so a scan is as fast as a lookup, and unlike a Map, whose deleted slots fill its table
+   * until it is rebuilt, adding and removing allocates nothing.
+   */
+  readonly #pending: Pending[] = [];
   readonly #rtt = new RttWindow();
   readonly #now: () => number;
   #closed = false;
@@ -166,8 +171,8 @@ export class ReplyMatcher {
       return false;
     }
     const seq = result.reply.seq;
-    const pending = seq === undefined ? undefined : this.#pending.get(seq);
-    if (seq === undefined || pending === undefined) {
+    const pending = seq === undefined ? undefined : this.#find(seq);
+    if (pending === undefined) {
       this.counts.dropped += 1;
       return false;
     }
@@ -212,7 +217,7 @@ export class ReplyMatcher {
     if (this.#closed) {
       return Promise.reject(new HalError('NOT_CONNECTED', 'the transport is closed'));
     }
-    if (this.#pending.has(seq)) {
+    if (this.#find(seq) !== undefined) {
       return Promise.reject(
         new HalError('INVALID_PARAMETER', `a request with seq ${seq} is already pending`),
       );
@@ -230,7 +235,7 @@ export class ReplyMatcher {
         deadline: Infinity,
         lastError: undefined,
       };
-      this.#pending.set(seq, entry);
+      this.#pending.push(entry);
       this.#attempt(entry);
     });
   }
@@ -269,7 +274,7 @@ export class ReplyMatcher {
   /** An attempt's send has ended: wait for its reply, or try again at once if it failed. */
   #sent(entry: Pending, attempt: number, error: unknown): void {
     // answered, closed or given up meanwhile, or a late report of an older attempt
-    if (this.#pending.get(entry.seq) !== entry || entry.attempt !== attempt) return;
+    if (this.#find(entry.seq) !== entry || entry.attempt !== attempt) return;
     if (error !== undefined) {
       entry.lastError = error;
       this.#attempt(entry);
@@ -279,11 +284,22 @@ export class ReplyMatcher {
     this.#arm(entry.deadline);
   }
 
+  /** The pending request numbered `seq`. */
+  #find(seq: number): Pending | undefined {
+    for (const entry of this.#pending) if (entry.seq === seq) return entry;
+    return undefined;
+  }
+
   /** Takes `entry` out of the pending requests. */
   #finish(entry: Pending): void {
-    if (this.#pending.get(entry.seq) === entry) this.#pending.delete(entry.seq);
+    const index = this.#pending.indexOf(entry);
+    if (index >= 0) {
+      // order does not matter: the last one takes its place
+      const last = this.#pending.pop()!;
+      if (index < this.#pending.length) this.#pending[index] = last;
+    }
     entry.deadline = Infinity;
-    if (this.#pending.size === 0) this.#timer?.unref();
+    if (this.#pending.length === 0) this.#timer?.unref();
   }
 
   /** Makes the shared timer fire by `deadline`. */
@@ -303,7 +319,7 @@ export class ReplyMatcher {
     this.#timerDue = Infinity;
     const now = this.#now();
     let next = Infinity;
-    for (const entry of [...this.#pending.values()]) {
+    for (const entry of [...this.#pending]) {
       if (entry.deadline <= now) this.#attempt(entry);
       else if (entry.deadline < next) next = entry.deadline;
     }
@@ -317,8 +333,7 @@ export class ReplyMatcher {
     clearTimeout(this.#timer);
     this.#timer = undefined;
     this.#timerDue = Infinity;
-    const pending = [...this.#pending.values()];
-    this.#pending.clear();
+    const pending = this.#pending.splice(0);
     for (const entry of pending) {
       entry.reject(new HalError('NOT_CONNECTED', 'the transport is closed'));
     }

@@ -1,6 +1,12 @@
 import { HalError } from '@hal/types';
 import { scoped } from '../logger.js';
-import type { Transport, TransportContext, TransportFactory, TransportStats } from './transport.js';
+import type {
+  RequestOptions,
+  Transport,
+  TransportContext,
+  TransportFactory,
+  TransportStats,
+} from './transport.js';
 import { ReplyMatcher, requestDefaults } from './transport.js';
 
 /** The robot's UDP port. */
@@ -25,6 +31,18 @@ export interface UdpTransportOptions {
  */
 function isUnreachable(error: Error): boolean {
   return (error as NodeJS.ErrnoException).code === 'ECONNREFUSED';
+}
+
+/** A request's options over the transport's own: a new object only when each side sets some. */
+function overDefaults(
+  options: RequestOptions | undefined,
+  defaults: RequestOptions,
+): RequestOptions {
+  if (options === undefined) return defaults;
+  const complete = options.attempts !== undefined && options.timeoutMs !== undefined;
+  return complete || (defaults.attempts === undefined && defaults.timeoutMs === undefined)
+    ? options
+    : { ...defaults, ...options };
 }
 
 /** A connected UDP transport. */
@@ -115,7 +133,7 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
                 error && !isUnreachable(error) ? done(error) : done(),
               );
             },
-            requestOptions === undefined ? defaults : { ...defaults, ...requestOptions },
+            overDefaults(requestOptions, defaults),
           ),
         stats: (): TransportStats => matcher.stats(),
         close: async () => {
