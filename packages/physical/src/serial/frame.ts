@@ -151,12 +151,7 @@ export class FrameDecoder {
     const events: FrameEvent[] = [];
     let from = 0;
     if (this.#start !== this.#end) {
-      if (chunk.length <= SHORT_CHUNK_BYTES) {
-        this.#append(chunk, 0, chunk.length);
-        this.#start = scan(this.#held, this.#start, this.#end, events);
-        if (this.#start === this.#end) this.#start = this.#end = 0;
-        return events;
-      }
+      if (chunk.length <= SHORT_CHUNK_BYTES) return this.#pushShort(chunk, events);
       from = this.#topUp(chunk, events);
     }
     if (this.#start === this.#end) {
@@ -164,6 +159,16 @@ export class FrameDecoder {
       this.#start = this.#end = 0;
       this.#append(chunk, used, chunk.length);
     }
+    return events;
+  }
+
+  /** Appends a short chunk whole to the held partial frame and parses them together. */
+  #pushShort(chunk: Uint8Array, events: FrameEvent[]): FrameEvent[] {
+    if (this.#held.length - this.#end < chunk.length) this.#make(chunk.length);
+    this.#held.set(chunk, this.#end);
+    this.#end += chunk.length;
+    this.#start = scan(this.#held, this.#start, this.#end, events);
+    if (this.#start === this.#end) this.#start = this.#end = 0;
     return events;
   }
 
@@ -211,23 +216,26 @@ export class FrameDecoder {
     return pending < total ? total : 0;
   }
 
-  /** Appends `bytes[from, to)` to the held bytes, growing or compacting the buffer as needed. */
+  /** Appends `bytes[from, to)` to the held bytes. */
   #append(bytes: Uint8Array, from: number, to: number): void {
     const count = to - from;
     if (count <= 0) return;
-    if (this.#held.length - this.#end < count) {
-      const pending = this.#end - this.#start;
-      const target =
-        pending + count <= this.#held.length
-          ? this.#held
-          : new Uint8Array(Math.max(this.#held.length * 2, pending + count));
-      target.set(this.#held.subarray(this.#start, this.#end), 0);
-      this.#held = target;
-      this.#start = 0;
-      this.#end = pending;
-    }
-    this.#held.set(from === 0 && to === bytes.length ? bytes : bytes.subarray(from, to), this.#end);
+    if (this.#held.length - this.#end < count) this.#make(count);
+    this.#held.set(bytes.subarray(from, to), this.#end);
     this.#end += count;
+  }
+
+  /** Makes room for `count` more held bytes: moves them to the front, or into a larger buffer. */
+  #make(count: number): void {
+    const pending = this.#end - this.#start;
+    const target =
+      pending + count <= this.#held.length
+        ? this.#held
+        : new Uint8Array(Math.max(this.#held.length * 2, pending + count));
+    target.set(this.#held.subarray(this.#start, this.#end), 0);
+    this.#held = target;
+    this.#start = 0;
+    this.#end = pending;
   }
 }
 
