@@ -114,4 +114,41 @@ describe('FrameDecoder', () => {
       expect(received.map(plain)).toEqual([plain(next)]);
     },
   );
+
+  it.prop(
+    [
+      fc.array(fc.oneof(frameArb.map(encodeFrame), fc.uint8Array({ maxLength: 90 })), {
+        maxLength: 6,
+      }),
+      cutPoints,
+    ],
+    { numRuns: 200 },
+  )(
+    'yields exactly what decodeFrame yields for each of the same pieces, under any chunking',
+    (pieces, points) => {
+      // each piece is a whole encoded frame or random bytes; one-shot decoding of the pieces one
+      // by one is the reference (random bytes pass its length check and CRC only by a 2^-32 chance)
+      const expected = pieces.flatMap((bytes) => {
+        const result = decodeFrame(bytes);
+        return result.ok ? [plain(result.frame)] : [];
+      });
+      expect(receive(cut(concat(pieces), points)).map(plain)).toEqual(expected);
+    },
+  );
+
+  it.prop([fc.array(frameArb, { maxLength: 8 }), fc.integer({ min: 1, max: 200 })], {
+    numRuns: 100,
+  })(
+    'decodes the same frames from reads of any fixed size, holding nothing back at the end',
+    (frames, size) => {
+      const stream = concat(frames.map(encodeFrame));
+      const decoder = new FrameDecoder();
+      const events: FrameEvent[] = [];
+      for (let at = 0; at < stream.length; at += size) {
+        events.push(...decoder.push(stream.subarray(at, at + size)));
+      }
+      expect(decoder.pending).toBe(0);
+      expect(framesOf(events).map(plain)).toEqual(frames.map(plain));
+    },
+  );
 });

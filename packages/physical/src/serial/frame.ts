@@ -120,13 +120,22 @@ export function decodeFrame(
 }
 
 /**
+ * A chunk this short that follows a partial frame is appended whole and parsed in the held buffer:
+ * copying 64 bytes costs less than parsing the chunk in two places.
+ */
+const SHORT_CHUNK_BYTES = 64;
+
+/**
  * The receiving half of the serial link: feed it bytes as they arrive and it returns the frames
  * and the errors it found. After garbage, a bad header or a bad CRC it drops one byte and hunts
  * for the next sync, so the link resynchronises by itself. `abandon()` drops a partial frame
  * (call it when no byte has arrived for 200 ms).
  *
- * It parses each chunk where it lies: only the unfinished tail of a chunk (at most one frame) is
- * copied into a reused buffer, so the cost per byte is that of the one-shot {@link decodeFrame}.
+ * It parses each chunk where it lies. Only a frame cut by the end of a chunk is copied, into a
+ * reused buffer: the next chunk tops it up with just the bytes that frame still lacks (first its
+ * header, then the length the header gives) and the rest of that chunk is again parsed in place.
+ * So each byte is copied at most once, and only if its frame straddles two reads (a chunk of at
+ * most {@link SHORT_CHUNK_BYTES} after a partial frame is appended whole: that is cheaper).
  */
 export class FrameDecoder {
   #held = new Uint8Array(256);
@@ -140,15 +149,25 @@ export class FrameDecoder {
 
   push(chunk: Uint8Array): FrameEvent[] {
     const events: FrameEvent[] = [];
-    if (this.#start === this.#end) {
-      const used = scan(chunk, 0, chunk.length, events);
-      this.#start = 0;
-      this.#end = 0;
-      this.#append(chunk.subarray(used));
-    } else {
-      this.#append(chunk);
-      this.#start = scan(this.#held, this.#start, this.#end, events);
+    let from = 0;
+    if (this.#start !== this.#end) {
+      if (chunk.length <= SHORT_CHUNK_BYTES) return this.#pushShort(chunk, events);
+      from = this.#topUp(chunk, events);
     }
+    if (this.#start === this.#end) {
+      const used = scan(chunk, from, chunk.length, events);
+      this.#start = this.#end = 0;
+      this.#append(chunk, used, chunk.length);
+    }
+    return events;
+  }
+
+  /** Appends a short chunk whole to the held partial frame and parses them together. */
+  #pushShort(chunk: Uint8Array, events: FrameEvent[]): FrameEvent[] {
+    if (this.#held.length - this.#end < chunk.length) this.#make(chunk.length);
+    this.#held.set(chunk, this.#end);
+    this.#end += chunk.length;
+    this.#start = scan(this.#held, this.#start, this.#end, events);
     if (this.#start === this.#end) this.#start = this.#end = 0;
     return events;
   }
@@ -161,21 +180,62 @@ export class FrameDecoder {
     return [{ kind: 'error', error: 'incomplete', dropped: 1 }, ...this.push(rest)];
   }
 
-  #append(bytes: Uint8Array): void {
-    if (bytes.length === 0) return;
-    if (this.#held.length - this.#end < bytes.length) {
-      const pending = this.#end - this.#start;
-      const target =
-        pending + bytes.length <= this.#held.length
-          ? this.#held
-          : new Uint8Array(Math.max(this.#held.length * 2, pending + bytes.length));
-      target.set(this.#held.subarray(this.#start, this.#end), 0);
-      this.#held = target;
-      this.#start = 0;
-      this.#end = pending;
+  /**
+   * Completes the held partial frame from the front of `chunk`, copying only the bytes it needs;
+   * returns how many bytes of `chunk` it used. The held bytes are empty afterwards unless the
+   * chunk ran out first.
+   */
+  #topUp(chunk: Uint8Array, events: FrameEvent[]): number {
+    let from = 0;
+    while (this.#start !== this.#end && from < chunk.length) {
+      const need = this.#needed();
+      if (need > 0) {
+        const take = Math.min(need - (this.#end - this.#start), chunk.length - from);
+        this.#append(chunk, from, from + take);
+        from += take;
+        if (this.#end - this.#start < need) break; // the chunk ran out
+        if (need === HEADER_BYTES) continue; // the header is complete: now its length decides
+      }
+      this.#start = scan(this.#held, this.#start, this.#end, events);
+      if (this.#start === this.#end) this.#start = this.#end = 0;
     }
-    this.#held.set(bytes, this.#end);
-    this.#end += bytes.length;
+    return from;
+  }
+
+  /**
+   * How many bytes the held partial frame must reach before it can be decoded, or 0 when the held
+   * bytes can already be decided (a broken sync or header: scan() drops a byte and hunts on).
+   */
+  #needed(): number {
+    const pending = this.#end - this.#start;
+    if (pending >= 2 && this.#held[this.#start + 1] !== SYNC_1) return 0;
+    if (pending < HEADER_BYTES) return HEADER_BYTES;
+    const len = checkHeader(this.#held, this.#start, this.#end);
+    if (typeof len !== 'number') return 0;
+    const total = HEADER_BYTES + len + CRC_BYTES;
+    return pending < total ? total : 0;
+  }
+
+  /** Appends `bytes[from, to)` to the held bytes. */
+  #append(bytes: Uint8Array, from: number, to: number): void {
+    const count = to - from;
+    if (count <= 0) return;
+    if (this.#held.length - this.#end < count) this.#make(count);
+    this.#held.set(bytes.subarray(from, to), this.#end);
+    this.#end += count;
+  }
+
+  /** Makes room for `count` more held bytes: moves them to the front, or into a larger buffer. */
+  #make(count: number): void {
+    const pending = this.#end - this.#start;
+    const target =
+      pending + count <= this.#held.length
+        ? this.#held
+        : new Uint8Array(Math.max(this.#held.length * 2, pending + count));
+    target.set(this.#held.subarray(this.#start, this.#end), 0);
+    this.#held = target;
+    this.#start = 0;
+    this.#end = pending;
   }
 }
 
