@@ -149,7 +149,7 @@ async function runLink(name: string, faults: Faults, seed: number, lossy: boolea
   const roundTrip =
     rtt === undefined
       ? 'the round trip was not measured'
-      : `round trip through the link measured in this run (the last session): p50 ${fmt(rtt.rttP50Ms)}, p99 ${fmt(rtt.rttP99Ms)}`;
+      : `round trip through the link measured in this run, on the last trial's session: p50 ${fmt(rtt.rttP50Ms)}, p99 ${fmt(rtt.rttP99Ms)}`;
   const trialsNote =
     `${results.lane.length} lane and ${results.queued.length} queued trials on the robot's clock, ` +
     `interleaved, ${LOST_REPLIES} get_status replies lost at the call; ${bad} did not stop and latch, ` +
