@@ -4,6 +4,8 @@ import { readFileSync } from 'node:fs';
 import * as compliance from '@hal/compliance';
 import * as nats from '@hal/nats';
 import * as simulation from '@hal/simulation';
+import { runDocExample } from '@hal/types/testing';
+import type { ExampleModules } from '@hal/types/testing';
 import * as transport from '@nats-io/transport-node';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
@@ -15,7 +17,7 @@ beforeAll(async () => {
 }, 20_000);
 afterAll(stopAllNatsServers);
 
-const MODULES: Record<string, Record<string, unknown>> = {
+const MODULES: ExampleModules = {
   '@hal/compliance': compliance,
   '@hal/nats': nats,
   '@hal/simulation': simulation,
@@ -30,28 +32,12 @@ describe('the @hal/compliance README', () => {
     );
     const block = /```ts\n([\s\S]*?)```/.exec(text)?.[1] ?? '';
     const printed = /prints\n\n```text\n([\s\S]*?)```/.exec(text)?.[1] ?? '';
-    const names: string[] = [];
-    const values: unknown[] = [];
-    const body = block
-      .replace(/^import \{([^}]*)\} from '([^']+)';$/gm, (_all, list: string, from: string) => {
-        for (const name of list
-          .split(',')
-          .map((n) => n.trim())
-          .filter((n) => n !== '')) {
-          names.push(name);
-          values.push(MODULES[from]?.[name]);
-        }
-        return '';
-      })
+    const code = block
       .replaceAll('nats://127.0.0.1:4222', server.url)
       .replaceAll('console.log(', 'log(');
-    expect(body).not.toMatch(/^import /m);
     const lines: string[] = [];
     const log = (...parts: unknown[]) => lines.push(parts.map(String).join(' '));
-    const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-      ...args: string[]
-    ) => (...args: unknown[]) => Promise<void>;
-    await new AsyncFunction(...names, 'log', body)(...values, log);
+    await runDocExample(code, MODULES, { log });
     expect(`${lines.join('\n')}\n`).toBe(printed);
   });
 });

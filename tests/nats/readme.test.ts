@@ -4,6 +4,8 @@ import { readFileSync } from 'node:fs';
 import * as nats from '@hal/nats';
 import * as simulation from '@hal/simulation';
 import * as types from '@hal/types';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
+import type { ExampleModules } from '@hal/types/testing';
 import * as transport from '@nats-io/transport-node';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from './nats-server.js';
@@ -18,44 +20,20 @@ beforeAll(async () => {
 afterAll(stopAllNatsServers);
 
 const blocks = (path: string) =>
-  [...readFileSync(new URL(path, import.meta.url), 'utf8').matchAll(/```ts\n([\s\S]*?)```/g)].map(
-    (m) => m[1] ?? '',
-  );
+  fencedBlocks(readFileSync(new URL(path, import.meta.url), 'utf8'), 'ts');
 
-const MODULES: Record<string, Record<string, unknown>> = {
+const MODULES: ExampleModules = {
   '@hal/nats': nats,
   '@hal/simulation': simulation,
   '@hal/types': types,
   '@nats-io/transport-node': transport,
 };
 
-/** Runs a block: its imports bound from the real modules, console.log routed to `log`. */
+/** Runs a block against this test's servers, console.log routed to `log`. */
 async function run(block: string, log: (...values: unknown[]) => void): Promise<void> {
-  const names: string[] = [];
-  const values: unknown[] = [];
-  let body = block.replace(
-    /^import \{([^}]*)\} from '([^']+)';$/gm,
-    (_all, list: string, from: string) => {
-      const module = MODULES[from];
-      if (module === undefined)
-        throw new Error(`the example imports ${from}, unknown to this test`);
-      for (const name of list
-        .split(',')
-        .map((n) => n.trim())
-        .filter((n) => n !== '')) {
-        names.push(name);
-        values.push(module[name]);
-      }
-      return '';
-    },
-  );
-  expect(body).not.toMatch(/^import /m);
-  const url = body.includes('user:') ? secured.url : server.url;
-  body = body.replaceAll('nats://127.0.0.1:4222', url).replaceAll('console.log(', 'log(');
-  const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-    ...args: string[]
-  ) => (...values: unknown[]) => Promise<void>;
-  await new AsyncFunction(...names, 'log', body)(...values, log);
+  const url = block.includes('user:') ? secured.url : server.url;
+  const code = block.replaceAll('nats://127.0.0.1:4222', url).replaceAll('console.log(', 'log(');
+  await runDocExample(code, MODULES, { log });
 }
 
 describe('the package README example', () => {
