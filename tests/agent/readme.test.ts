@@ -1,15 +1,14 @@
 // The @hal/agent README's example, run as written against the fake endpoint (only the address
 // and the model change, and console.log goes to a list).
 import { readFileSync } from 'node:fs';
-import { runAgent } from '@hal/agent';
-import { SimulationHAL, World } from '@hal/simulation';
+import * as agent from '@hal/agent';
+import * as simulation from '@hal/simulation';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
 import { describe, expect, it } from 'vitest';
 import { call, serve } from './fixtures.js';
 
 const readme = readFileSync(new URL('../../packages/agent/README.md', import.meta.url), 'utf8');
-const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!);
-
-type Example = (...args: unknown[]) => Promise<void>;
+const blocks = fencedBlocks(readme, 'ts');
 
 describe('the @hal/agent README', () => {
   it('runs its example: the model drives 30 cm and says where the robot is', async () => {
@@ -19,7 +18,7 @@ describe('the @hal/agent README', () => {
       { content: null, toolCalls: [call('get_pose')] },
       { content: 'I am at x -1.5 m, y 0 m.' },
     ]);
-    let body = blocks[0]!.replace(/^import .*$/gm, '').replaceAll('console.log(', 'log(');
+    let body = blocks[0]!.replaceAll('console.log(', 'log(');
     for (const [from, to] of [
       ["'http://127.0.0.1:11434/v1'", JSON.stringify(s.baseUrl)],
       ["'qwen2.5vl:7b'", "'fake-model'"],
@@ -27,12 +26,12 @@ describe('the @hal/agent README', () => {
       expect(body).toContain(from);
       body = body.replaceAll(from, to);
     }
-    const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-      ...args: string[]
-    ) => Example;
-    const example = new AsyncFunction('runAgent', 'SimulationHAL', 'World', 'log', body);
     const logged: unknown[][] = [];
-    await example(runAgent, SimulationHAL, World, (...values: unknown[]) => logged.push(values));
+    await runDocExample(
+      body,
+      { '@hal/agent': agent, '@hal/simulation': simulation },
+      { log: (...values: unknown[]) => logged.push(values) },
+    );
     expect(logged.at(-1)).toEqual(['completed', 'I am at x -1.5 m, y 0 m.']);
     expect(logged.slice(0, -1).flat()).toEqual(
       expect.arrayContaining(['step_started', 'tool_call', 'tool_result', 'done']),

@@ -3,15 +3,14 @@
 import { randomBytes } from 'node:crypto';
 import { readFileSync } from 'node:fs';
 import * as discovery from '@hal/discovery';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
 import { afterAll, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 afterAll(stopAllEmulators);
 
 const readme = readFileSync(new URL('../../packages/discovery/README.md', import.meta.url), 'utf8');
-const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!);
-
-type Example = (lib: typeof discovery, log: (...values: unknown[]) => void) => Promise<void>;
+const blocks = fencedBlocks(readme, 'ts');
 
 it('README: finds the robot, builds a PhysicalHAL from it and drives it 10 cm', async () => {
   expect(blocks).toHaveLength(1);
@@ -22,17 +21,14 @@ it('README: finds the robot, builds a PhysicalHAL from it and drives it 10 cm', 
   const announcer = await discovery.announceRobot({ port: mdns.port, txt: mdns.txt });
   try {
     const body = blocks[0]!
-      .replace(
-        /^import .*$/m,
-        'const { createPhysicalHALFromDiscovery, discoverRobots, findRobot } = lib;',
-      )
       .replaceAll('console.log(', 'log(')
       .replaceAll("'cube-a1b2c3'", JSON.stringify(id));
-    const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-      ...args: string[]
-    ) => Example;
     const lines: unknown[][] = [];
-    await new AsyncFunction('lib', 'log', body)(discovery, (...values) => lines.push(values));
+    await runDocExample(
+      body,
+      { '@hal/discovery': discovery },
+      { log: (...values: unknown[]) => lines.push(values) },
+    );
     expect(lines).toContainEqual([
       id,
       expect.any(Array),

@@ -1,36 +1,19 @@
 // The package README's example, run as written against the emulator in real time (only the
 // address changes).
 import { readFileSync } from 'node:fs';
-import { HybridHAL } from '@hal/hybrid';
-import { PhysicalHAL } from '@hal/physical';
-import { SimulationHAL } from '@hal/simulation';
+import * as hybrid from '@hal/hybrid';
+import * as physical from '@hal/physical';
+import * as simulation from '@hal/simulation';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
 import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 afterAll(stopAllEmulators);
 
 const readme = readFileSync(new URL('../../packages/hybrid/README.md', import.meta.url), 'utf8');
-const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!);
+const blocks = fencedBlocks(readme, 'ts');
 
-type Example = (
-  hybrid: typeof HybridHAL,
-  physical: typeof PhysicalHAL,
-  simulation: typeof SimulationHAL,
-  log: (...values: unknown[]) => void,
-) => Promise<void>;
-
-/** Turns the README block into a function: drops the imports, routes console.log to `log`. */
-function compile(block: string, replacements: Array<[string, string]>): Example {
-  let body = block.replace(/^import .*$/gm, '').replaceAll('console.log(', 'log(');
-  for (const [from, to] of replacements) {
-    expect(body).toContain(from);
-    body = body.replaceAll(from, to);
-  }
-  const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-    ...args: string[]
-  ) => Example;
-  return new AsyncFunction('HybridHAL', 'PhysicalHAL', 'SimulationHAL', 'log', body);
-}
+const MODULES = { '@hal/hybrid': hybrid, '@hal/physical': physical, '@hal/simulation': simulation };
 
 describe('the @hal/hybrid README', () => {
   it('drives the emulated robot and its twin 10 cm and prints the result and the divergence', async () => {
@@ -38,11 +21,15 @@ describe('the @hal/hybrid README', () => {
     const emulator = await startEmulator({ pty: false });
     const logged: unknown[][] = [];
     try {
-      const example = compile(blocks[0]!, [
+      let code = blocks[0]!.replaceAll('console.log(', 'log(');
+      for (const [from, to] of [
         ["'192.168.4.1'", "'127.0.0.1'"],
         ['udpPort: 4210', `udpPort: ${emulator.udpPort}`],
-      ]);
-      await example(HybridHAL, PhysicalHAL, SimulationHAL, (...values) => logged.push(values));
+      ] as const) {
+        expect(code).toContain(from);
+        code = code.replaceAll(from, to);
+      }
+      await runDocExample(code, MODULES, { log: (...values: unknown[]) => logged.push(values) });
       expect(logged).toHaveLength(1);
       expect(logged[0]?.[0]).toBe(true);
       expect(logged[0]?.[1]).toEqual({ success: true });

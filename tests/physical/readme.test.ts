@@ -1,28 +1,28 @@
 // The package README's examples, run as written against the emulator in real time (only the
 // address changes).
 import { readFileSync } from 'node:fs';
-import { PhysicalHAL } from '@hal/physical';
+import * as physical from '@hal/physical';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
 import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 
 afterAll(stopAllEmulators);
 
 const readme = readFileSync(new URL('../../packages/physical/README.md', import.meta.url), 'utf8');
-const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!);
+const blocks = fencedBlocks(readme, 'ts');
 
-type Example = (hal: typeof PhysicalHAL, log: (...values: unknown[]) => void) => Promise<void>;
-
-/** Turns a README block into a function: drops the import, routes console.log to `log`. */
-function compile(block: string, replacements: Array<[string, string]>): Example {
-  let body = block.replace(/^import .*$/m, '').replaceAll('console.log(', 'log(');
+/** Runs a README block as written but for `replacements` (each must be there), console.log to `log`. */
+async function runExample(
+  block: string,
+  replacements: Array<[string, string]>,
+  log: (...values: unknown[]) => void,
+): Promise<void> {
+  let code = block.replaceAll('console.log(', 'log(');
   for (const [from, to] of replacements) {
-    expect(body).toContain(from);
-    body = body.replaceAll(from, to);
+    expect(code).toContain(from);
+    code = code.replaceAll(from, to);
   }
-  const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-    ...args: string[]
-  ) => Example;
-  return new AsyncFunction('PhysicalHAL', 'log', body);
+  await runDocExample(code, { '@hal/physical': physical }, { log });
 }
 
 describe('the @hal/physical README', () => {
@@ -34,11 +34,14 @@ describe('the @hal/physical README', () => {
     const emulator = await startEmulator({ pty: false });
     const logged: unknown[][] = [];
     try {
-      const example = compile(blocks[0]!, [
-        ["'192.168.4.1'", "'127.0.0.1'"],
-        ['udpPort: 4210', `udpPort: ${emulator.udpPort}`],
-      ]);
-      await example(PhysicalHAL, (...values) => logged.push(values));
+      await runExample(
+        blocks[0]!,
+        [
+          ["'192.168.4.1'", "'127.0.0.1'"],
+          ['udpPort: 4210', `udpPort: ${emulator.udpPort}`],
+        ],
+        (...values) => logged.push(values),
+      );
       expect(logged[0]?.[0]).toBe(true);
       expect(logged[0]?.[1]).toMatchObject({ position: { x: expect.closeTo(0.1, 3) } });
       expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
@@ -51,8 +54,9 @@ describe('the @hal/physical README', () => {
     const emulator = await startEmulator();
     const logged: unknown[][] = [];
     try {
-      const example = compile(blocks[1]!, [["'/dev/ttyUSB0'", `'${emulator.pty}'`]]);
-      await example(PhysicalHAL, (...values) => logged.push(values));
+      await runExample(blocks[1]!, [["'/dev/ttyUSB0'", `'${emulator.pty}'`]], (...values) =>
+        logged.push(values),
+      );
       expect(logged).toEqual([[true]]);
       const finished = await emulator.waitFor((e) => e.event === 'move_finished');
       expect(finished).toMatchObject({ left_steps: -1706, right_steps: 1706 });

@@ -1,32 +1,25 @@
 // The package README's example and the docs' example messages, run as written.
 import { readFileSync } from 'node:fs';
-import { RemoteHAL, decodeMessage } from '@hal/remote';
-import { serveHal } from '@hal/remote/server';
-import { SimulationHAL } from '@hal/simulation';
+import * as remote from '@hal/remote';
+import { decodeMessage } from '@hal/remote';
+import * as server from '@hal/remote/server';
+import * as simulation from '@hal/simulation';
+import { fencedBlocks, runDocExample } from '@hal/types/testing';
 import { describe, expect, it } from 'vitest';
 
 const readme = readFileSync(new URL('../../packages/remote/README.md', import.meta.url), 'utf8');
 const docs = readFileSync(new URL('../../docs/remote.md', import.meta.url), 'utf8');
-const blocks = (text: string, lang: string) =>
-  [...text.matchAll(new RegExp('```' + lang + '\\n([\\s\\S]*?)```', 'g'))].map((m) => m[1]!);
-
-type Example = (
-  remote: typeof RemoteHAL,
-  serve: typeof serveHal,
-  simulation: typeof SimulationHAL,
-  log: (...values: unknown[]) => void,
-) => Promise<void>;
+const blocks = fencedBlocks;
 
 describe('the @hal/remote README', () => {
   it('serves a simulator and drives it 10 cm through RemoteHAL, printing the result and x', async () => {
     const [block] = blocks(readme, 'ts');
-    const body = block!.replace(/^import .*$/gm, '').replaceAll('console.log(', 'log(');
-    const AsyncFunction = Object.getPrototypeOf(async () => undefined).constructor as new (
-      ...args: string[]
-    ) => Example;
-    const example = new AsyncFunction('RemoteHAL', 'serveHal', 'SimulationHAL', 'log', body);
     const logged: unknown[][] = [];
-    await example(RemoteHAL, serveHal, SimulationHAL, (...values) => logged.push(values));
+    await runDocExample(
+      block!.replaceAll('console.log(', 'log('),
+      { '@hal/remote': remote, '@hal/remote/server': server, '@hal/simulation': simulation },
+      { log: (...values: unknown[]) => logged.push(values) },
+    );
     expect(logged).toHaveLength(1);
     expect(logged[0]?.[0]).toBe(true);
     expect(logged[0]?.[1]).toBeCloseTo(0.1, 3);

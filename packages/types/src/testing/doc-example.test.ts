@@ -19,6 +19,9 @@ describe('runDocExample', () => {
       runDocExample("import { x } from 'nowhere';\nmark('ran');", {}, scope),
     ).rejects.toThrow('the example imports nowhere, unknown to this test');
     await expect(
+      runDocExample("import { triple } from 'maths';\nmark('ran');", { maths: { half: 1 } }, scope),
+    ).rejects.toThrow('the example imports triple from maths, which does not export it');
+    await expect(
       runDocExample("import * as m from 'maths';\nmark('ran');", { maths: {} }, scope),
     ).rejects.toThrow('cannot bind: import * as m');
     expect(ran).toEqual([]);

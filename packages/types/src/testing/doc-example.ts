@@ -22,7 +22,8 @@ const AsyncFunction = Object.getPrototypeOf(async () => undefined)
 
 /**
  * Runs `code` with its named imports taken from `modules` and `scope`'s entries as variables.
- * An import of a module not in `modules`, or any other kind of import, throws before it runs.
+ * An import of a module not in `modules`, of a name the module does not export, or any other kind
+ * of import (default, namespace) throws before it runs.
  */
 export async function runDocExample(
   code: string,
@@ -38,6 +39,8 @@ export async function runDocExample(
       .split(',')
       .map((n) => n.trim())
       .filter((n) => n !== '')) {
+      if (!(name in module))
+        throw new Error(`the example imports ${name} from ${from}, which does not export it`);
       names.push(name);
       values.push(module[name]);
     }
