@@ -129,7 +129,7 @@ export class Session {
         const bytes = this.#options.codec.encode({ cmd, seq, sid: this.#sid, ...params });
         const timing = this.#options.request?.();
         let reply: WireReply;
-        this.#lastRequestAt = performance.now();
+        // no stamp before the send: no heartbeat goes out while a request is under way (#busy)
         try {
           reply = await this.#options.transport.request(seq, bytes, withTiming(timing, options));
         } catch (thrown) {

@@ -12,6 +12,9 @@ export class LinkTiming {
   readonly #options: PhysicalHALOptions;
   readonly #timeScale: number;
   readonly #robot: () => RobotConfig;
+  /** The last request timing, and the host timeout it was worked out for. */
+  #request: Readonly<RequestOptions> | undefined;
+  #requestFor: number | undefined;
 
   constructor(options: PhysicalHALOptions, timeScale: number, robot: () => RobotConfig) {
     this.#options = options;
@@ -30,6 +33,16 @@ export class LinkTiming {
    * move; give it up once the protocol's 3 x 2000 ms have been spent.
    */
   request(): RequestOptions {
+    // asked for on every request: the same object while the robot's host timeout is the same
+    const hostTimeoutMs = this.#robot().hostTimeoutMs;
+    if (this.#requestFor !== hostTimeoutMs || this.#request === undefined) {
+      this.#request = Object.freeze(this.#requestOptions());
+      this.#requestFor = hostTimeoutMs;
+    }
+    return this.#request;
+  }
+
+  #requestOptions(): RequestOptions {
     const timeoutMs =
       this.#options.requestTimeoutMs ??
       Math.max(20, Math.min(DEFAULT_REPLY_TIMEOUT_MS, this.real(this.#robot().hostTimeoutMs / 4)));

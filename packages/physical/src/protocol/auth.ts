@@ -43,13 +43,26 @@ export function splitMac(bytes: Uint8Array): { json: Uint8Array; mac: string } |
 
 /** The JSON bytes followed by `#` and their MAC (written in place: one array per message). */
 export function appendMac(json: Uint8Array, auth: MessageAuthenticator): Uint8Array {
-  const mac = auth.mac(json);
-  const bytes = new Uint8Array(json.length + 1 + mac.length);
+  const bytes = new Uint8Array(json.length + MAC_SUFFIX_LENGTH);
   bytes.set(json, 0);
-  bytes[json.length] = HASH;
-  // the MAC is hex digits: one byte each
-  for (let i = 0; i < mac.length; i++) bytes[json.length + 1 + i] = mac.charCodeAt(i);
+  writeMac(bytes, json.length, auth);
   return bytes;
+}
+
+/**
+ * Writes `#` and the MAC of `bytes[0, jsonLength)` right after those bytes, in place (`bytes`
+ * must have room for {@link MAC_SUFFIX_LENGTH} more); returns the signed message's length.
+ */
+export function writeMac(
+  bytes: Uint8Array,
+  jsonLength: number,
+  auth: MessageAuthenticator,
+): number {
+  const mac = auth.mac(bytes.subarray(0, jsonLength));
+  bytes[jsonLength] = HASH;
+  // the MAC is hex digits: one byte each
+  for (let i = 0; i < mac.length; i++) bytes[jsonLength + 1 + i] = mac.charCodeAt(i);
+  return jsonLength + 1 + mac.length;
 }
 
 /** Whether `text` is 32 lowercase hex digits, as a MAC is written. */

@@ -1,6 +1,7 @@
 import { HalError, sanitizeEstopReason } from '@hal/types';
 import type { MessageAuthenticator } from './auth.js';
-import { appendMac, splitMac } from './auth.js';
+import { MAC_SUFFIX_LENGTH, splitMac, writeMac } from './auth.js';
+import { BytePool } from './byte-pool.js';
 import { parseEnvelope } from './envelope.js';
 import type { ReplyEnvelope } from './schemas.js';
 
@@ -16,9 +17,19 @@ export type WireReply = ReplyEnvelope & Record<string, unknown>;
 /** The outcome of decoding an inbound message: never throws. */
 export type DecodeResult = { ok: true; reply: WireReply } | { ok: false; error: HalError };
 
+function tooLong(message: Record<string, unknown>, bytes: number): HalError {
+  return new HalError(
+    'RANGE_EXCEEDED',
+    `the "${String(message['cmd'])}" message is ${bytes} bytes; the protocol allows at most ${MAX_MESSAGE_BYTES}`,
+    { details: { bytes, max: MAX_MESSAGE_BYTES } },
+  );
+}
+
 /** Encodes and (when a key is configured) authenticates requests, and decodes replies. */
 export class MessageCodec {
   readonly #auth: MessageAuthenticator | undefined;
+  /** Where requests are written: a view each, not an ArrayBuffer each (see BytePool). */
+  readonly #pool = new BytePool();
 
   constructor(auth?: MessageAuthenticator) {
     this.#auth = auth;
@@ -66,16 +77,18 @@ export class MessageCodec {
   }
 
   #encodeChecked(message: Record<string, unknown>): Uint8Array {
-    const json = encoder.encode(JSON.stringify(message));
-    const bytes = this.#auth === undefined ? json : appendMac(json, this.#auth);
-    if (bytes.length > MAX_MESSAGE_BYTES) {
-      throw new HalError(
-        'RANGE_EXCEEDED',
-        `the "${String(message['cmd'])}" message is ${bytes.length} bytes; the protocol allows at most ${MAX_MESSAGE_BYTES}`,
-        { details: { bytes: bytes.length, max: MAX_MESSAGE_BYTES } },
-      );
+    const json = JSON.stringify(message);
+    const suffix = this.#auth === undefined ? 0 : MAC_SUFFIX_LENGTH;
+    // UTF-8 takes at least one byte per UTF-16 code unit: a longer text can only be too long
+    if (json.length + suffix > MAX_MESSAGE_BYTES) {
+      throw tooLong(message, encoder.encode(json).length + suffix);
     }
-    return bytes;
+    // at most three bytes per code unit (a surrogate pair: four for two), so it always fits
+    const room = this.#pool.room(json.length * 3 + suffix);
+    const { written } = encoder.encodeInto(json, room);
+    const length = this.#auth === undefined ? written : writeMac(room, written, this.#auth);
+    if (length > MAX_MESSAGE_BYTES) throw tooLong(message, length);
+    return this.#pool.take(length);
   }
 
   /**

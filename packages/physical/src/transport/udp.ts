@@ -121,12 +121,22 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
       return {
         type: 'udp',
         localPort,
-        request: (seq, bytes, requestOptions) =>
-          matcher.requestWith(
+        request: (seq, bytes, requestOptions) => {
+          let resend = false;
+          return matcher.requestWith(
             seq,
             (done) => {
               if (closed) {
                 done(new HalError('NOT_CONNECTED', 'the UDP transport is closed'));
+                return;
+              }
+              if (!resend) {
+                // the first send reports nothing: node:dgram's send callback costs about half a
+                // kilobyte of allocation per request, and a datagram that failed to go out is a
+                // lost one, which this attempt's timeout finds; the resends report their errors
+                resend = true;
+                socket.send(bytes);
+                done();
                 return;
               }
               socket.send(bytes, (error) =>
@@ -134,7 +144,8 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
               );
             },
             overDefaults(requestOptions, defaults),
-          ),
+          );
+        },
         stats: (): TransportStats => matcher.stats(),
         close: async () => {
           if (closed) return;
