@@ -1,10 +1,11 @@
 // PhysicalHAL's cost on the wire: a command round trip through PhysicalHAL (boundary, session,
 // codec, UDP transport) against a raw dgram ping-pong of the same command (the reply parsed and
-// its seq checked, as any client must), both to the same emulator in one run, interleaved, with
-// and without a key: p50, p99 and p99.9, and a note of what the tail is made of (the calls above
-// 300 us on each side, the GCs and the calls they overlapped); then serial round trips over the
-// emulator's pseudo-terminal, and the frame codec alone, streaming against one-shot.
-import { createHash, createHmac } from 'node:crypto';
+// its seq checked, and with a key its MAC verified, as any client must), both to the same
+// emulator in one run, interleaved, with and without a key: p50, p99 and p99.9, and a note of
+// what the tail is made of (the calls above 300 us on each side, the GCs and the calls they
+// overlapped); then serial round trips over the emulator's pseudo-terminal, and the frame codec
+// alone, streaming against one-shot.
+import { createHash, createHmac, timingSafeEqual } from 'node:crypto';
 import { createSocket } from 'node:dgram';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { decodeFrame, encodeFrame, FrameDecoder, PhysicalHAL } from '@hal/physical';
@@ -32,14 +33,25 @@ async function rawPingPong(port: number, rounds: number, key?: string): Promise<
     secret === undefined
       ? json
       : `${json}#${createHmac('sha256', secret).update(json).digest('hex').slice(0, 32)}`;
+  // a keyed client checks every reply's MAC (in constant time), or the key protects nothing
+  const authentic = (json: string, mac: string) =>
+    secret === undefined ||
+    (mac.length === 32 &&
+      timingSafeEqual(
+        Buffer.from(mac, 'hex'),
+        createHmac('sha256', secret).update(json).digest().subarray(0, 16),
+      ));
   let waiting: ((reply: Buffer) => void) | undefined;
   socket.on('message', (message) => waiting?.(message));
   const ask = (json: string) =>
-    new Promise<{ seq: number; sid?: number }>((resolve) => {
+    new Promise<{ seq: number; sid?: number }>((resolve, reject) => {
       waiting = (reply) => {
         const text = reply.toString();
         const end = secret === undefined ? text.length : text.lastIndexOf('#');
-        resolve(JSON.parse(text.slice(0, end)) as { seq: number; sid?: number });
+        const body = text.slice(0, end);
+        if (!authentic(body, text.slice(end + 1)))
+          reject(new Error('raw: reply MAC does not match'));
+        else resolve(JSON.parse(body) as { seq: number; sid?: number });
       };
       socket.send(sign(json));
     });
