@@ -87,6 +87,26 @@ describe('HalBoundary', () => {
     it('refuses non-integer LED channels with INVALID_PARAMETER', () => {
       expect(() => boundary().validate('setLED', { r: 1.5, g: 0, b: 0 })).toThrow(HalError);
     });
+
+    it("gives zod's output on its fast path: unknown keys dropped, an omitted argument kept as undefined", () => {
+      const b = boundary();
+      const led = { r: 1, g: 2, b: 3, pattern: undefined, brightness: 9 };
+      expect(b.validate('setLED', led)).toStrictEqual(b.schemas().setLED.parse(led));
+      expect(b.validate('setLED', led)).toStrictEqual({ r: 1, g: 2, b: 3, pattern: undefined });
+      expect(b.validate('drive', { left: -255, right: 255 })).toStrictEqual({
+        left: -255,
+        right: 255,
+      });
+    });
+
+    it('still takes what only zod models: an e-stop reason is sanitised, never refused', () => {
+      expect(boundary().validate('emergencyStop', { reason: ' \u0007bumper\n' })).toStrictEqual({
+        reason: 'bumper',
+      });
+      expect(boundary().validate('emergencyStop', { reason: { not: 'text' } })).toStrictEqual({
+        reason: 'emergency stop',
+      });
+    });
   });
 
   describe('#call', () => {

@@ -6,6 +6,8 @@ import type { HALToolResult } from './result.js';
 import type { RobotConfig } from './robot-config.js';
 import { createCallSchemas, MOTION_CALLS } from './schemas/calls.js';
 import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
+import { compileFastParsers } from './schemas/fast-parse.js';
+import type { FastParse } from './schemas/fast-parse.js';
 
 function describeValue(value: unknown): string {
   if (typeof value === 'number' || typeof value === 'boolean') return String(value);
@@ -83,27 +85,35 @@ export interface HalBoundaryOptions {
   now?: () => number;
 }
 
+/** The call schemas of a configuration and their fast paths (schemas/fast-parse.ts). */
+interface SharedSchemas {
+  readonly schemas: CallSchemas;
+  readonly fast: { readonly [N in CallName]?: FastParse };
+}
+
 /** Call schemas by configuration value, shared by every boundary (zod schemas are immutable). */
-const sharedSchemas = new Map<string, CallSchemas>();
+const sharedSchemas = new Map<string, SharedSchemas>();
 const SHARED_SCHEMAS_MAX = 32;
 
 /**
  * The call schemas of a configuration, built once per distinct value: building them costs
  * milliseconds, and each new set runs cold (zod compiles a parser per schema) for its first few
- * hundred calls, which a HAL made anew for the same robot should not pay again.
+ * hundred calls, which a HAL made anew for the same robot should not pay again. Their fast paths
+ * are built with them, once.
  */
-function sharedCallSchemas(config: RobotConfig): CallSchemas {
+function sharedCallSchemas(config: RobotConfig): SharedSchemas {
   const key = JSON.stringify(config);
-  let schemas = sharedSchemas.get(key);
-  if (schemas === undefined) {
-    schemas = createCallSchemas(config);
+  let shared = sharedSchemas.get(key);
+  if (shared === undefined) {
+    const schemas = createCallSchemas(config);
+    shared = { schemas, fast: compileFastParsers(schemas) };
     if (sharedSchemas.size >= SHARED_SCHEMAS_MAX) {
       const oldest = sharedSchemas.keys().next().value;
       if (oldest !== undefined) sharedSchemas.delete(oldest);
     }
-    sharedSchemas.set(key, schemas);
+    sharedSchemas.set(key, shared);
   }
-  return schemas;
+  return shared;
 }
 
 /**
@@ -124,26 +134,37 @@ export class HalBoundary {
   readonly #options: HalBoundaryOptions;
   readonly #now: () => number;
   #schemasFor: RobotConfig | undefined;
-  #schemas: CallSchemas | undefined;
+  #shared: SharedSchemas | undefined;
 
   constructor(options: HalBoundaryOptions) {
     this.#options = options;
     this.#now = options.now ?? Date.now;
   }
 
-  /** The call schemas for the robot's current configuration (rebuilt only when it changes). */
-  schemas(): CallSchemas {
+  #current(): SharedSchemas {
     const config = this.#options.config();
-    if (this.#schemas === undefined || this.#schemasFor !== config) {
-      this.#schemas = sharedCallSchemas(config);
+    if (this.#shared === undefined || this.#schemasFor !== config) {
+      this.#shared = sharedCallSchemas(config);
       this.#schemasFor = config;
     }
-    return this.#schemas;
+    return this.#shared;
   }
 
-  /** Validates a call's parameters; throws a HalError that names the parameter and the limit. */
+  /** The call schemas for the robot's current configuration (rebuilt only when it changes). */
+  schemas(): CallSchemas {
+    return this.#current().schemas;
+  }
+
+  /**
+   * Validates a call's parameters; throws a HalError that names the parameter and the limit.
+   * The common case takes the call's fast path (schemas/fast-parse.ts), which only ever accepts
+   * and gives zod's output; anything it is unsure of, every refusal among them, goes to zod.
+   */
   validate<N extends CallName>(call: N, args: unknown): CallParams<N> {
-    const schema = this.schemas()[call] as z.ZodType;
+    const shared = this.#current();
+    const fast = shared.fast[call]?.(args);
+    if (fast !== undefined) return fast as CallParams<N>;
+    const schema = shared.schemas[call] as z.ZodType;
     const parsed = schema.safeParse(args);
     if (!parsed.success) {
       const issue = parsed.error.issues[0];
