@@ -114,13 +114,22 @@ describe('FrameDecoder', () => {
 
   it('keeps every payload it handed out intact while later reads fill its held memory many times over', () => {
     // 7-byte reads: every frame is assembled in the decoder's held memory (71 bytes a frame,
-    // 2,000 frames: over 140 kB through it); nothing is copied by the caller
+    // 2,000 frames: over 140 kB through it, two 64 kB blocks and more); nothing is copied by the
+    // caller
     const sent = Array.from({ length: 2000 }, (_, n) => numbered(n));
     const stream = concat(...sent.map(encodeFrame));
     const { decoder, frames } = frameRecorder();
     for (let at = 0; at < stream.length; at += 7) decoder.push(stream.subarray(at, at + 7));
     const plain = (f: Frame) => ({ type: f.type, seq: f.seq, payload: Array.from(f.payload) });
     expect(frames().map(plain)).toEqual(sent.map(plain));
+  });
+
+  it('refuses a block size that is not a positive integer', () => {
+    for (const bad of [0, -1, 1.5, Number.NaN, Number.POSITIVE_INFINITY]) {
+      expect(() => new FrameDecoder({ onFrame: () => undefined }, bad)).toThrow(
+        /"blockBytes" must be a positive integer/,
+      );
+    }
   });
 
   it('holds no more than the unfinished frame between pushes', () => {

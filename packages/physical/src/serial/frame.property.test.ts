@@ -163,16 +163,17 @@ describe('FrameDecoder', () => {
         { minLength: 1, maxLength: 24 },
       ),
       fc.integer({ min: 1, max: 300 }),
+      fc.integer({ min: 1, max: 4096 }),
     ],
-    { numRuns: 40 },
+    { numRuns: 60 },
   )(
     'hands out payloads that stay correct through every later push, up to the largest frames',
-    (sent, size) => {
-      // up to 24 kB of frames: the decoder's held memory fills and is replaced several times
-      // while the payloads handed out earlier are kept as views
+    (sent, size, blockBytes) => {
+      // up to 24 kB of frames through blocks of held memory as small as one byte: the blocks
+      // fill and are replaced many times while the payloads handed out earlier are kept as views
       const frames = sent.map((f): Frame => ({ type: 'data', ...f }));
       const stream = concat(frames.map(encodeFrame));
-      const { decoder, frames: received } = frameRecorder();
+      const { decoder, frames: received } = frameRecorder({ blockBytes });
       for (let at = 0; at < stream.length; at += size) {
         decoder.push(stream.subarray(at, at + size));
       }
