@@ -88,13 +88,11 @@ export async function startSerialFaultRelay(options: {
 
   /** Cuts a byte stream into frames and forwards each, damaged or not, with `send`. */
   const damager = (faults: LineFaults, s: LineStats, send: (bytes: Uint8Array) => void) => {
-    const decoder = new FrameDecoder();
-    return (chunk: Uint8Array) => {
-      if (closed) return;
-      for (const event of decoder.push(chunk)) {
-        if (event.kind !== 'frame') continue; // both ends write only whole, valid frames
+    // both ends write only whole, valid frames: anything else is dropped unreported
+    const decoder = new FrameDecoder({
+      onFrame: (type, seq, payload) => {
         s.frames += 1;
-        const bytes = encodeFrame(event.frame);
+        const bytes = encodeFrame({ type, seq, payload });
         if (random() < faults.garbage) {
           s.garbage += 1;
           send(garbage());
@@ -110,7 +108,10 @@ export async function startSerialFaultRelay(options: {
           s.duplicates += 1;
           send(bytes);
         }
-      }
+      },
+    });
+    return (chunk: Uint8Array) => {
+      if (!closed) decoder.push(chunk);
     };
   };
 

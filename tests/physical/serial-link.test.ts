@@ -15,18 +15,17 @@ const data = (seq: number, message: object) =>
 /** A raw frame-level client on the emulator's pseudo-terminal. */
 async function rawLink(path: string) {
   const port = await openSerialPort(path, 115200);
-  const decoder = new FrameDecoder();
   const frames: Frame[] = [];
-  port.on('data', (chunk) => {
-    for (const event of decoder.push(new Uint8Array(chunk))) {
-      if (event.kind !== 'frame') continue;
-      frames.push(event.frame);
+  const decoder = new FrameDecoder({
+    onFrame: (type, seq, payload) => {
+      frames.push({ type, seq, payload });
       // acknowledge the device's DATA frames, as a host must
-      if (event.frame.type === 'data') {
-        port.write(encodeFrame({ type: 'ack', seq: event.frame.seq, payload: new Uint8Array(0) }));
-      }
-    }
+      if (type === 'data')
+        port.write(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) }));
+    },
   });
+  // the port's chunks are never written again, so the payloads kept above stay as they came
+  port.on('data', (chunk) => decoder.push(chunk));
   const write = (bytes: Uint8Array) =>
     new Promise<void>((resolve, reject) =>
       port.write(bytes, (error) => (error ? reject(error) : resolve())),

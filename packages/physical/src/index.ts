@@ -76,14 +76,10 @@ export type {
   StopReport,
 } from './protocol/schemas.js';
 
-export {
-  crc16,
-  decodeFrame,
-  encodeFrame,
-  FrameDecoder,
-  MAX_PAYLOAD_BYTES,
-} from './serial/frame.js';
-export type { Frame, FrameError, FrameEvent, FrameType } from './serial/frame.js';
+export { crc16, decodeFrame, encodeFrame, MAX_PAYLOAD_BYTES } from './serial/frame.js';
+export type { Frame, FrameError, FrameType } from './serial/frame.js';
+export { FrameDecoder } from './serial/frame-decoder.js';
+export type { FrameHandlers } from './serial/frame-decoder.js';
 
 export { MjpegCamera } from './camera/mjpeg.js';
 export type { MjpegCameraOptions, MjpegStats } from './camera/mjpeg.js';

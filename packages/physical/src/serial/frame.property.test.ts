@@ -1,7 +1,8 @@
 import { fc, it } from '@fast-check/vitest';
 import { describe, expect } from 'vitest';
-import { decodeFrame, encodeFrame, FrameDecoder, MAX_PAYLOAD_BYTES } from './frame.js';
-import type { Frame, FrameEvent } from './frame.js';
+import { decodeFrame, encodeFrame, MAX_PAYLOAD_BYTES } from './frame.js';
+import type { Frame } from './frame.js';
+import { frameRecorder } from './frame-recorder.fixture.js';
 
 // Property tests of the serial framing: what the decoder delivers is always exactly a frame that
 // was sent, however the bytes arrive and whatever lies between the frames.
@@ -18,9 +19,6 @@ const frameArb: fc.Arbitrary<Frame> = fc.oneof(
     payload: fc.constant(new Uint8Array(0)),
   }),
 );
-
-const framesOf = (events: FrameEvent[]): Frame[] =>
-  events.flatMap((e) => (e.kind === 'frame' ? [e.frame] : []));
 
 const plain = (f: Frame) => ({ type: f.type, seq: f.seq, payload: Array.from(f.payload) });
 
@@ -46,12 +44,16 @@ function cut(bytes: Uint8Array, points: number[]): Uint8Array[] {
   return chunks;
 }
 
-/** Feeds chunks, then lets the line go quiet until nothing is held back. */
+/**
+ * Feeds chunks (each its own copy, as a port delivers them), then lets the line go quiet until
+ * nothing is held back. The payloads are kept as handed out (views) and read only at the end, so
+ * every property below also checks that later pushes leave them intact.
+ */
 function receive(chunks: Uint8Array[]): Frame[] {
-  const decoder = new FrameDecoder();
-  const events = chunks.flatMap((c) => decoder.push(c.slice()));
-  while (decoder.pending > 0) events.push(...decoder.abandon());
-  return framesOf(events);
+  const { decoder, frames } = frameRecorder();
+  for (const chunk of chunks) decoder.push(chunk.slice());
+  while (decoder.pending > 0) decoder.abandon();
+  return frames();
 }
 
 const cutPoints = fc.array(fc.double({ min: 0, max: 1, noNaN: true }), { maxLength: 12 });
@@ -142,13 +144,40 @@ describe('FrameDecoder', () => {
     'decodes the same frames from reads of any fixed size, holding nothing back at the end',
     (frames, size) => {
       const stream = concat(frames.map(encodeFrame));
-      const decoder = new FrameDecoder();
-      const events: FrameEvent[] = [];
+      const { decoder, frames: received } = frameRecorder();
       for (let at = 0; at < stream.length; at += size) {
-        events.push(...decoder.push(stream.subarray(at, at + size)));
+        decoder.push(stream.subarray(at, at + size));
       }
       expect(decoder.pending).toBe(0);
-      expect(framesOf(events).map(plain)).toEqual(frames.map(plain));
+      expect(received().map(plain)).toEqual(frames.map(plain));
+    },
+  );
+
+  it.prop(
+    [
+      fc.array(
+        fc.record({
+          seq: fc.integer({ min: 0, max: 0xffff }),
+          payload: fc.uint8Array({ maxLength: MAX_PAYLOAD_BYTES }),
+        }),
+        { minLength: 1, maxLength: 24 },
+      ),
+      fc.integer({ min: 1, max: 300 }),
+      fc.integer({ min: 1, max: 4096 }),
+    ],
+    { numRuns: 60 },
+  )(
+    'hands out payloads that stay correct through every later push, up to the largest frames',
+    (sent, size, blockBytes) => {
+      // up to 24 kB of frames through blocks of held memory as small as one byte: the blocks
+      // fill and are replaced many times while the payloads handed out earlier are kept as views
+      const frames = sent.map((f): Frame => ({ type: 'data', ...f }));
+      const stream = concat(frames.map(encodeFrame));
+      const { decoder, frames: received } = frameRecorder({ blockBytes });
+      for (let at = 0; at < stream.length; at += size) {
+        decoder.push(stream.subarray(at, at + size));
+      }
+      expect(received().map(plain)).toEqual(frames.map(plain));
     },
   );
 });

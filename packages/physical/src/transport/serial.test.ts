@@ -1,7 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { MockRobot } from '../mock/mock-robot.js';
 import { PhysicalHAL } from '../hal/physical-hal.js';
-import { encodeFrame, FrameDecoder } from '../serial/frame.js';
+import { encodeFrame } from '../serial/frame.js';
+import { FrameDecoder } from '../serial/frame-decoder.js';
+import type { FrameType } from '../serial/frame.js';
 import type { SerialPortLike } from './serial.js';
 import { serialTransport } from './serial.js';
 
@@ -13,7 +15,9 @@ import { serialTransport } from './serial.js';
 class FramedMockPort implements SerialPortLike {
   isOpen = true;
   readonly #robot: MockRobot;
-  readonly #decoder = new FrameDecoder();
+  readonly #decoder = new FrameDecoder({
+    onFrame: (type, seq, payload) => this.#receive(type, seq, payload),
+  });
   readonly #listeners = {
     data: [] as Array<(c: Uint8Array) => void>,
     close: [] as Array<() => void>,
@@ -30,23 +34,23 @@ class FramedMockPort implements SerialPortLike {
 
   write(data: Uint8Array, callback?: (error?: Error | null) => void): boolean {
     const bytes = data.slice();
-    setTimeout(() => {
-      for (const event of this.#decoder.push(bytes)) {
-        if (event.kind !== 'frame' || event.frame.type !== 'data') continue;
-        const { seq, payload } = event.frame;
-        this.#emit(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) }));
-        if (seq === this.#lastDelivered) continue;
-        this.#lastDelivered = seq;
-        const reply = this.#robot.receive(payload);
-        if (reply === undefined) continue;
-        const frame = encodeFrame({ type: 'data', seq: this.#txSeq++ & 0xffff, payload: reply });
-        this.#sent += 1;
-        if (this.#corruptEvery > 0 && this.#sent % this.#corruptEvery === 0) frame[12]! ^= 0x04;
-        this.#emit(frame);
-      }
-    }, 0);
+    setTimeout(() => this.#decoder.push(bytes), 0);
     callback?.(null);
     return true;
+  }
+
+  /** A frame from the host: ACK it, and answer a DATA frame not seen before. */
+  #receive(type: FrameType, seq: number, payload: Uint8Array): void {
+    if (type !== 'data') return;
+    this.#emit(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) }));
+    if (seq === this.#lastDelivered) return;
+    this.#lastDelivered = seq;
+    const reply = this.#robot.receive(payload);
+    if (reply === undefined) return;
+    const frame = encodeFrame({ type: 'data', seq: this.#txSeq++ & 0xffff, payload: reply });
+    this.#sent += 1;
+    if (this.#corruptEvery > 0 && this.#sent % this.#corruptEvery === 0) frame[12]! ^= 0x04;
+    this.#emit(frame);
   }
 
   on(event: 'data' | 'error' | 'close', listener: (value: never) => void): this {

@@ -1,7 +1,8 @@
 import { HalError } from '@hal/types';
 import { scoped } from '../logger.js';
-import { encodeFrame, FrameDecoder } from '../serial/frame.js';
-import type { FrameEvent } from '../serial/frame.js';
+import { encodeFrame } from '../serial/frame.js';
+import type { FrameType } from '../serial/frame.js';
+import { FrameDecoder } from '../serial/frame-decoder.js';
 import type {
   RequestOptions,
   SerialLinkStats,
@@ -93,7 +94,6 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
         });
       }
       const matcher = new ReplyMatcher();
-      const decoder = new FrameDecoder();
       const link: SerialLinkStats = {
         framesSent: 0,
         framesReceived: 0,
@@ -149,50 +149,51 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
         });
       };
 
-      const handle = (events: FrameEvent[]) => {
-        for (const event of events) {
-          if (event.kind === 'garbage') {
-            link.resyncBytes += event.dropped;
-          } else if (event.kind === 'error') {
-            link.resyncBytes += event.dropped;
-            if (event.error === 'bad_crc') link.checksumErrors += 1;
-          } else if (event.kind === 'oversize') {
-            log.debug('oversize frame header', { length: event.length });
-          } else if (event.frame.type === 'ack') {
-            link.acksReceived += 1;
-            if (awaitingAck !== undefined && awaitingAck.seq === event.frame.seq)
-              awaitingAck.acked();
-          } else {
-            link.framesReceived += 1;
-            const { seq, payload } = event.frame;
-            link.acksSent += 1;
-            write(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) })).catch(
-              (error: unknown) => log.debug('ACK not written', { error: String(error) }),
-            );
-            if (seq === lastDelivered) {
-              link.duplicateFrames += 1;
-              continue;
-            }
-            lastDelivered = seq;
-            const result = context.decode(payload);
-            if (!matcher.deliver(result)) {
-              log.debug(
-                'frame payload dropped',
-                result.ok ? { seq: result.reply.seq } : { error: result.error.message },
-              );
-            }
-          }
+      const onFrame = (type: FrameType, seq: number, payload: Uint8Array): void => {
+        if (type === 'ack') {
+          link.acksReceived += 1;
+          if (awaitingAck !== undefined && awaitingAck.seq === seq) awaitingAck.acked();
+          return;
+        }
+        link.framesReceived += 1;
+        link.acksSent += 1;
+        write(encodeFrame({ type: 'ack', seq, payload: new Uint8Array(0) })).catch(
+          (error: unknown) => log.debug('ACK not written', { error: String(error) }),
+        );
+        if (seq === lastDelivered) {
+          link.duplicateFrames += 1;
+          return;
+        }
+        lastDelivered = seq;
+        // the payload is a view of the port's chunk: decoded here at once, nothing keeps it
+        const result = context.decode(payload);
+        if (!matcher.deliver(result)) {
+          log.debug(
+            'frame payload dropped',
+            result.ok ? { seq: result.reply.seq } : { error: result.error.message },
+          );
         }
       };
+      const decoder = new FrameDecoder({
+        onFrame,
+        onGarbage: (dropped) => {
+          link.resyncBytes += dropped;
+        },
+        onError: (error, dropped) => {
+          link.resyncBytes += dropped;
+          if (error === 'bad_crc') link.checksumErrors += 1;
+        },
+        onOversize: (length) => log.debug('oversize frame header', { length }),
+      });
 
       const attach = (target: SerialPortLike): void => {
         target.on('data', (chunk) => {
           if (target !== port) return;
           clearTimeout(partialTimer);
-          handle(decoder.push(chunk)); // a Buffer is a Uint8Array: no copy
+          decoder.push(chunk); // a Buffer is a Uint8Array: no copy
           if (decoder.pending > 0) {
             partialTimer = setTimeout(function abandon() {
-              handle(decoder.abandon());
+              decoder.abandon();
               if (decoder.pending > 0) partialTimer = setTimeout(abandon, PARTIAL_FRAME_TIMEOUT_MS);
             }, PARTIAL_FRAME_TIMEOUT_MS);
           }
