@@ -6,7 +6,7 @@
 //   transport    MessageCodec + the UDP transport (ReplyMatcher: seq match, resend timer)
 //   session      + the Session (queue, seq numbers, reply data checked against its schema)
 //   hal          + PhysicalHAL (HalBoundary: readiness, e-stop, parameters; the result)
-// Per variant: the latency percentiles and the calls above 300 us; with --alloc, the bytes each
+// Per variant: the latency percentiles, the calls above 300 us and the GCs during its calls; with --alloc, the bytes each
 // call allocates instead (heap growth over many calls with no GC: run it as below).
 // A tool beside udp-trace.ts, not a benchmark of `pnpm bench` (it reports no figures).
 //   node --conditions=@hal/source --import tsx bench/udp-layers.ts [--blocks N] [--rounds N]
@@ -14,6 +14,7 @@
 //     --conditions=@hal/source --import tsx bench/udp-layers.ts --alloc
 import { randomBytes } from 'node:crypto';
 import { createSocket } from 'node:dgram';
+import { PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
 import { MessageCodec, PhysicalHAL, silentLogger, udpTransport } from '@hal/physical';
 // the session is internal to the package: this tool reaches it where it lies
@@ -187,14 +188,33 @@ try {
     }
   } else {
     const samples = new Map<string, number[]>(VARIANTS.map(([name]) => [name, []]));
+    // the garbage collections during each variant's blocks, and how many ms they took
+    const gcs = new Map<string, { count: number; ms: number }>(
+      VARIANTS.map(([name]) => [name, { count: 0, ms: 0 }]),
+    );
+    let running = '';
+    const observer = new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) {
+        const tally = gcs.get(running);
+        if (tally === undefined) continue;
+        tally.count += 1;
+        tally.ms += entry.duration;
+      }
+    });
+    observer.observe({ entryTypes: ['gc'] });
     for (let block = 0; block < BLOCKS; block++) {
-      for (const [name, run] of VARIANTS) samples.get(name)!.push(...(await run(ROUNDS)));
+      for (const [name, run] of VARIANTS) {
+        running = name;
+        samples.get(name)!.push(...(await run(ROUNDS)));
+        await new Promise((resolve) => setImmediate(resolve)); // its GC entries are delivered
+      }
     }
+    observer.disconnect();
     console.log(`${BLOCKS} interleaved blocks of ${ROUNDS} set_led round trips per variant:`);
     for (const [name, s] of samples) {
       const slow = s.filter((ms) => ms > SLOW_MS).length;
       console.log(
-        `  ${name.padEnd(10)} p50 ${us(percentile(s, 50))}  p90 ${us(percentile(s, 90))}  p99 ${us(percentile(s, 99))}  p99.9 ${us(percentile(s, 99.9))}  above ${SLOW_MS * 1000} us: ${slow}`,
+        `  ${name.padEnd(10)} p50 ${us(percentile(s, 50))}  p90 ${us(percentile(s, 90))}  p99 ${us(percentile(s, 99))}  p99.9 ${us(percentile(s, 99.9))}  above ${SLOW_MS * 1000} us: ${String(slow).padStart(3)}  GCs: ${gcs.get(name)!.count} (${gcs.get(name)!.ms.toFixed(1)} ms)`,
       );
     }
   }
