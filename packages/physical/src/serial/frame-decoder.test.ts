@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { encodeFrame, MAX_PAYLOAD_BYTES } from './frame.js';
 import type { Frame } from './frame.js';
 import { FrameDecoder } from './frame-decoder.js';
-import { frameRecorder } from './frame-recorder.fixture.js';
+import { concat, frameRecorder } from './frame-recorder.fixture.js';
 
 interface Vector {
   name: string;
@@ -17,16 +17,6 @@ const valid = (
   ) as Vector[]
 ).filter((v) => v.decoded !== undefined);
 const golden = valid.map((v) => new Uint8Array(Buffer.from(v.hex, 'hex')));
-
-const concat = (...parts: Uint8Array[]) => {
-  const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
-  let at = 0;
-  for (const p of parts) {
-    out.set(p, at);
-    at += p.length;
-  }
-  return out;
-};
 
 /** A DATA frame whose payload says which it is: `frame N` padded with `N % 251` to `size` bytes. */
 function numbered(n: number, size = 60): Frame {

@@ -35,3 +35,14 @@ export function frameRecorder(options: { copy?: boolean; blockBytes?: number } =
   const frames = () => events.flatMap((e) => (e.kind === 'frame' ? [e.frame] : []));
   return { decoder, events, frames };
 }
+
+/** The bytes of `parts`, one after another, in one array. */
+export function concat(...parts: Uint8Array[]): Uint8Array {
+  const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
+  let at = 0;
+  for (const p of parts) {
+    out.set(p, at);
+    at += p.length;
+  }
+  return out;
+}

@@ -2,7 +2,7 @@ import { fc, it } from '@fast-check/vitest';
 import { describe, expect } from 'vitest';
 import { decodeFrame, encodeFrame, MAX_PAYLOAD_BYTES } from './frame.js';
 import type { Frame } from './frame.js';
-import { frameRecorder } from './frame-recorder.fixture.js';
+import { concat, frameRecorder } from './frame-recorder.fixture.js';
 
 // Property tests of the serial framing: what the decoder delivers is always exactly a frame that
 // was sent, however the bytes arrive and whatever lies between the frames.
@@ -21,16 +21,6 @@ const frameArb: fc.Arbitrary<Frame> = fc.oneof(
 );
 
 const plain = (f: Frame) => ({ type: f.type, seq: f.seq, payload: Array.from(f.payload) });
-
-function concat(parts: Uint8Array[]): Uint8Array {
-  const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
-  let at = 0;
-  for (const p of parts) {
-    out.set(p, at);
-    at += p.length;
-  }
-  return out;
-}
 
 /** Cuts `bytes` at the given fractions (any order, duplicates allowed). */
 function cut(bytes: Uint8Array, points: number[]): Uint8Array[] {
@@ -78,7 +68,7 @@ describe('FrameDecoder', () => {
   it.prop([fc.array(frameArb, { maxLength: 6 }), cutPoints], { numRuns: 150 })(
     'finds every frame in order, however the stream is cut into reads',
     (frames, points) => {
-      const stream = concat(frames.map(encodeFrame));
+      const stream = concat(...frames.map(encodeFrame));
       expect(receive(cut(stream, points)).map(plain)).toEqual(frames.map(plain));
     },
   );
@@ -94,7 +84,7 @@ describe('FrameDecoder', () => {
     'resynchronises after garbage between frames and delivers each frame once',
     (pairs, tail, points) => {
       // random garbage could hold a valid frame only by a 2^-48 chance (sync, length check, CRC)
-      const stream = concat([...pairs.flatMap(([junk, f]) => [junk, encodeFrame(f)]), tail]);
+      const stream = concat(...pairs.flatMap(([junk, f]) => [junk, encodeFrame(f)]), tail);
       const frames = pairs.map(([, f]) => plain(f));
       expect(receive(cut(stream, points)).map(plain)).toEqual(frames);
     },
@@ -111,7 +101,7 @@ describe('FrameDecoder', () => {
       const positions = [...new Set(flips.map((f) => f % bits))];
       for (const bit of positions)
         corrupted[bit >> 3] = (corrupted[bit >> 3] ?? 0) ^ (1 << (bit & 7));
-      const received = receive(cut(concat([corrupted, encodeFrame(next)]), points));
+      const received = receive(cut(concat(corrupted, encodeFrame(next)), points));
       // CRC-16/CCITT-FALSE has Hamming distance 4 at these lengths: 1..3 bit errors are detected
       expect(received.map(plain)).toEqual([plain(next)]);
     },
@@ -134,7 +124,7 @@ describe('FrameDecoder', () => {
         const result = decodeFrame(bytes);
         return result.ok ? [plain(result.frame)] : [];
       });
-      expect(receive(cut(concat(pieces), points)).map(plain)).toEqual(expected);
+      expect(receive(cut(concat(...pieces), points)).map(plain)).toEqual(expected);
     },
   );
 
@@ -143,7 +133,7 @@ describe('FrameDecoder', () => {
   })(
     'decodes the same frames from reads of any fixed size, holding nothing back at the end',
     (frames, size) => {
-      const stream = concat(frames.map(encodeFrame));
+      const stream = concat(...frames.map(encodeFrame));
       const { decoder, frames: received } = frameRecorder();
       for (let at = 0; at < stream.length; at += size) {
         decoder.push(stream.subarray(at, at + size));
@@ -172,7 +162,7 @@ describe('FrameDecoder', () => {
       // up to 24 kB of frames through blocks of held memory as small as one byte: the blocks
       // fill and are replaced many times while the payloads handed out earlier are kept as views
       const frames = sent.map((f): Frame => ({ type: 'data', ...f }));
-      const stream = concat(frames.map(encodeFrame));
+      const stream = concat(...frames.map(encodeFrame));
       const { decoder, frames: received } = frameRecorder({ blockBytes });
       for (let at = 0; at < stream.length; at += size) {
         decoder.push(stream.subarray(at, at + size));
