@@ -85,6 +85,21 @@ describe('hal fleet --config', () => {
     expect(robot.events.filter((e) => e.event === 'move_started')).toHaveLength(before + 1);
   }, 60_000);
 
+  it("runs the config file's mode when --mode is not given, and refuses a file whose mode runs nothing", async () => {
+    const before = robot.events.filter((e) => e.event === 'move_started').length;
+    const { code, io } = await hal('fleet', 'run', '--config', config, '--command', 'forward:1');
+    expect(io.stderr()).not.toContain('hal:');
+    expect(code).toBe(0);
+    expect(io.stdout()).toContain('synchronized moveForward: 2 ok, 0 failed');
+    expect(robot.events.filter((e) => e.event === 'move_started')).toHaveLength(before + 1);
+
+    const independent = join(dir, 'independent.json');
+    await writeFile(independent, JSON.stringify({ devices: [{ type: 'simulated', id: 'sim-1' }] }));
+    const bad = await hal('fleet', 'run', '--config', independent, '--command', 'forward:1');
+    expect(bad.code).toBe(2);
+    expect(bad.io.stderr()).toContain('its mode is "independent"');
+  }, 60_000);
+
   it('narrows the fleet with --device and refuses a device the file lacks', async () => {
     const one = await hal('--json', 'fleet', 'health', '--config', config, '--device', 'sim-1');
     expect(one.code).toBe(0);

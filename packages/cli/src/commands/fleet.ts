@@ -9,6 +9,8 @@ import { openFleetSession } from '../fleet/fleet-session.js';
 import type { FleetCliOptions } from '../fleet/fleet-session.js';
 import { formatFormation, formatHealth, formatReport } from '../fleet/format.js';
 import { runLeaderFollower, runSynchronized } from '../fleet/run.js';
+import { resolveRunMode, RUN_MODES } from '../fleet/run-mode.js';
+import type { RunMode } from '../fleet/run-mode.js';
 import { emit } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import type { CommandContext, RegisterCommand } from './index.js';
@@ -144,9 +146,10 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
       'run a fleet mode: one command to all, or a leader with followers in formation',
     )
       .addOption(
-        new Option('--mode <mode>', 'the fleet mode')
-          .choices(['synchronized', 'leader-follower'])
-          .makeOptionMandatory(),
+        new Option(
+          '--mode <mode>',
+          "the fleet mode (default: the config file's, when it is one of these)",
+        ).choices([...RUN_MODES]),
       )
       .requiredOption('--command <command>', `what to do: ${COMMAND_SPEC_HELP}`)
       .addOption(
@@ -179,9 +182,9 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           .argParser(positiveNumber),
       )
       .action(
-        (
+        async (
           options: FleetCliOptions & {
-            mode: 'synchronized' | 'leader-follower';
+            mode?: RunMode;
             command: string;
             timeoutMs: number;
             leader?: string;
@@ -192,11 +195,12 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           },
         ) => {
           const command = parseCommandSpec(options.command);
-          if (options.mode === 'leader-follower' && options.leader === undefined) {
-            throw new CliError('USAGE', '--mode leader-follower needs --leader <id>');
+          const mode = await resolveRunMode(options.mode, options.config);
+          if (mode === 'leader-follower' && options.leader === undefined) {
+            throw new CliError('USAGE', 'leader-follower mode needs --leader <id>');
           }
           return withSession(options, ctx, async ({ manager }) => {
-            if (options.mode === 'synchronized') {
+            if (mode === 'synchronized') {
               const report = await runSynchronized(
                 manager,
                 command,
