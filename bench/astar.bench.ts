@@ -216,6 +216,7 @@ for (const c of cases) {
     better: 'lower',
     alternative: { name: 'pathfinding AStarFinder', value: b },
     goal: '>= 2x faster, equal path cost',
+    met: agree && b / a >= 2,
   });
   if (c.plot !== undefined) {
     for (const [series, value] of [

@@ -183,6 +183,7 @@ function reportRoundTrips(label: string, trips: RoundTrips): void {
       better: 'lower',
       alternative: { name: 'raw node:dgram ping-pong', value: r * 1000 },
       goal: name === 'p50' ? '<= 1.1x raw' : name === 'p99' ? '<= 1.3x raw' : undefined,
+      ...(name === 'p50' ? { met: h / r <= 1.1 } : name === 'p99' ? { met: h / r <= 1.3 } : {}),
       ...(name === 'p50' ? {} : { note }),
     });
   }
@@ -238,6 +239,8 @@ const CODEC_PAYLOAD = new TextEncoder().encode(
 );
 const CODEC_FRAMES = 50_000;
 const CODEC_ROUNDS = 8;
+/** Rounds of the same decoder differ by a few percent on a shared machine. */
+const SERIAL_GOAL = 'as fast as one-shot (within 5 %)';
 
 /** `bytes` cut into views of `size` bytes (the last one shorter). */
 function reads(bytes: Uint8Array, size: number): Uint8Array[] {
@@ -349,7 +352,8 @@ reportFigure({
   unit: 'frames/s',
   better: 'higher',
   alternative: { name: 'one-shot decodeFrame of each whole frame', value: codec.oneShot },
-  goal: 'as fast as one-shot',
+  goal: SERIAL_GOAL,
+  met: codec.streaming / codec.oneShot >= 0.95,
   note:
     'every 78-byte frame straddles two 64-byte reads, so the decoder copies it into its held memory ' +
     '(the one-shot side is given each frame whole, at known boundaries); see docs/physical.md',
@@ -361,5 +365,6 @@ reportFigure({
   unit: 'frames/s',
   better: 'higher',
   alternative: { name: 'one-shot decodeFrame of each whole frame', value: codec.oneShot },
-  goal: 'as fast as one-shot',
+  goal: SERIAL_GOAL,
+  met: codec.streamingLarge / codec.oneShot >= 0.95,
 });

@@ -20,6 +20,8 @@ export const FigureSchema = z.object({
   alternative: z.object({ name: z.string().min(1), value: z.number().finite() }).optional(),
   /** The goal this figure is held to, in words, e.g. `<= 1.3x raw`. */
   goal: z.string().optional(),
+  /** Whether this run met the goal, where the benchmark can tell (a goal in words may not say). */
+  met: z.boolean().optional(),
   /** Anything a reader must know to read the figure honestly. */
   note: z.string().optional(),
 });

@@ -34,6 +34,13 @@ function formatRatio(figure: Figure): string {
   return `${formatRatioNumber(ratio)} (${way}${words})${better ? '' : ' ⚠'}`;
 }
 
+/** The goal, and whether this run met it when the benchmark could tell. */
+function formatGoal(figure: Figure): string {
+  if (figure.goal === undefined) return '';
+  if (figure.met === undefined) return figure.goal;
+  return `${figure.goal}: ${figure.met ? 'met' : 'NOT met'}`;
+}
+
 const cell = (text: string) => text.replaceAll('|', '\\|').replaceAll('\n', ' ');
 
 /** One markdown table of every figure, grouped by benchmark in the order given. */
@@ -51,7 +58,7 @@ export function figuresTable(figures: readonly Figure[]): string {
         f.alternative?.name ?? '',
         f.alternative === undefined ? '' : formatValue(f.alternative.value, f.unit),
         formatRatio(f),
-        f.goal ?? '',
+        formatGoal(f),
         f.note ?? '',
       ]
         .map(cell)

@@ -63,6 +63,17 @@ describe('figuresTable', () => {
     expect(table).toContain('| 3.00x (higher is better) |');
   });
 
+  it('says beside the goal whether the run met it, where the benchmark could tell', () => {
+    const table = figuresTable([
+      { ...latency, met: false },
+      { ...latency, name: 'UDP round trip p50', goal: '<= 1.1x raw', met: true },
+      { ...latency, name: 'e-stop p99', goal: 'within one round trip' },
+    ]);
+    expect(table).toContain('| <= 1.3x raw: NOT met |');
+    expect(table).toContain('| <= 1.1x raw: met |');
+    expect(table).toContain('| within one round trip |');
+  });
+
   it('prints a large lead with its digits and in words, never as 0.00x', () => {
     const table = figuresTable([
       {
