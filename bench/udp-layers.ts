@@ -87,12 +87,18 @@ async function raw(rounds: number, extra: { cpuUs?: number; objects?: number } =
   return samples;
 }
 
-async function transport(rounds: number) {
+/** The codec and a UDP transport to the emulator, as PhysicalHAL builds them. */
+async function openLink() {
   const codec = new MessageCodec();
   const link = await udpTransport({ host: '127.0.0.1', port }).connect({
     decode: (bytes) => codec.decode(bytes),
     logger: silentLogger,
   });
+  return { codec, link };
+}
+
+async function transport(rounds: number) {
+  const { codec, link } = await openLink();
   const nonce = randomBytes(4).toString('hex');
   const hello = await link.request(1, codec.encode({ cmd: 'hello', seq: 1, nonce }), TIMING);
   const samples: number[] = [];
@@ -117,11 +123,7 @@ async function transport(rounds: number) {
 }
 
 async function session(rounds: number) {
-  const codec = new MessageCodec();
-  const link = await udpTransport({ host: '127.0.0.1', port }).connect({
-    decode: (bytes) => codec.decode(bytes),
-    logger: silentLogger,
-  });
+  const { codec, link } = await openLink();
   const open = new Session({
     transport: link,
     codec,
