@@ -163,22 +163,28 @@ export class Session {
       }
       throw robotError(cmd, reply);
     }
-    const fast = fastReply(cmd, reply);
-    if (fast !== undefined) {
-      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
-      return fast;
+    return this.#replyData(cmd, reply);
+  }
+
+  /**
+   * The data of a successful reply, checked against the command's schema (the hand-checked path
+   * first, zod when it is unsure) and reported through `onReply`; MALFORMED when it does not match.
+   */
+  #replyData<C extends Command>(cmd: C, reply: WireReply): ReplyOf<C> {
+    let data = fastReply(cmd, reply);
+    if (data === undefined) {
+      const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
+      if (!parsed.success) {
+        this.malformedReplies += 1;
+        const issue = parsed.error.issues[0];
+        throw new HalError(
+          'MALFORMED',
+          `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
+          { details: { command: cmd } },
+        );
+      }
+      data = parsed.data as ReplyOf<C>;
     }
-    const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
-    if (!parsed.success) {
-      this.malformedReplies += 1;
-      const issue = parsed.error.issues[0];
-      throw new HalError(
-        'MALFORMED',
-        `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
-        { details: { command: cmd } },
-      );
-    }
-    const data = parsed.data as ReplyOf<C>;
     this.#options.onReply?.(cmd, data as Record<string, unknown>);
     return data;
   }
@@ -224,20 +230,7 @@ export class Session {
       });
     }
     if (!reply.ok) throw robotError(cmd, reply);
-    const fast = fastReply(cmd, reply);
-    if (fast !== undefined) {
-      this.#options.onReply?.(cmd, fast as Record<string, unknown>);
-      return fast;
-    }
-    const parsed = REPLY_SCHEMAS[cmd].safeParse(reply);
-    if (!parsed.success) {
-      this.malformedReplies += 1;
-      throw new HalError('MALFORMED', `the robot's "${cmd}" reply does not match the protocol`, {
-        details: { command: cmd },
-      });
-    }
-    const data = parsed.data as ReplyOf<C>;
-    this.#options.onReply?.(cmd, data as Record<string, unknown>);
+    const data = this.#replyData(cmd, reply);
     this.#stops.acknowledged(epoch, { cmd, reply: data } as SafetyInterrupt);
     return data;
   }
