@@ -3,6 +3,7 @@ import { describe, expect } from 'vitest';
 import { fastReply } from './reply-fast.js';
 import { MOVE_OUTCOMES, REPLY_SCHEMAS } from './schemas.js';
 import type { Command } from './schemas.js';
+import { byte, finite, int, motionReplyFields, uint32 } from './reply-fields.fixture.js';
 
 // The hand-checked reply data against its definition, the command's zod schema: whatever the
 // fast path accepts, the schema accepts, with an equal output (so the fast path is never less
@@ -21,10 +22,6 @@ const field = (right: fc.Arbitrary<unknown>) =>
     fc.boolean(),
     fc.jsonValue(),
   );
-const int = fc.integer();
-const byte = fc.integer({ min: 0, max: 255 });
-const uint32 = fc.integer({ min: 0, max: 4_294_967_295 });
-const finite = fc.double({ noNaN: true, noDefaultInfinity: true });
 const extra = fc.dictionary(fc.string(), fc.jsonValue(), { maxKeys: 3 });
 
 /** An object of `fields`, each maybe wrong or absent, with unknown extra fields. */
@@ -41,18 +38,7 @@ const objectOf = (fields: Record<string, fc.Arbitrary<unknown>>, required: boole
 const wellFormed = (fields: Record<string, fc.Arbitrary<unknown>>) => fc.record(fields);
 
 const ledFields = { r: byte, g: byte, b: byte, pattern: fc.string() };
-const motionFields = {
-  move_id: uint32,
-  left_steps: int,
-  right_steps: int,
-  speed: finite,
-  speed_clamped: fc.boolean(),
-  duration_ms: int,
-  duration_us: int,
-  left_sps: finite,
-  right_sps: finite,
-  running: fc.boolean(),
-};
+const motionFields = { move_id: uint32, ...motionReplyFields };
 const statusFields = (make: typeof objectOf | typeof wellFormed, required = true) => ({
   x_cm: finite,
   y_cm: finite,

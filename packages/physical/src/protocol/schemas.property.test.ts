@@ -2,21 +2,14 @@ import { fc, it } from '@fast-check/vitest';
 import { describe, expect } from 'vitest';
 import { LED_PATTERNS, REPLY_SCHEMAS } from './schemas.js';
 import type { Command } from './schemas.js';
+import { byte, int, motionReplyFields, uint32 } from './reply-fields.fixture.js';
 
 // Property tests of the reply decoders: any value is either a typed reply or a refusal (never an
 // exception), unknown fields are dropped, null means absent, and a required field of the wrong
 // type is always refused.
 
 const commands = Object.keys(REPLY_SCHEMAS) as Command[];
-const int = fc.integer({ min: -2_000_000_000, max: 2_000_000_000 });
-const uint32 = fc.integer({ min: 0, max: 4_294_967_295 });
-const finite = fc.double({ noNaN: true, noDefaultInfinity: true });
-const led = fc.record({
-  r: fc.integer({ min: 0, max: 255 }),
-  g: fc.integer({ min: 0, max: 255 }),
-  b: fc.integer({ min: 0, max: 255 }),
-  pattern: fc.constantFrom(...LED_PATTERNS),
-});
+const led = fc.record({ r: byte, g: byte, b: byte, pattern: fc.constantFrom(...LED_PATTERNS) });
 
 /** Valid reply data of some commands: required fields, and optional ones. */
 const shapes: Partial<
@@ -34,17 +27,7 @@ const shapes: Partial<
   },
   move_steps: {
     required: { move_id: uint32 },
-    optional: {
-      left_steps: int,
-      right_steps: int,
-      speed: finite,
-      speed_clamped: fc.boolean(),
-      duration_ms: int,
-      duration_us: int,
-      left_sps: finite,
-      right_sps: finite,
-      running: fc.boolean(),
-    },
+    optional: motionReplyFields,
   },
   stop: { required: { stopped: fc.boolean(), left_steps: int, right_steps: int }, optional: {} },
   set_led: { required: { led }, optional: {} },
