@@ -5,11 +5,11 @@
 // what the tail is made of (the calls above 300 us on each side, the GCs and the calls they
 // overlapped); then serial round trips over the emulator's pseudo-terminal, and the frame codec
 // alone, streaming against one-shot.
-import { createHash, createHmac, timingSafeEqual } from 'node:crypto';
-import { createSocket } from 'node:dgram';
+import { createHash } from 'node:crypto';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { decodeFrame, encodeFrame, FrameDecoder, PhysicalHAL } from '@hal/physical';
 import { startEmulator } from '../tests/physical/emulator.js';
+import { openRawUdpClient, setLedJson } from './raw-udp-client.js';
 import { percentile, reportFigure, reportPoint } from './report/figures.js';
 
 // Enough calls that the tail percentiles rest on many calls each: of 4,000, the p99.9 was the 4th
@@ -28,49 +28,17 @@ const KEY = createHash('sha256').update('bench key').digest('hex');
 const fmt = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
 
 async function rawPingPong(port: number, rounds: number, key?: string): Promise<number[]> {
-  const socket = createSocket('udp4');
-  await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
-  socket.connect(port, '127.0.0.1');
-  await new Promise<void>((resolve) => socket.once('connect', resolve));
-  const secret = key === undefined ? undefined : Buffer.from(key, 'hex');
-  const sign = (json: string) =>
-    secret === undefined
-      ? json
-      : `${json}#${createHmac('sha256', secret).update(json).digest('hex').slice(0, 32)}`;
-  // a keyed client checks every reply's MAC (in constant time), or the key protects nothing
-  const authentic = (json: string, mac: string) =>
-    secret === undefined ||
-    (mac.length === 32 &&
-      timingSafeEqual(
-        Buffer.from(mac, 'hex'),
-        createHmac('sha256', secret).update(json).digest().subarray(0, 16),
-      ));
-  let waiting: ((reply: Buffer) => void) | undefined;
-  socket.on('message', (message) => waiting?.(message));
-  const ask = (json: string) =>
-    new Promise<{ seq: number; sid?: number }>((resolve, reject) => {
-      waiting = (reply) => {
-        const text = reply.toString();
-        const end = secret === undefined ? text.length : text.lastIndexOf('#');
-        const body = text.slice(0, end);
-        if (!authentic(body, text.slice(end + 1)))
-          reject(new Error('raw: reply MAC does not match'));
-        else resolve(JSON.parse(body) as { seq: number; sid?: number });
-      };
-      socket.send(sign(json));
-    });
-  const nonce = secret === undefined ? '' : `,"nonce":"${Date.now().toString(16)}"`;
-  const hello = await ask(`{"cmd":"hello","seq":1${nonce}}`);
+  const client = await openRawUdpClient(port, key);
   const samples: number[] = [];
   for (let i = 0; i < rounds; i++) {
     const seq = i + 2;
-    const json = `{"cmd":"set_led","seq":${seq},"sid":${hello.sid},"r":${i % 256},"g":0,"b":0,"pattern":"solid"}`;
+    const json = setLedJson(seq, client.sid, i);
     const start = performance.now();
-    const reply = await ask(json);
+    const reply = await client.ask(json);
     samples.push(performance.now() - start);
     if (reply.seq !== seq) throw new Error(`raw: reply seq ${reply.seq}, expected ${seq}`);
   }
-  socket.close();
+  client.close();
   return samples;
 }
 

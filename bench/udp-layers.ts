@@ -13,13 +13,13 @@
 //   node --expose-gc --max-semi-space-size=256 --min-semi-space-size=256 \
 //     --conditions=@hal/source --import tsx bench/udp-layers.ts --alloc
 import { randomBytes } from 'node:crypto';
-import { createSocket } from 'node:dgram';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
 import { MessageCodec, PhysicalHAL, silentLogger, udpTransport } from '@hal/physical';
 // the session is internal to the package: this tool reaches it where it lies
 import { Session } from '../packages/physical/src/session.js';
 import { startEmulator } from '../tests/physical/emulator.js';
+import { openRawUdpClient, setLedJson } from './raw-udp-client.js';
 import { percentile } from './report/figures.js';
 
 const { values } = parseArgs({
@@ -56,25 +56,12 @@ function spin(us: number): void {
 let kept: unknown[] = [];
 
 async function raw(rounds: number, extra: { cpuUs?: number; objects?: number } = {}) {
-  const socket = createSocket('udp4');
-  await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
-  socket.connect(port, '127.0.0.1');
-  await new Promise<void>((resolve) => socket.once('connect', resolve));
-  let waiting: ((reply: Buffer) => void) | undefined;
-  socket.on('message', (message) => waiting?.(message));
-  const ask = (json: string) =>
-    new Promise<{ seq: number; sid?: number }>((resolve) => {
-      waiting = (reply) => resolve(JSON.parse(reply.toString()) as { seq: number; sid?: number });
-      socket.send(json);
-    });
-  const hello = await ask('{"cmd":"hello","seq":1}');
+  const client = await openRawUdpClient(port);
   const samples: number[] = [];
   for (let i = 0; i < rounds; i++) {
     const seq = i + 2;
     const start = performance.now();
-    const reply = await ask(
-      `{"cmd":"set_led","seq":${seq},"sid":${hello.sid},"r":${i % 256},"g":0,"b":0,"pattern":"solid"}`,
-    );
+    const reply = await client.ask(setLedJson(seq, client.sid, i));
     if (extra.cpuUs !== undefined) spin(extra.cpuUs);
     if (extra.objects !== undefined) {
       kept = [];
@@ -83,7 +70,7 @@ async function raw(rounds: number, extra: { cpuUs?: number; objects?: number } =
     samples.push(performance.now() - start);
     if (reply.seq !== seq) throw new Error(`raw: reply seq ${reply.seq}, expected ${seq}`);
   }
-  socket.close();
+  client.close();
   return samples;
 }
 

@@ -8,12 +8,13 @@
 // --timeline also prints every call above 0.3 ms, raw (R) and HAL (H), and every GC (G), in time
 // order: `<ms since start><R|H|G><duration ms>/<send -> reply ms>`.
 import { createHash } from 'node:crypto';
-import { createSocket, Socket } from 'node:dgram';
+import { Socket } from 'node:dgram';
 import { monitorEventLoopDelay, PerformanceObserver } from 'node:perf_hooks';
 import type { PerformanceEntry } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
 import { MessageCodec, PhysicalHAL } from '@hal/physical';
 import { startEmulator } from '../tests/physical/emulator.js';
+import { openRawUdpClient, setLedJson } from './raw-udp-client.js';
 import { percentile } from './report/figures.js';
 
 const { values } = parseArgs({
@@ -92,28 +93,17 @@ async function halBlock(port: number, rounds: number, traces: Trace[]): Promise<
 
 /** The benchmark's raw client: the same set_led, its reply parsed and its seq checked. */
 async function rawBlock(port: number, rounds: number, samples: number[]): Promise<void> {
-  const socket = createSocket('udp4');
-  await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
-  socket.connect(port, '127.0.0.1');
-  await new Promise<void>((resolve) => socket.once('connect', resolve));
-  let waiting: ((reply: Buffer) => void) | undefined;
-  socket.on('message', (reply) => waiting?.(reply));
-  const ask = (json: string) =>
-    new Promise<{ seq: number; sid: number }>((resolve) => {
-      waiting = (reply) => resolve(JSON.parse(reply.toString()) as { seq: number; sid: number });
-      socket.send(json);
-    });
-  const hello = await ask('{"cmd":"hello","seq":1}');
+  const client = await openRawUdpClient(port);
   for (let i = 0; i < rounds; i++) {
     const seq = i + 2;
-    const json = `{"cmd":"set_led","seq":${seq},"sid":${hello.sid},"r":${i % 256},"g":0,"b":0,"pattern":"solid"}`;
+    const json = setLedJson(seq, client.sid, i);
     const start = performance.now();
-    const reply = await ask(json);
+    const reply = await client.ask(json);
     samples.push(performance.now() - start);
     rawStarts.push(start);
     if (reply.seq !== seq) throw new Error(`raw: reply seq ${reply.seq}, expected ${seq}`);
   }
-  socket.close();
+  client.close();
 }
 
 const rawStarts: number[] = [];
