@@ -36,6 +36,13 @@ function emulate(args: string[]) {
   return run;
 }
 
+/** Runs `hal emulate` (human output) until it ends by itself: for the runs it refuses. */
+async function emulateToEnd(args: string[]) {
+  const io = captureIO();
+  const code = await runHal(['emulate', '--emulator', builtEmulatorPath(), ...args], io);
+  return { code, io };
+}
+
 describe('hal emulate', { timeout: 30_000 }, () => {
   it('prints where the robot listens, announces it, and stops cleanly when aborted', async () => {
     const id = uniqueId();
@@ -74,22 +81,9 @@ describe('hal emulate', { timeout: 30_000 }, () => {
     const id = uniqueId();
     const first = emulate(['--udp-port', '0', '--no-pty', '--device-id', id]);
     await waitForLine(first.io, (l) => l['event'] === 'ready');
-    const second = captureIO();
-    const code = await runHal(
-      [
-        'emulate',
-        '--emulator',
-        builtEmulatorPath(),
-        '--udp-port',
-        '0',
-        '--no-pty',
-        '--device-id',
-        id,
-      ],
-      second,
-    );
-    expect(code).toBe(1);
-    expect(second.stderr()).toMatch(/already announced.*choose another --device-id/);
+    const second = await emulateToEnd(['--udp-port', '0', '--no-pty', '--device-id', id]);
+    expect(second.code).toBe(1);
+    expect(second.io.stderr()).toMatch(/already announced.*choose another --device-id/);
   });
 
   it('fails with NOT_FOUND for an --emulator that is not a program', async () => {
@@ -115,20 +109,7 @@ describe('hal emulate', { timeout: 30_000 }, () => {
   });
 
   it('passes the emulator refusal of a non-loopback bind without a key on', async () => {
-    const io = captureIO();
-    const code = await runHal(
-      [
-        'emulate',
-        '--emulator',
-        builtEmulatorPath(),
-        '--udp-port',
-        '0',
-        '--no-pty',
-        '--bind',
-        '0.0.0.0',
-      ],
-      io,
-    );
+    const { code, io } = await emulateToEnd(['--udp-port', '0', '--no-pty', '--bind', '0.0.0.0']);
     expect(code).toBe(1);
     expect(io.stderr()).toMatch(/refusing to listen on 0\.0\.0\.0 without a key/);
   });
