@@ -1,7 +1,8 @@
 // Declarations for a signature check (see Arduino.h): mirrors
-// driver/include/esp_camera.h of espressif/esp32-camera v2.0.13, the
-// camera driver the 3.0.7 core bundles (esp32-arduino-libs,
-// <chip>/include/espressif__esp32-camera/driver/include/esp_camera.h).
+// driver/include/esp_camera.h of espressif/esp32-camera, the driver the
+// core bundles (esp32-arduino-libs, <chip>/include/espressif__esp32-camera/
+// driver/include/esp_camera.h). The header is the same in every release
+// from v2.0.9 to v2.0.13, the last one before core 3.0.7.
 // The legacy pin_sscb_* names share a union with pin_sccb_* and carry the
 // driver's deprecation, so using them fails the strict check.
 // CONFIG_CAMERA_CONVERTER_ENABLED is off in the core's sdkconfig, so

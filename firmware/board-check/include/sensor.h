@@ -1,7 +1,7 @@
 // Declarations for a signature check (see Arduino.h): mirrors the pixel
 // format and frame size enums of driver/include/sensor.h of
-// espressif/esp32-camera v2.0.13, the camera driver the 3.0.7 core
-// bundles (esp32-arduino-libs, <chip>/include/espressif__esp32-camera/).
+// espressif/esp32-camera, the same from v2.0.9 to v2.0.13, the last release
+// before core 3.0.7 (v2.0.15 inserts new frame sizes, renumbering these).
 #ifndef BOARD_CHECK_SENSOR_H_
 #define BOARD_CHECK_SENSOR_H_
 extern "C" {
