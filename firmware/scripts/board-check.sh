@@ -46,6 +46,7 @@ case $target in
     exec "$cxx" $strict -I"$here/board-check/include" \
       -I"$here/board-check/variants/$variant" -c "$file"
     ;;
+  selftest:*) echo "board-check: unknown variant ${target#selftest:} (esp32s3 or esp32)" >&2; exit 2 ;;
 esac
 [ $# -eq 2 ] || { echo "$usage" >&2; exit 2; }
 tmp=$(mktemp -d)
