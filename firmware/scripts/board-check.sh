@@ -1,17 +1,22 @@
 #!/bin/sh
 # Signature check of the board code: compiles the ESP32 sketches (and every
 # source arduino-cli would build with them) with -fsyntax-only against the
-# declarations in firmware/board-check/ (exactly the Arduino-ESP32 3.0.7 APIs
-# the sketches use), with the project's strict warnings. It proves the board
-# code is well-formed C++ against those signatures; it does not build for
-# the chip and links nothing (docs/firmware.md).
+# declarations in firmware/board-check/ (mirrors of the Arduino-ESP32 3.0.7
+# headers for the APIs the sketches use), with the project's strict
+# warnings. It proves the board code is well-formed C++ against those
+# signatures; it does not build for the chip and links nothing
+# (docs/firmware.md).
 #
 #   board-check.sh CXX TARGET
+#   board-check.sh CXX selftest:VARIANT FILE
 #     CXX     a C++ compiler (g++, arm-none-eabi-g++)
 #     TARGET  stepper-keyed   the cube sketch with a 32-byte key
 #             stepper-open    the cube sketch, no key, unauthenticated opt-out
 #             camera-default  the camera sketch, no token, no CORS origin
 #             camera-token    the camera sketch with a token and an origin
+#     selftest:VARIANT FILE   one file of board-check/selftest/ with the same
+#             flags and the variant esp32s3 or esp32 (a refusal self-test:
+#             ctest expects the error it prints)
 #
 # Like arduino-cli, it copies the sketch into a build folder, adds a
 # secrets.h (generated here for the target), and compiles the .ino through a
@@ -19,10 +24,31 @@
 # generates no function prototypes, so a sketch must declare before use.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
-[ $# -eq 2 ] || { echo "usage: board-check.sh CXX TARGET" >&2; exit 2; }
+usage="usage: board-check.sh CXX TARGET | board-check.sh CXX selftest:VARIANT FILE"
+[ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 cxx=$1
 target=$2
 command -v "$cxx" >/dev/null 2>&1 || { echo "board-check: $cxx not found" >&2; exit 1; }
+
+# The project's strict flags, and the defines arduino-cli passes for every
+# ESP32 board.
+strict="-std=gnu++2b -fsyntax-only -fno-rtti -Wall -Wextra -Wconversion
+  -Wsign-conversion -Wshadow -Werror -DESP_PLATFORM -DARDUINO_ARCH_ESP32 -DESP32
+  -DARDUINO=10607"
+
+case $target in
+  selftest:esp32s3 | selftest:esp32)
+    [ $# -eq 3 ] || { echo "$usage" >&2; exit 2; }
+    variant=${target#selftest:}
+    file=$here/board-check/selftest/$3
+    [ -f "$file" ] || { echo "board-check: no self-test $3" >&2; exit 2; }
+    # shellcheck disable=SC2086
+    exec "$cxx" $strict -I"$here/board-check/include" \
+      -I"$here/board-check/variants/$variant" -c "$file"
+    ;;
+  selftest:*) echo "board-check: unknown variant ${target#selftest:} (esp32s3 or esp32)" >&2; exit 2 ;;
+esac
+[ $# -eq 2 ] || { echo "$usage" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -67,9 +93,8 @@ cp -R "$here/$sketch" "$tmp/$sketch"
 # The .ino as arduino-cli's preprocessing presents it: <Arduino.h> first.
 printf '#include <Arduino.h>\n#include "%s.ino"\n' "$sketch" > "$tmp/$sketch/$sketch.ino.cpp"
 
-flags="-std=gnu++2b -fsyntax-only -fno-rtti -Wall -Wextra -Wconversion -Wsign-conversion
-  -Wshadow -Werror -DESP_PLATFORM -DARDUINO_ARCH_ESP32 -DESP32 -DARDUINO=10607 $board_defs
-  -I$here/board-check/include -I$here/board-check/variants/$variant"
+flags="$strict $board_defs -I$here/board-check/include
+  -I$here/board-check/variants/$variant"
 
 # The core does not depend on secrets.h: one variant per sketch compiles it.
 sources=$(find "$tmp/$sketch/src" -name '*.cpp' 2>/dev/null | sort)

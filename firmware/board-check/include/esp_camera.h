@@ -1,62 +1,23 @@
-// Declarations for a signature check (see Arduino.h): the esp32-camera
-// driver the Arduino-ESP32 3.0.7 core bundles (esp_camera.h, sensor.h and
-// the LEDC enums it uses).
+// Declarations for a signature check (see Arduino.h): mirrors
+// driver/include/esp_camera.h of espressif/esp32-camera, the driver the
+// core bundles (esp32-arduino-libs, <chip>/include/espressif__esp32-camera/
+// driver/include/esp_camera.h). The header is the same in every release
+// from v2.0.9 to v2.0.13, the last one before core 3.0.7.
+// The legacy pin_sscb_* names share a union with pin_sccb_* and carry the
+// driver's deprecation, so using them fails the strict check.
+// CONFIG_CAMERA_CONVERTER_ENABLED is off in the core's sdkconfig, so
+// camera_config_t has no conv_mode.
 #ifndef BOARD_CHECK_ESP_CAMERA_H_
 #define BOARD_CHECK_ESP_CAMERA_H_
 #include <stddef.h>
 #include <stdint.h>
 #include <sys/time.h>
 
+#include "driver/ledc.h"
 #include "esp_err.h"
+#include "sensor.h"
 
 extern "C" {
-typedef enum {
-  LEDC_TIMER_0 = 0,
-  LEDC_TIMER_1,
-  LEDC_TIMER_2,
-  LEDC_TIMER_3
-} ledc_timer_t;
-typedef enum {
-  LEDC_CHANNEL_0 = 0,
-  LEDC_CHANNEL_1,
-  LEDC_CHANNEL_2,
-  LEDC_CHANNEL_3,
-  LEDC_CHANNEL_4,
-  LEDC_CHANNEL_5,
-  LEDC_CHANNEL_6,
-  LEDC_CHANNEL_7
-} ledc_channel_t;
-
-typedef enum {
-  PIXFORMAT_RGB565,
-  PIXFORMAT_YUV422,
-  PIXFORMAT_YUV420,
-  PIXFORMAT_GRAYSCALE,
-  PIXFORMAT_JPEG,
-  PIXFORMAT_RGB888,
-  PIXFORMAT_RAW,
-  PIXFORMAT_RGB444,
-  PIXFORMAT_RGB555,
-} pixformat_t;
-
-typedef enum {
-  FRAMESIZE_96X96,
-  FRAMESIZE_QQVGA,
-  FRAMESIZE_QCIF,
-  FRAMESIZE_HQVGA,
-  FRAMESIZE_240X240,
-  FRAMESIZE_QVGA,
-  FRAMESIZE_CIF,
-  FRAMESIZE_HVGA,
-  FRAMESIZE_VGA,
-  FRAMESIZE_SVGA,
-  FRAMESIZE_XGA,
-  FRAMESIZE_HD,
-  FRAMESIZE_SXGA,
-  FRAMESIZE_UXGA,
-  FRAMESIZE_INVALID
-} framesize_t;
-
 typedef enum { CAMERA_GRAB_WHEN_EMPTY, CAMERA_GRAB_LATEST } camera_grab_mode_t;
 typedef enum { CAMERA_FB_IN_PSRAM, CAMERA_FB_IN_DRAM } camera_fb_location_t;
 
@@ -66,11 +27,13 @@ typedef struct {
   int pin_xclk;
   union {
     int pin_sccb_sda;
-    int pin_sscb_sda;
+    int pin_sscb_sda
+        __attribute__((deprecated("please use pin_sccb_sda instead")));
   };
   union {
     int pin_sccb_scl;
-    int pin_sscb_scl;
+    int pin_sscb_scl
+        __attribute__((deprecated("please use pin_sccb_scl instead")));
   };
   int pin_d7;
   int pin_d6;
@@ -96,7 +59,7 @@ typedef struct {
 } camera_config_t;
 
 typedef struct {
-  uint8_t* buf;
+  uint8_t *buf;
   size_t len;
   size_t width;
   size_t height;
@@ -104,9 +67,12 @@ typedef struct {
   struct timeval timestamp;
 } camera_fb_t;
 
-esp_err_t esp_camera_init(const camera_config_t* config);
+#define ESP_ERR_CAMERA_BASE 0x20000
+#define ESP_ERR_CAMERA_NOT_DETECTED (ESP_ERR_CAMERA_BASE + 1)
+
+esp_err_t esp_camera_init(const camera_config_t *config);
 esp_err_t esp_camera_deinit(void);
-camera_fb_t* esp_camera_fb_get(void);
-void esp_camera_fb_return(camera_fb_t* fb);
+camera_fb_t *esp_camera_fb_get(void);
+void esp_camera_fb_return(camera_fb_t *fb);
 }
 #endif  // BOARD_CHECK_ESP_CAMERA_H_

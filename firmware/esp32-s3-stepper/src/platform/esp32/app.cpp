@@ -37,6 +37,13 @@
 // compile time.
 #include "../build_auth.h"
 
+// The 3.x timer API (timerBegin(frequency)) and the Network library's
+// NetworkUDP::clear() exist from core 3.0.0; docs/flashing.md pins 3.0.7.
+#if !defined(ESP_ARDUINO_VERSION) || \
+    ESP_ARDUINO_VERSION < ESP_ARDUINO_VERSION_VAL(3, 0, 0)
+#error "The cube firmware needs the Arduino-ESP32 core 3.0.0 or newer (3.0.7 is the pinned one, docs/flashing.md)"
+#endif
+
 namespace {
 
 cube::Esp32Clock clock_source;
@@ -121,7 +128,10 @@ void PollUdp() {
     if (size <= 0) return;
     size_t reply_len;
     if (static_cast<size_t>(size) > cube::kMaxMessage) {
-      udp.flush();  // drop the rest of the datagram
+      // Drop the datagram: clear() empties the receive buffer. flush() is
+      // deprecated in the 3.x cores and did nothing from 3.0.0 to 3.0.4, so
+      // the datagram stayed buffered and parsePacket() kept returning 0.
+      udp.clear();
       reply_len = robot->HandleOversize(static_cast<size_t>(size), reply_buf,
                                         sizeof(reply_buf));
     } else {

@@ -46,7 +46,9 @@ void Esp32Led::SetRgb(uint8_t r, uint8_t g, uint8_t b) {
 #else
   const uint8_t pin = board::kRgbLedPinDefault;
 #endif
-#if ESP_ARDUINO_VERSION_MAJOR >= 3
+  // rgbLedWrite arrived in core 3.0.5, which deprecated neopixelWrite, the
+  // name cores 3.0.0 to 3.0.4 have.
+#if ESP_ARDUINO_VERSION >= ESP_ARDUINO_VERSION_VAL(3, 0, 5)
   rgbLedWrite(pin, r, g, b);
 #else
   neopixelWrite(pin, r, g, b);
