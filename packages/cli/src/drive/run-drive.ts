@@ -1,11 +1,11 @@
 // Runs one `hal drive` action: live pose on stderr while a motion runs, and Ctrl-C during a
 // motion stops the robot before the command ends. An open-ended `wheels` drive runs until Ctrl-C.
-import { HalError } from '@hal/types';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
+import { resultError } from '../result-error.js';
 import { aborted, sleep } from '../wait.js';
 import { callFor, isMotion } from './actions.js';
 import type { DriveAction } from './actions.js';
@@ -47,13 +47,6 @@ async function stopRobot(hal: HardwareAbstractionLayer): Promise<void> {
   clearTimeout(timer);
 }
 
-/** A failed result becomes the HAL's error (its code passes through to the exit). */
-function failure(result: HALToolResult): HalError {
-  return new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'the call failed', {
-    ...(result.details === undefined ? {} : { details: result.details }),
-  });
-}
-
 export async function runDrive(
   hal: HardwareAbstractionLayer,
   action: DriveAction,
@@ -62,7 +55,7 @@ export async function runDrive(
 ): Promise<DriveOutcome> {
   if (!isMotion(action)) {
     const result = await callFor(hal, action);
-    if (!result.success) throw failure(result);
+    if (!result.success) throw resultError(result);
     return { result, pose: await hal.locomotion.getPose(), stoppedByUser: false };
   }
   const done = new AbortController();
@@ -76,7 +69,7 @@ export async function runDrive(
       await Promise.race([call.catch(() => undefined), sleep(STOP_WAIT_MS, done.signal)]);
       throw new CliError('FAILED', 'interrupted: the robot was stopped', 130);
     }
-    if (!first.success) throw failure(first);
+    if (!first.success) throw resultError(first);
     const openEnded = action.kind === 'wheels' && action.durationMs === undefined;
     if (openEnded) {
       progress(io, global, 'driving; Ctrl-C stops the robot');
