@@ -112,11 +112,10 @@ describe('leader-follower mode (fast-clock simulators, wall-clock fleet)', () =>
       settleTimeoutMs: 5000,
     });
     expect((await hals[0]!.locomotion.moveForward(10)).success).toBe(true);
-    let timer: NodeJS.Timeout | undefined;
-    const report = await Promise.race([
-      formation.done,
-      new Promise<undefined>((resolve) => (timer = setTimeout(resolve, 4000))),
-    ]);
+    let giveUp = (): void => undefined;
+    const late = new Promise<undefined>((resolve) => (giveUp = () => resolve(undefined)));
+    const timer = setTimeout(() => giveUp(), 4000);
+    const report = await Promise.race([formation.done, late]);
     clearTimeout(timer);
     if (report === undefined) await formation.stop();
     expect(report?.reason).toBe('leader-stopped');
