@@ -96,4 +96,21 @@ describe('a robot that dies mid-drive', () => {
     const lines = err.split('\n').filter((l) => /x -?\d+\.\d{3} m/.test(l));
     expect(lines.at(-1)).toContain('predicted');
   });
+
+  it('drive wheels does not claim the stop on Ctrl-C once the robot is dead', async () => {
+    const { emulator, udp } = await emulated();
+    const io = captureIO();
+    const run = runHal(['drive', 'wheels', '200', '200', ...udp], io); // until Ctrl-C
+    await emulator.waitFor((e) => e.event === 'move_started', 10_000);
+    await emulator.kill();
+    io.abort();
+    const code = await within(run, 10_000, 'drive wheels after Ctrl-C');
+
+    expect(code).not.toBe(0);
+    const err = io.stderr();
+    expect(err).not.toMatch(/stopped on Ctrl-C|the robot was stopped/);
+    expect(io.stdout()).not.toContain('stopped on Ctrl-C');
+    expect(err).toContain('could not be told to stop');
+    expect(err).toContain(`host timeout (${HOST_TIMEOUT_MS} ms)`);
+  });
 });
