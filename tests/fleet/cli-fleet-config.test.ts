@@ -110,6 +110,55 @@ describe('hal fleet --config', () => {
     expect(bad.io.stderr()).toContain('hal: USAGE: --device cube-9: not in the config file');
   }, 30_000);
 
+  it('ends a leader-follower run of fast-clock simulated robots once the follower settles', async () => {
+    const fast = join(dir, 'fast-fleet.json');
+    await writeFile(
+      fast,
+      JSON.stringify({
+        devices: [
+          { type: 'simulated', id: 'sim-a', clock: 'fast' },
+          { type: 'simulated', id: 'sim-b', clock: 'fast', start: { x: -0.3, y: 0, yaw: 0 } },
+        ],
+      }),
+    );
+    const io = captureIO();
+    const run = runHal(
+      [
+        '--json',
+        'fleet',
+        'run',
+        '--config',
+        fast,
+        '--mode',
+        'leader-follower',
+        '--leader',
+        'sim-a',
+        '--command',
+        'forward:10',
+        '--settle-timeout-ms',
+        '5000',
+      ],
+      io,
+    );
+    // it used to stay at "followers settling..." for ever: give up (and stop it) after 15 s
+    let timer: NodeJS.Timeout | undefined;
+    const late = new Promise<'late'>(
+      (resolve) => (timer = setTimeout(() => resolve('late'), 15_000)),
+    );
+    const code = await Promise.race([run, late]);
+    clearTimeout(timer);
+    if (code === 'late') {
+      io.abort();
+      await run;
+    }
+    expect(code, io.stderr()).toBe(0);
+    const [doc] = io.jsonLines() as [
+      { formation: { reason: string; followers: { errorM: number }[] } },
+    ];
+    expect(doc.formation.reason).toBe('leader-stopped');
+    expect(doc.formation.followers[0]?.errorM).toBeLessThan(0.03);
+  }, 30_000);
+
   it('refuses a config file with its problems by path, and a missing one as NOT_FOUND', async () => {
     const invalid = join(dir, 'invalid.json');
     await writeFile(

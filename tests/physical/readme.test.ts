@@ -43,7 +43,10 @@ describe('the @hal/physical README', () => {
         (...values) => logged.push(values),
       );
       expect(logged[0]?.[0]).toBe(true);
-      expect(logged[0]?.[1]).toMatchObject({ position: { x: expect.closeTo(0.1, 3) } });
+      expect(logged[0]?.[1]).toMatchObject({
+        position: { x: expect.closeTo(0.1, 3) },
+        confirmed: true,
+      });
       expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
     } finally {
       await emulator.stop();

@@ -143,6 +143,8 @@ export class Fleet {
     }
     const formation = new LeaderFollower(this.members, options, this.scheduler, this.#logger);
     if (this.#formation?.running === true) await this.#formation.stop();
+    // where the leader starts, before the caller can command it
+    await formation.anchor();
     this.#formation = formation.start();
     return formation;
   }

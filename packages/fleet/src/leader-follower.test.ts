@@ -1,4 +1,4 @@
-import { World } from '@hal/simulation';
+import { SimulationHAL, World } from '@hal/simulation';
 import { describe, expect, it } from 'vitest';
 import { Fleet } from './fleet.js';
 import { formationOffsets } from './formation.js';
@@ -93,5 +93,33 @@ describe('leader-follower mode (simulated time)', () => {
       fleet.leaderFollower({ leader: 'r0', formation: { r1: { x: -0.2, y: 0 } }, periodMs: -1 }),
     ).rejects.toThrow(/periodMs/);
     expect(fleet.formation).toBeUndefined();
+  });
+});
+
+describe('leader-follower mode (fast-clock simulators, wall-clock fleet)', () => {
+  it('ends once the followers settle after a leader move that finishes before the first tick', async () => {
+    // the fast clock runs a whole motion inside the call: no tick ever sees the leader moving
+    const world = new World();
+    const hals = [0, -0.3].map(
+      (x, i) =>
+        new SimulationHAL({ world, clock: 'fast', deviceId: `f${i}`, start: { x, y: 0, yaw: 0 } }),
+    );
+    await Promise.all(hals.map((hal) => hal.initialize()));
+    const fleet = new Fleet(hals.map((hal, i) => ({ id: `f${i}`, hal })));
+    const formation = await fleet.leaderFollower({
+      leader: 'f0',
+      formation: formationOffsets('column', ['f1'], 0.3),
+      settleTimeoutMs: 5000,
+    });
+    expect((await hals[0]!.locomotion.moveForward(10)).success).toBe(true);
+    let giveUp = (): void => undefined;
+    const late = new Promise<undefined>((resolve) => (giveUp = () => resolve(undefined)));
+    const timer = setTimeout(() => giveUp(), 4000);
+    const report = await Promise.race([formation.done, late]);
+    clearTimeout(timer);
+    if (report === undefined) await formation.stop();
+    expect(report?.reason).toBe('leader-stopped');
+    expect(report?.followers[0]?.errorM).toBeLessThan(0.03);
+    await Promise.all(hals.map((hal) => hal.cleanup()));
   });
 });

@@ -109,6 +109,20 @@ export class LeaderFollower {
     return out;
   }
 
+  /**
+   * Reads where the leader starts from (bounded by `readTimeoutMs`), so that a motion commanded
+   * after this counts as the leader moving however fast it runs: a fast-clock simulator finishes
+   * a whole move inside the call, before any tick could see it under way. A failed read leaves
+   * the reference to the first tick.
+   */
+  async anchor(): Promise<void> {
+    try {
+      this.#noteLeader(await this.#read(this.#leader));
+    } catch (thrown) {
+      this.#logger.warn('no leader pose at the start', { error: toHalError(thrown).message });
+    }
+  }
+
   /** Starts the control loop (its first tick runs at once). */
   start(): this {
     this.#leaderMovedAt = this.#scheduler.now();

@@ -22,6 +22,11 @@ const zero = (value: number): number => (value === 0 ? 0 : value);
  * odometry (@hal/kinematics), in a frame anchored where the robot was when the HAL connected
  * (origin, facing +x). Between status replies it predicts the counters from the running motion's
  * step plan, the firmware's own planner, so `getPose()` is right while a motion runs.
+ *
+ * A predicted pose says so (`confirmed: false`), and so does any pose once the link is lost. The
+ * prediction never runs past the robot's host timeout after the robot was last heard from: by
+ * then a robot that hears nothing from the host has stopped by itself, and one that lost power
+ * stopped earlier still.
  */
 export class PoseTracker {
   #config: RobotConfig;
@@ -32,6 +37,9 @@ export class PoseTracker {
   #rightSps = 0;
   #uptimeMs = -1;
   #prediction: Prediction | undefined;
+  /** Host time of the robot's last reply, ms. */
+  #heardAt: number;
+  #linkUp = true;
   readonly #now: () => number;
   readonly #timeScale: number;
 
@@ -40,6 +48,7 @@ export class PoseTracker {
     this.#odometry = new OdometryIntegrator(config);
     this.#now = now;
     this.#timeScale = timeScale;
+    this.#heardAt = now();
   }
 
   /** Uses a new geometry from now on (the pose so far is kept). */
@@ -69,8 +78,25 @@ export class PoseTracker {
     this.#absorb(status);
   }
 
-  /** Keeps the pose in step with a successful reply. */
+  /** Host time of the robot's last reply, ms (construction time before any reply). */
+  get heardAt(): number {
+    return this.#heardAt;
+  }
+
+  /** The link to the robot was lost (false) or is up again (true). */
+  linkChanged(up: boolean): void {
+    this.#linkUp = up;
+  }
+
+  /** Keeps the pose in step with a successful reply (any reply: the robot was heard from). */
   observe(cmd: Command, data: Record<string, unknown>): void {
+    this.#heardAt = this.#now();
+    if (!this.#linkUp && (cmd === 'stop' || cmd === 'estop')) {
+      // a stop acknowledged while the link is down may come from a robot that restarted, whose
+      // counters began again: only the status after reconnecting (with its uptime) is integrated
+      this.motionStopped();
+      return;
+    }
     switch (cmd) {
       case 'get_status':
         this.update(data as unknown as StatusReply);
@@ -136,16 +162,20 @@ export class PoseTracker {
     this.#rightSps = 0;
   }
 
-  /** The pose now, REP-103, metres and radians. */
+  /** The pose now, REP-103, metres and radians; `confirmed: false` when it is predicted. */
   pose(): Pose {
     let pose = this.#odometry.pose;
     let leftSps = this.#leftSps;
     let rightSps = this.#rightSps;
     const p = this.#prediction;
     if (p !== undefined) {
+      // robot time since the motion started, up to the robot's host timeout after it was last heard
+      const robotUs = (hostMs: number) => hostMs * 1000 * this.#timeScale;
+      const silentCapUs = robotUs(this.#heardAt - p.startedAt) + this.#config.hostTimeoutMs * 1000;
       const elapsedUs = Math.min(
         p.capUs,
-        Math.min(p.plan.durationUs, (this.#now() - p.startedAt) * 1000 * this.#timeScale),
+        silentCapUs,
+        Math.min(p.plan.durationUs, robotUs(this.#now() - p.startedAt)),
       );
       const steps = p.plan.stepsAt(elapsedUs);
       const left = p.left + steps.left;
@@ -158,11 +188,14 @@ export class PoseTracker {
         const predicted = new OdometryIntegrator(this.#config, pose, this.#left, this.#right);
         pose = predicted.update(left, right);
         const v =
-          elapsedUs >= p.plan.durationUs ? { left: 0, right: 0 } : p.plan.velocityAt(elapsedUs);
+          elapsedUs >= p.plan.durationUs || elapsedUs >= silentCapUs
+            ? { left: 0, right: 0 }
+            : p.plan.velocityAt(elapsedUs);
         leftSps = v.left;
         rightSps = v.right;
       }
     }
+    const moving = p !== undefined || this.#leftSps !== 0 || this.#rightSps !== 0;
     const perCm = this.#config.stepsPerRevolution / (Math.PI * this.#config.wheelDiameterCm);
     const vl = leftSps / perCm / 100;
     const vr = rightSps / perCm / 100;
@@ -173,6 +206,7 @@ export class PoseTracker {
         linear: zero((vl + vr) / 2),
         angular: zero((vr - vl) / (this.#config.wheelBaseCm / 100)),
       },
+      confirmed: this.#linkUp && !moving,
     };
   }
 

@@ -224,6 +224,8 @@ export class Session {
       this.#lastRequestAt = performance.now();
       reply = await this.#options.transport.request(seq, bytes, lane);
     } catch (thrown) {
+      // unacknowledged for the lane's whole budget: the link is as lost as after any timeout
+      if (isHalError(thrown) && thrown.code === 'TIMEOUT') this.#lose(`no reply to "${cmd}"`);
       throw new HalError('NOT_CONNECTED', `the robot did not acknowledge "${cmd}"`, {
         cause: thrown,
         details: { command: cmd },

@@ -17,7 +17,11 @@ export const HAL_ERROR_CODES = [
   'TIMEOUT',
   /** The emergency stop is latched; motion is refused until it is reset. */
   'EMERGENCY_STOPPED',
-  /** There is no link to the robot (never connected, or the link was lost). */
+  /**
+   * There is no link to the robot (never connected, or the link was lost). From a motion call or
+   * `stop()`, `details.stopConfirmed` says whether the robot acknowledged a stop; `false` means it
+   * could not be told to stop, and only its own host timeout (`details.hostTimeoutMs`) stops it.
+   */
   'NOT_CONNECTED',
   /** The HAL has not been initialised, or has been cleaned up. */
   'NOT_READY',

@@ -10,6 +10,12 @@ export type Vector3 = z.infer<typeof Vector3Schema>;
 /**
  * Where the robot is, which way it faces and how fast it goes. Frame REP-103: x forward, y left,
  * z up; yaw counter-clockwise positive. Position in metres, angles in radians, yaw in (-pi, pi].
+ *
+ * `confirmed` says whether the robot itself vouches for the pose. A physical HAL dead-reckons
+ * between the robot's reports: while a motion runs, or once the link is lost, the pose is the
+ * host's prediction (`confirmed: false`), which a robot that lost power or stopped on its host
+ * timeout never reached. Show such a pose as predicted, never as measured. A simulator's pose is
+ * its own state and leaves the field out.
  */
 export const PoseSchema = z
   .object({
@@ -33,6 +39,15 @@ export const PoseSchema = z
         angular: finite.describe('rad/s, counter-clockwise positive'),
       })
       .describe('Current velocity'),
+    confirmed: z
+      .boolean()
+      .optional()
+      .describe(
+        'false: a prediction the robot has not confirmed (a motion in progress since its last ' +
+          'report, or a lost link, after which it may have stopped anywhere short of this); ' +
+          "true: the robot's last report, nothing predicted beyond it; absent: the HAL's own " +
+          'state (a simulator), with nothing to confirm',
+      ),
   })
   .describe('Robot pose, REP-103 frame');
 export type Pose = z.infer<typeof PoseSchema>;

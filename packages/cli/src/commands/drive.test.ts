@@ -42,6 +42,15 @@ describe('hal drive on the embedded simulator', () => {
     expect(wheels.pose.position.x).toBeGreaterThan(0.05);
   });
 
+  it("refuses a move-to beyond the simulated arena's walls, naming the limit, and moves nothing", async () => {
+    const io = captureIO();
+    expect(await runHal(['drive', 'move-to', '10', '10', ...fast], io)).toBe(1);
+    expect(io.stderr()).toMatch(
+      /hal: RANGE_EXCEEDED: moveTo target \(10, 10\) m is outside the 5 x 5 m arena: .*x within -2\.43\.\.2\.43 m/,
+    );
+    expect(io.stderr()).not.toMatch(/x \d+\.\d{3} m/); // no live pose: nothing moved
+  });
+
   it('prints the result and the pose for people', async () => {
     const io = captureIO();
     expect(await runHal(['drive', 'forward', '0.02', ...fast], io)).toBe(0);

@@ -2,6 +2,7 @@
 // terminal is put in raw mode and restored on every way out.
 import { Command, Option } from 'commander';
 import { integerArg } from '@hal/remote/cli';
+import { HalError } from '@hal/types';
 import { emit, progress } from '../io.js';
 import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
@@ -9,6 +10,7 @@ import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import { TELEOP_HELP } from '../teleop/keys.js';
 import { runTeleop } from '../teleop/session.js';
+import { withStatusLine } from '../teleop/status-line.js';
 import { requireTerminal, withRawMode } from '../teleop/terminal.js';
 import type { RegisterCommand } from './index.js';
 
@@ -36,14 +38,16 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
     const target = resolveTarget(options, io.env);
     const connect =
       options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+    // the HAL's warnings go above the live pose line, never onto it
+    const lineIO = withStatusLine(io);
     const summary = await withTarget(
       target,
-      io,
+      lineIO,
       { ...connect, json: global().json },
       ({ hal, deviceId }) => {
         progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
         return withRawMode(stdin, () =>
-          runTeleop(hal, stdin, io, global(), {
+          runTeleop(hal, stdin, lineIO, global(), {
             power: options.power,
             turnPower: options.turnPower,
           }),
@@ -56,6 +60,8 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
       { event: 'ended', ...summary },
       () => `final pose ${poseText(summary.pose)}`,
     );
+    // the robot did not acknowledge the stop: the HAL's error says so, and the exit is non-zero
+    if (!summary.stop.stopped) throw new HalError(summary.stop.code, summary.stop.error);
   });
   program.addCommand(command);
 };

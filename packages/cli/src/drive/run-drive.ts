@@ -1,11 +1,12 @@
 // Runs one `hal drive` action: live pose on stderr while a motion runs, and Ctrl-C during a
 // motion stops the robot before the command ends. An open-ended `wheels` drive runs until Ctrl-C.
-import { HalError } from '@hal/types';
+import { HalError, isHalError, toHalError } from '@hal/types';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
+import { resultError } from '../result-error.js';
 import { aborted, sleep } from '../wait.js';
 import { callFor, isMotion } from './actions.js';
 import type { DriveAction } from './actions.js';
@@ -38,20 +39,22 @@ async function livePose(
   }
 }
 
-async function stopRobot(hal: HardwareAbstractionLayer): Promise<void> {
+/**
+ * Stops the robot: undefined once it confirmed the stop, else the error saying why it did not
+ * (the HAL's own, or TIMEOUT after STOP_WAIT_MS). A stop is never claimed unconfirmed.
+ */
+async function stopRobot(hal: HardwareAbstractionLayer): Promise<HalError | undefined> {
   let timer: NodeJS.Timeout | undefined;
-  await Promise.race([
-    hal.locomotion.stop().catch(() => undefined),
-    new Promise((resolve) => (timer = setTimeout(resolve, STOP_WAIT_MS))),
+  const result = await Promise.race([
+    hal.locomotion.stop().catch((error: unknown) => toHalError(error)),
+    new Promise<undefined>((resolve) => (timer = setTimeout(resolve, STOP_WAIT_MS))),
   ]);
   clearTimeout(timer);
-}
-
-/** A failed result becomes the HAL's error (its code passes through to the exit). */
-function failure(result: HALToolResult): HalError {
-  return new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'the call failed', {
-    ...(result.details === undefined ? {} : { details: result.details }),
-  });
+  if (result === undefined) {
+    return new HalError('TIMEOUT', `the robot did not confirm the stop within ${STOP_WAIT_MS} ms`);
+  }
+  if (isHalError(result)) return result;
+  return result.success ? undefined : resultError(result);
 }
 
 export async function runDrive(
@@ -62,7 +65,7 @@ export async function runDrive(
 ): Promise<DriveOutcome> {
   if (!isMotion(action)) {
     const result = await callFor(hal, action);
-    if (!result.success) throw failure(result);
+    if (!result.success) throw resultError(result);
     return { result, pose: await hal.locomotion.getPose(), stoppedByUser: false };
   }
   const done = new AbortController();
@@ -72,16 +75,18 @@ export async function runDrive(
     const interrupted = aborted(io.signal).then(() => 'interrupted' as const);
     const first = await Promise.race([call, interrupted]);
     if (first === 'interrupted') {
-      await stopRobot(hal);
+      const unstopped = await stopRobot(hal);
+      if (unstopped !== undefined) throw unstopped;
       await Promise.race([call.catch(() => undefined), sleep(STOP_WAIT_MS, done.signal)]);
       throw new CliError('FAILED', 'interrupted: the robot was stopped', 130);
     }
-    if (!first.success) throw failure(first);
+    if (!first.success) throw resultError(first);
     const openEnded = action.kind === 'wheels' && action.durationMs === undefined;
     if (openEnded) {
       progress(io, global, 'driving; Ctrl-C stops the robot');
       await interrupted;
-      await stopRobot(hal);
+      const unstopped = await stopRobot(hal);
+      if (unstopped !== undefined) throw unstopped;
     }
     return { result: first, pose: await hal.locomotion.getPose(), stoppedByUser: openEnded };
   } finally {

@@ -1,12 +1,13 @@
 // Keyboard driving: each key becomes one HAL call, made in order; a live pose line on stderr.
 // A drive key sets an open-ended drive that runs until the next key (space stops it).
-import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
+import type { HalErrorCode, HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { emit, progress } from '../io.js';
-import type { CliIO, GlobalOptions } from '../io.js';
+import type { GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
 import { aborted, sleep } from '../wait.js';
 import { parseKeys } from './keys.js';
 import type { TeleopKey } from './keys.js';
+import type { StatusLineIO } from './status-line.js';
 import type { TerminalInput } from './terminal.js';
 
 export interface TeleopOptions {
@@ -19,8 +20,11 @@ export interface TeleopOptions {
 export interface TeleopSummary {
   /** The keys acted on, in order. */
   keys: TeleopKey[];
+  /** The pose at the end (`confirmed: false` when the robot could not confirm it). */
   pose: Pose;
   emergencyStopped: boolean;
+  /** The final stop: acknowledged by the robot, or the HAL's failed result saying why not. */
+  stop: { stopped: true } | { stopped: false; code: HalErrorCode; error: string };
 }
 
 const POSE_LINE_MS = 200;
@@ -51,12 +55,13 @@ function callFor(
 
 /**
  * Reads keys from `stdin` (already in raw mode) and drives `hal` until q, Ctrl-C, the end of
- * input or an abort of `io.signal`; then stops the robot.
+ * input or an abort of `io.signal`; then stops the robot, and reports whether it confirmed the
+ * stop (it is never said to be stopped when it did not).
  */
 export async function runTeleop(
   hal: HardwareAbstractionLayer,
   stdin: TerminalInput,
-  io: CliIO,
+  io: StatusLineIO,
   global: GlobalOptions,
   options: TeleopOptions,
 ): Promise<TeleopSummary> {
@@ -75,6 +80,7 @@ export async function runTeleop(
     if (global.json) emit(io, global, { key, result }, () => '');
   };
   const urgent: Promise<unknown>[] = [];
+  let stopped: HALToolResult;
   const onData = (chunk: Buffer | string): void => {
     for (const key of parseKeys(typeof chunk === 'string' ? chunk : chunk.toString('latin1'))) {
       if (key === 'quit') {
@@ -101,8 +107,9 @@ export async function runTeleop(
     while (!lineDone.signal.aborted && !global.json) {
       const pose = await hal.locomotion.getPose().catch(() => undefined);
       const estop = hal.safety.isEmergencyStopped() ? '  E-STOP' : '';
+      const link = hal.isReady() ? '' : '  LINK LOST';
       if (pose !== undefined && !lineDone.signal.aborted) {
-        io.err(`\r\x1b[K${poseText(pose)}  ${status}${estop}`);
+        io.showLine(`${poseText(pose)}  ${status}${estop}${link}`);
       }
       await sleep(POSE_LINE_MS, lineDone.signal);
     }
@@ -131,13 +138,32 @@ export async function runTeleop(
     await Promise.allSettled(urgent);
     lineDone.abort();
     await poseLine;
-    if (!global.json) io.err('\n');
-    await hal.locomotion.stop().catch(() => undefined);
+    io.endLine();
+    stopped = await hal.locomotion.stop().catch((error: unknown): HALToolResult => ({
+      success: false,
+      code: 'HARDWARE_ERROR',
+      error: `the stop failed: ${String(error)}`,
+      timestamp: Date.now(),
+      mode: hal.mode,
+    }));
   }
-  progress(io, global, 'teleop ended; the robot was stopped');
+  progress(
+    io,
+    global,
+    stopped.success
+      ? 'teleop ended; the robot was stopped'
+      : 'teleop ended; the robot did not confirm the stop',
+  );
   return {
     keys: acted,
     pose: await hal.locomotion.getPose(),
     emergencyStopped: hal.safety.isEmergencyStopped(),
+    stop: stopped.success
+      ? { stopped: true }
+      : {
+          stopped: false,
+          code: stopped.code ?? 'HARDWARE_ERROR',
+          error: stopped.error ?? 'the stop failed',
+        },
   };
 }

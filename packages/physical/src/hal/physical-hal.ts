@@ -38,6 +38,9 @@ import { SafetyCache } from './safety-cache.js';
 import { createSafety } from './safety.js';
 import { createVision } from './vision.js';
 
+/** How long a stop is resent once the link is known dead, ms. */
+const DEAD_LINK_STOP_MS = 300;
+
 /**
  * The HAL of the physical V1 stepper cube, spoken to over protocol 1.0 (docs/protocol.md) through
  * a UDP or serial transport. Every public call goes through the shared {@link HalBoundary}; a
@@ -268,14 +271,23 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     return session.command(cmd, params);
   }
 
-  /** Resend every 20 ms, within the same total budget as any other request. */
+  /**
+   * Resend every 20 ms, within the same total budget as any other request but never longer than
+   * the robot's host timeout: a robot that hears nothing from the host for that long stops by
+   * itself, so a longer wait only delays the news that it could not be told. Once the link is
+   * known dead (lost, or the robot silent for its host timeout) one short try is all there is.
+   */
   #safetyLane(): SafetyLaneTiming {
     if (this.#options.safetyLane !== undefined) return this.#options.safetyLane;
     const { timeoutMs, attempts } = this.#timing.request();
-    const totalMs =
+    const requestMs =
       timeoutMs === undefined || attempts === undefined
         ? DEFAULT_SAFETY_LANE.totalMs
         : timeoutMs * attempts;
+    const hostTimeoutMs = this.#timing.real(this.#robot.hostTimeoutMs);
+    const silentMs = performance.now() - this.#tracker.heardAt;
+    const dead = this.#session?.state === 'lost' || silentMs > hostTimeoutMs;
+    const totalMs = Math.min(requestMs, dead ? DEAD_LINK_STOP_MS : Math.max(hostTimeoutMs, 100));
     return { resendMs: DEFAULT_SAFETY_LANE.resendMs, totalMs };
   }
 
@@ -311,6 +323,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
 
   #linkChanged(state: SessionState, reason: string): void {
     this.#safety.linkChanged(state, reason);
+    this.#tracker.linkChanged(state === 'connected');
     if (state === 'lost') this.#log.warn('link lost', { reason });
   }
 }

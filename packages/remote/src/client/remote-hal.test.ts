@@ -1,5 +1,6 @@
 import { SimulationHAL } from '@hal/simulation';
 import { isHalError } from '@hal/types';
+import type { HardwareAbstractionLayer } from '@hal/types';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { WebSocketServer } from 'ws';
 import { serveHal } from '../server/index.js';
@@ -31,6 +32,32 @@ function remote(options: RemoteHALOptions): RemoteHAL {
 }
 
 describe('RemoteHAL', () => {
+  it("passes on a served HAL's mark that its pose is predicted, not confirmed", async () => {
+    const sim = new SimulationHAL();
+    await sim.initialize();
+    // a physical robot's HAL marks the pose it predicts after a lost link
+    const getPose = async () => ({ ...(await sim.locomotion.getPose()), confirmed: false });
+    const predicting: HardwareAbstractionLayer = {
+      mode: sim.mode,
+      locomotion: { ...sim.locomotion, getPose },
+      vision: sim.vision,
+      communication: sim.communication,
+      safety: sim.safety,
+      initialize: () => sim.initialize(),
+      cleanup: () => sim.cleanup(),
+      isReady: () => sim.isReady(),
+      getDeviceInfo: () => sim.getDeviceInfo(),
+    };
+    const server = await serveHal(predicting, { port: 0 });
+    cleanups.push(
+      () => sim.cleanup(),
+      () => server.close(),
+    );
+    const hal = remote({ url: server.url });
+    await hal.initialize();
+    expect((await hal.locomotion.getPose()).confirmed).toBe(false);
+  });
+
   it('answers isEmergencyStopped() synchronously from the streamed state when another client stops the robot', async () => {
     const { server } = await served({ stateRateHz: 50 });
     const driver = remote({ url: server.url });

@@ -3,6 +3,7 @@ import { stepsPerCm } from '@hal/types';
 import type { LocomotionInterface, Pose } from '@hal/types';
 import type { MotionReport } from '../robot/motion-report.js';
 import type { SimRobot } from '../robot/sim-robot.js';
+import { checkInsideArena } from './arena-bounds.js';
 import { awaitMotion, poseData } from './await-motion.js';
 import type { HalContext } from './context.js';
 
@@ -74,6 +75,7 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         // The same commands PhysicalHAL sends: turn toward the point, then straight moves
         // along the heading reached, each no longer than one command allows.
         const robot = ctx.robot();
+        checkInsideArena(ctx.world, robot, p.x, p.y);
         const sps = wheelSpeed(robot, p.speed);
         let dx = p.x - robot.x;
         let dy = p.y - robot.y;

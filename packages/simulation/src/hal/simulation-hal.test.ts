@@ -93,6 +93,18 @@ describe('SimulationHAL', () => {
       expect(result.code).toBe('RANGE_EXCEEDED');
       expect(hal.robot.leftSteps).toBe(0);
     });
+
+    it("refuses a target beyond the arena's walls with RANGE_EXCEEDED naming the limit, and does not move", async () => {
+      const hal = await ready(new SimulationHAL()); // the empty map: a 5 x 5 m arena
+      const result = await hal.locomotion.moveTo(10, 10, 0);
+      expect(result.code).toBe('RANGE_EXCEEDED');
+      expect(result.error).toContain('outside the 5 x 5 m arena');
+      expect(result.error).toContain('x within -2.43..2.43 m');
+      expect(result.details).toMatchObject({ parameter: 'x', limits: { x: [-2.43, 2.43] } });
+      expect([hal.robot.leftSteps, hal.robot.rightSteps]).toEqual([0, 0]);
+      // just inside the walls is still a target
+      expect((await hal.locomotion.moveTo(2.4, 0, 0)).success).toBe(true);
+    });
   });
 
   describe('#drive', () => {
