@@ -7,12 +7,11 @@ import { createSocket } from 'node:dgram';
 import type { Socket } from 'node:dgram';
 import { existsSync } from 'node:fs';
 import { createInterface } from 'node:readline';
-import { fileURLToPath } from 'node:url';
 import { World } from '@hal/simulation';
 import type { SimRobot } from '@hal/simulation';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { EMULATOR_PATH as EMULATOR } from '../physical/emulator.js';
 
-const EMULATOR = fileURLToPath(new URL('../../firmware/build/cube-emulator', import.meta.url));
 const TIME_SCALE = 20;
 
 type Command = Record<string, string | number>;
