@@ -1,0 +1,117 @@
+#!/usr/bin/env node
+// `hal` from a checkout (`pnpm hal ...`): runs packages/cli as one bundled file, which starts in a
+// fraction of the time the sources take through tsx. The bundle is rebuilt (esbuild, about a
+// second) when it is missing or when any file it was built from is newer than it; the list of
+// those files is esbuild's own metafile, so the check is exact and costs a few stat calls.
+// Packages with a native addon (serialport's bindings) stay outside the bundle, imported by the
+// absolute path resolved at build time, so their prebuilt binaries load as they always do.
+import { mkdirSync, readFileSync, renameSync, statSync, writeFileSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
+import process from 'node:process';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+// one folder below the CLI's package.json, as its src/ and dist/ are (it reads ../package.json)
+const outDir = join(root, 'packages', 'cli', '.bundle');
+const outFile = join(outDir, 'hal.js');
+const inputsFile = join(outDir, 'inputs.json');
+
+function mtimeMs(path) {
+  try {
+    return statSync(path).mtimeMs;
+  } catch {
+    return undefined;
+  }
+}
+
+/** True when the bundle exists and no file it was built from has changed since. */
+function isFresh() {
+  const built = mtimeMs(outFile);
+  if (built === undefined) return false;
+  let inputs;
+  try {
+    inputs = JSON.parse(readFileSync(inputsFile, 'utf8'));
+  } catch {
+    return false;
+  }
+  for (const input of inputs) {
+    const changed = mtimeMs(join(root, input));
+    if (changed === undefined || changed > built) return false;
+  }
+  return true;
+}
+
+/** True for a package with a native addon, found by its manifest (it loads files by path). */
+function isNative(resolvedFile) {
+  for (let dir = dirname(resolvedFile); dir !== dirname(dir); dir = dirname(dir)) {
+    let manifest;
+    try {
+      manifest = JSON.parse(readFileSync(join(dir, 'package.json'), 'utf8'));
+    } catch {
+      continue;
+    }
+    if (manifest.name === undefined) continue; // a nested {"type": "module"} marker
+    const deps = { ...manifest.dependencies, ...manifest.optionalDependencies };
+    return manifest.gypfile === true || NATIVE_LOADERS.some((name) => name in deps);
+  }
+  return false;
+}
+const NATIVE_LOADERS = ['node-gyp-build', 'node-addon-api', 'bindings', 'prebuild-install'];
+
+async function build() {
+  const esbuild = await import('esbuild');
+  const nativeOutside = {
+    name: 'native-outside',
+    setup(b) {
+      b.onResolve({ filter: /^[^./]/ }, async (args) => {
+        if (args.path.startsWith('node:') || args.pluginData === 'inner') return undefined;
+        const found = await b.resolve(args.path, {
+          kind: args.kind,
+          resolveDir: args.resolveDir,
+          importer: args.importer,
+          pluginData: 'inner',
+        });
+        if (found.errors.length > 0 || !isNative(found.path)) return undefined;
+        return { path: pathToFileURL(found.path).href, external: true };
+      });
+    },
+  };
+  const result = await esbuild.build({
+    entryPoints: [join(root, 'packages', 'cli', 'src', 'main.ts')],
+    outfile: outFile,
+    absWorkingDir: root,
+    write: false,
+    bundle: true,
+    platform: 'node',
+    format: 'esm',
+    target: 'node20',
+    conditions: ['@hal/source'],
+    plugins: [nativeOutside],
+    // CommonJS dependencies inside an ES module bundle still call require()
+    banner: {
+      js: "import { createRequire as halCreateRequire } from 'node:module';\nconst require = halCreateRequire(import.meta.url);",
+    },
+    metafile: true,
+    logLevel: 'error',
+  });
+  mkdirSync(outDir, { recursive: true });
+  // written aside and renamed, so a second `hal` starting meanwhile never runs half a file
+  const [output] = result.outputFiles;
+  const partial = `${outFile}.${process.pid}.tmp`;
+  writeFileSync(partial, output.contents);
+  renameSync(partial, outFile);
+  const inputs = Object.keys(result.metafile.inputs).filter((p) => !p.includes('node_modules'));
+  // the manifests too: a changed dependency or export map can change what gets bundled
+  const manifests = new Set(inputs.map((p) => p.replace(/\/src\/.*$/, '/package.json')));
+  writeFileSync(
+    `${inputsFile}.${process.pid}.tmp`,
+    JSON.stringify([...inputs, ...manifests, 'scripts/hal.js']),
+  );
+  renameSync(`${inputsFile}.${process.pid}.tmp`, inputsFile);
+}
+
+if (!isFresh()) {
+  process.stderr.write('hal: bundling packages/cli (its sources changed since the last run)\n');
+  await build();
+}
+await import(pathToFileURL(outFile).href);
