@@ -5,7 +5,17 @@
 // those files is esbuild's own metafile, so the check is exact and costs a few stat calls.
 // Packages with a native addon (serialport's bindings) stay outside the bundle, imported by the
 // absolute path resolved at build time, so their prebuilt binaries load as they always do.
-import { mkdirSync, readFileSync, renameSync, statSync, writeFileSync } from 'node:fs';
+import {
+  existsSync,
+  mkdirSync,
+  readFileSync,
+  realpathSync,
+  renameSync,
+  rmSync,
+  statSync,
+  symlinkSync,
+  writeFileSync,
+} from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import process from 'node:process';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -58,6 +68,28 @@ function isNative(resolvedFile) {
 }
 const NATIVE_LOADERS = ['node-gyp-build', 'node-addon-api', 'bindings', 'prebuild-install'];
 
+/**
+ * Links every third-party dependency of the bundled workspace packages into the bundle's own
+ * node_modules, so that what a package imports at run time by a name no bundler can see (the
+ * `ws` of @hal/remote, kept out of browser builds) resolves from the bundle as from the package.
+ */
+function linkDependencies(inputs) {
+  const modules = join(outDir, 'node_modules');
+  rmSync(modules, { recursive: true, force: true });
+  const packageDirs = new Set(inputs.map((p) => p.replace(/\/src\/.*$/, '')));
+  for (const dir of packageDirs) {
+    const manifest = JSON.parse(readFileSync(join(root, dir, 'package.json'), 'utf8'));
+    const names = Object.keys({ ...manifest.dependencies, ...manifest.optionalDependencies });
+    for (const name of names) {
+      const installed = join(root, dir, 'node_modules', name);
+      const link = join(modules, name);
+      if (name.startsWith('@hal/') || !existsSync(installed) || existsSync(link)) continue;
+      mkdirSync(dirname(link), { recursive: true });
+      symlinkSync(realpathSync(installed), link);
+    }
+  }
+}
+
 async function build() {
   const esbuild = await import('esbuild');
   const nativeOutside = {
@@ -101,6 +133,7 @@ async function build() {
   writeFileSync(partial, output.contents);
   renameSync(partial, outFile);
   const inputs = Object.keys(result.metafile.inputs).filter((p) => !p.includes('node_modules'));
+  linkDependencies(inputs);
   // the manifests too: a changed dependency or export map can change what gets bundled
   const manifests = new Set(inputs.map((p) => p.replace(/\/src\/.*$/, '/package.json')));
   writeFileSync(
