@@ -27,7 +27,8 @@ export interface MisplacedMarker {
 
 const FENCE = /^(\s*)(`{3,}|~{3,})\s*([\w-]*)/;
 const MARKER = /^\s*<!--\s*not run:\s*(.*?)\s*-->\s*$/;
-const ANY_MARKER = /<!--\s*not run\b/;
+// a comment line that looks like a marker (prose that quotes one in backticks is not)
+const ANY_MARKER = /^\s*<!--\s*not run\b/i;
 
 /** Every shell block of `markdown`, and every marker that belongs to none (or gives no reason). */
 export function shellBlocks(
@@ -38,12 +39,14 @@ export function shellBlocks(
   const blocks: ShellBlock[] = [];
   const misplaced: MisplacedMarker[] = [];
   const usedMarkers = new Set<number>();
+  const fenced = new Set<number>(); // lines inside any fenced block, whose text is an example
   for (let i = 0; i < lines.length; i += 1) {
     const open = FENCE.exec(lines[i]!);
     if (open === null) continue;
     const [, indent = '', fence = '', info = ''] = open;
     let end = i + 1;
     while (end < lines.length && !isClosing(lines[end]!, fence)) end += 1;
+    for (let j = i + 1; j < end; j += 1) fenced.add(j);
     const language = SHELL_LANGUAGES.find((l) => l === info.toLowerCase());
     if (language !== undefined) {
       const body = lines
@@ -63,7 +66,7 @@ export function shellBlocks(
     i = end;
   }
   lines.forEach((text, index) => {
-    if (ANY_MARKER.test(text) && !usedMarkers.has(index)) {
+    if (ANY_MARKER.test(text) && !usedMarkers.has(index) && !fenced.has(index)) {
       misplaced.push({ file, line: index + 1, text: text.trim() });
     }
   });
