@@ -31,6 +31,7 @@ __doc_stop() {
     fi
   done
   for pid in "${'${'}__doc_pids[@]}" $(jobs -p); do kill -KILL -- "-$pid" 2>/dev/null || true; done
+  wait 2>/dev/null || true # reap them: nothing outlives the block, not even as a zombie
   return $status
 }
 trap '__doc_code=$?; __doc_stop || __doc_code=1; exit $__doc_code' EXIT

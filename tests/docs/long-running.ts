@@ -44,14 +44,38 @@ export const LONG_RUNNING: readonly LongRunning[] = [
     defaultPorts: [3333],
   },
   {
+    name: 'hal emulate',
+    command: new RegExp(String.raw`^${hal} (?:--json )?emulate\b`),
+    ready: '"event":"announced"',
+  },
+  {
+    name: 'cube-emulator',
+    command: /^\S*cube-emulator\b/,
+    ready: '"event":"ready"',
+    defaultPorts: [4210],
+  },
+  {
+    name: 'nats-server',
+    command: /^nats-server\b/,
+    ready: 'Server is ready',
+    defaultPorts: [4222],
+  },
+  {
     name: 'the browser demo (vite)',
     command: /^pnpm (?:start|--filter @hal\/sim-demo start)\s*(?:#.*)?$/,
     ready: String.raw`http://(127\.0\.0\.1|localhost):[0-9]+`,
   },
 ];
 
-/** The long-running command `line` is, if any. */
+/**
+ * The long-running command `line` is, if any. A line the block itself puts in the background
+ * (ending in `&`) is left as written: the block's end stops it all the same.
+ */
 export function longRunning(line: string): LongRunning | undefined {
-  const command = line.trim().replace(/^(?:[A-Z_][A-Z0-9_]*=\S*\s+)+/, '');
+  const command = line
+    .replace(/\s+#.*$/, '')
+    .trim()
+    .replace(/^(?:[A-Z_][A-Z0-9_]*=\S*\s+)+/, '');
+  if (/[^&]&$/.test(command)) return undefined;
   return LONG_RUNNING.find((entry) => entry.command.test(command));
 }

@@ -94,6 +94,10 @@ describe('longRunning', () => {
     expect(longRunning('pnpm hal status --sim')).toBeUndefined();
     expect(longRunning('pnpm test')).toBeUndefined();
     expect(longRunning('bash scripts/setup.sh && pnpm start')).toBeUndefined();
+    expect(
+      longRunning('firmware/build/cube-emulator --udp-port 4210 &   # in the background'),
+    ).toBeUndefined();
+    expect(longRunning("'/b'/cube-emulator --udp-port 4210")?.name).toBe('cube-emulator');
   });
 });
 
@@ -133,9 +137,9 @@ describe('blockScript', () => {
 
   it('points firmware/build/cube-emulator at CUBE_BUILD_DIR when that is set', () => {
     const script = blockScript(
-      { language: 'sh', text: 'firmware/build/cube-emulator --help' },
+      { language: 'sh', text: 'ls -l firmware/build/cube-emulator' },
       '/b',
     );
-    expect(script).toContain("'/b'/cube-emulator --help");
+    expect(script).toContain("ls -l '/b'/cube-emulator");
   });
 });
