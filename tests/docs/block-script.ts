@@ -16,6 +16,9 @@ export const STOP_TIMEOUT_S = 10;
 
 const PRELUDE = String.raw`set -eo pipefail
 set -m  # job control: every background job has its own process group, stopped as one
+# the block's commands read an empty input (one that waits for input ends, not hangs); the
+# long-running ones keep the test's open pipe (fd 3): a stdio server ends when its input does
+exec 3<&0 </dev/null
 __doc_pids=()
 __doc_stop() {
   local status=0 pid i
@@ -40,9 +43,9 @@ __doc_start() {
   local log pid i
   log=$(mktemp)
   if [ "$3" = 1 ]; then
-    script -qefc "$4" /dev/null >"$log" 2>&1 &
+    script -qefc "$4" /dev/null <&3 >"$log" 2>&1 &
   else
-    eval "$4" >"$log" 2>&1 &
+    eval "$4" <&3 >"$log" 2>&1 &
   fi
   pid=$!
   __doc_pids+=("$pid")

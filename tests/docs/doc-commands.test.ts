@@ -96,7 +96,7 @@ function runBlock(block: ShellBlock): Promise<Outcome> {
     child.stdout.on('data', (chunk: Buffer) => (output += chunk.toString()));
     child.stderr.on('data', (chunk: Buffer) => (output += chunk.toString()));
     const timer = setTimeout(() => {
-      output += `\ndoc-test: the block did not finish within ${BLOCK_TIMEOUT_S} s; if it starts a server, add it to tests/docs/long-running.ts`;
+      output += `\ndoc-test: the block did not finish within ${BLOCK_TIMEOUT_S} s. A server: add its ready line to tests/docs/long-running.ts; a command that needs a person at the keyboard: mark the block <!-- not run: REASON -->`;
       child.kill('SIGTERM'); // its EXIT trap stops what it started
       setTimeout(() => {
         if (child.pid !== undefined && child.exitCode === null) process.kill(-child.pid, 'SIGKILL');
