@@ -23,6 +23,7 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import { requireEmulator } from '../physical/emulator.js';
 import { blockPorts, blockScript } from './block-script.js';
 import { shellBlocks } from './shell-blocks.js';
 import type { ShellBlock } from './shell-blocks.js';
@@ -120,6 +121,8 @@ beforeAll(async () => {
   });
   if (warm.status !== 0) throw new Error(`scripts/hal.js --version failed: ${warm.stderr}`);
   if (runnable.some((b) => b.text.includes(NATS_URL))) await startNatsServer({ port: 4222 });
+  // a clear message, naming the build command, rather than a block failing on a missing file
+  if (runnable.some((b) => b.text.includes('firmware/build/cube-emulator'))) requireEmulator();
 }, 150_000);
 
 afterAll(async () => {
