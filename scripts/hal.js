@@ -9,9 +9,9 @@ import {
   existsSync,
   mkdirSync,
   readFileSync,
+  readlinkSync,
   realpathSync,
   renameSync,
-  rmSync,
   statSync,
   symlinkSync,
   writeFileSync,
@@ -74,18 +74,32 @@ const NATIVE_LOADERS = ['node-gyp-build', 'node-addon-api', 'bindings', 'prebuil
  * `ws` of @hal/remote, kept out of browser builds) resolves from the bundle as from the package.
  */
 function linkDependencies(inputs) {
+  // a link is only added or repointed, never removed first: a `hal` already running may be
+  // resolving through them. The first package to name a dependency decides its version.
   const modules = join(outDir, 'node_modules');
-  rmSync(modules, { recursive: true, force: true });
   const packageDirs = new Set(inputs.map((p) => p.replace(/\/src\/.*$/, '')));
+  const linked = new Set();
   for (const dir of packageDirs) {
     const manifest = JSON.parse(readFileSync(join(root, dir, 'package.json'), 'utf8'));
     const names = Object.keys({ ...manifest.dependencies, ...manifest.optionalDependencies });
     for (const name of names) {
       const installed = join(root, dir, 'node_modules', name);
+      if (name.startsWith('@hal/') || linked.has(name) || !existsSync(installed)) continue;
+      linked.add(name);
+      const target = realpathSync(installed);
       const link = join(modules, name);
-      if (name.startsWith('@hal/') || !existsSync(installed) || existsSync(link)) continue;
+      let current;
+      try {
+        current = readlinkSync(link);
+      } catch {
+        current = undefined;
+      }
+      if (current === target) continue;
       mkdirSync(dirname(link), { recursive: true });
-      symlinkSync(realpathSync(installed), link);
+      // written aside and renamed over the old one (a dangling link after an upgrade)
+      const partial = `${link}.${process.pid}.tmp`;
+      symlinkSync(target, partial);
+      renameSync(partial, link);
     }
   }
 }
