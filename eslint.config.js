@@ -2,7 +2,16 @@ import js from '@eslint/js';
 import tseslint from 'typescript-eslint';
 
 export default tseslint.config(
-  { ignores: ['**/dist/**', '**/node_modules/**', 'firmware/**', 'artifacts/**', '**/build/**'] },
+  {
+    ignores: [
+      '**/dist/**',
+      '**/.bundle/**',
+      '**/node_modules/**',
+      'firmware/**',
+      'artifacts/**',
+      '**/build/**',
+    ],
+  },
   js.configs.recommended,
   ...tseslint.configs.recommended,
   {

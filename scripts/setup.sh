@@ -17,6 +17,7 @@ apt_packages=(
   chromium # the browser demo's end-to-end test
   socat # serial link tools: the docs' smoke checks and the serial fault-injection test
   nats-server # the NATS broker the gateway tests and the NATS benchmark start on 127.0.0.1
+  openssl # the docs' key and token commands (openssl rand), run by the doc-commands test
 )
 
 missing=()

@@ -12,6 +12,10 @@
 #     CXX     a C++ compiler (g++, arm-none-eabi-g++)
 #     TARGET  stepper-keyed   the cube sketch with a 32-byte key
 #             stepper-open    the cube sketch, no key, unauthenticated opt-out
+#             stepper-led38   the keyed cube sketch for a v1.1 board (LED on
+#                             GPIO38, through src/board_options.h)
+#             stepper-led-on-motor  the same with the LED on a motor pin, which
+#                             must fail (BoardCheck.RefusesAnLedOnAMotorPin)
 #             camera-default  the camera sketch, no token, no CORS origin
 #             camera-token    the camera sketch with a token and an origin
 #     selftest:VARIANT FILE   one file of board-check/selftest/ with the same
@@ -76,7 +80,7 @@ cp -R "$here/$sketch" "$tmp/$sketch"
   echo "#define CAM_WIFI_SSID \"check-network\""
   echo "#define CAM_WIFI_PASSWORD \"check-password\""
   case $target in
-    stepper-keyed)
+    stepper-keyed|stepper-led38|stepper-led-on-motor)
       echo "#define CUBE_KEY_HEX \"000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f\"" ;;
     stepper-open)
       echo "#define CUBE_KEY_HEX \"\""
@@ -89,6 +93,11 @@ cp -R "$here/$sketch" "$tmp/$sketch"
       echo "#define CAM_ALLOW_ORIGIN \"http://192.168.1.20:5173\"" ;;
   esac
 } > "$tmp/$sketch/$secrets"
+rm -f "$tmp/$sketch/src/board_options.h" # a maker's own options never change the check
+case $target in
+  stepper-led38) echo "#define CUBE_RGB_LED_PIN 38" > "$tmp/$sketch/src/board_options.h" ;;
+  stepper-led-on-motor) echo "#define CUBE_RGB_LED_PIN 5" > "$tmp/$sketch/src/board_options.h" ;;
+esac
 
 # The .ino as arduino-cli's preprocessing presents it: <Arduino.h> first.
 printf '#include <Arduino.h>\n#include "%s.ino"\n' "$sketch" > "$tmp/$sketch/$sketch.ino.cpp"

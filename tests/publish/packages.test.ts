@@ -13,7 +13,7 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { bundleForBrowser, isNativePackage, packageDirOf } from './browser-bundle.js';
-import { installApp, packedFiles, packedManifest, runNodeApp } from './temp-app.js';
+import { installApp, packedFiles, packedManifest, runAppCommand, runNodeApp } from './temp-app.js';
 import type { Manifest, PackedPackage, WorkspacePackage } from './workspace-packages.js';
 import { build, packAll, staleBuilds, workspacePackages } from './workspace-packages.js';
 
@@ -116,6 +116,23 @@ describe('the packages as published', () => {
       );
       expect(testFiles, name).toEqual([]);
     }
+  });
+
+  it("installs the packages' commands (hal, hal-mcp, hal-serve), which run from the app", async () => {
+    const bins = published.flatMap(({ manifest }) =>
+      typeof manifest.bin === 'string'
+        ? [manifest.name.replace(/^@[^/]+\//, '')]
+        : Object.keys(manifest.bin ?? {}),
+    );
+    expect(bins).toEqual(expect.arrayContaining(['hal', 'hal-mcp', 'hal-serve']));
+    for (const bin of bins) {
+      const { stdout, stderr } = await runAppCommand(appDir, bin, ['--help']);
+      expect(stdout + stderr, bin).toMatch(/Usage: /);
+    }
+    const status = await runAppCommand(appDir, 'hal', ['--json', 'status', '--sim']);
+    expect(JSON.parse(status.stdout.split('\n')[0]!)).toMatchObject({
+      device: { mode: 'simulation' },
+    });
   });
 
   it('imports each package by name from its dist in plain Node and drives SimulationHAL 10 cm forward', async () => {

@@ -9,7 +9,7 @@ import type { Manifest, PackedPackage } from './workspace-packages.js';
 const run = promisify(execFile);
 
 /** The environment for child processes, without what pnpm and vitest put into it. */
-function cleanEnv(): NodeJS.ProcessEnv {
+export function cleanEnv(): NodeJS.ProcessEnv {
   const env: NodeJS.ProcessEnv = {};
   for (const [key, value] of Object.entries(process.env)) {
     const fromPnpm =
@@ -100,4 +100,17 @@ export async function runNodeApp(appDir: string, names: readonly string[]): Prom
     timeout: 60_000,
   });
   return JSON.parse(stdout) as NodeAppReport;
+}
+
+/** Runs a command the app's packages installed (node_modules/.bin/NAME) in the app. */
+export async function runAppCommand(
+  appDir: string,
+  name: string,
+  args: readonly string[],
+): Promise<{ stdout: string; stderr: string }> {
+  return run(join(appDir, 'node_modules', '.bin', name), [...args], {
+    cwd: appDir,
+    env: cleanEnv(),
+    timeout: 60_000,
+  });
 }

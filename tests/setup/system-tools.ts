@@ -121,6 +121,12 @@ export const SYSTEM_TOOLS: readonly SystemTool[] = [
     package: 'nats-server',
     why: 'the NATS broker the gateway tests and bench/nats.bench.ts start on 127.0.0.1',
   },
+  {
+    kind: 'command',
+    name: 'openssl',
+    package: 'openssl',
+    why: "the docs' key and token commands (openssl rand), run by tests/docs/doc-commands.test.ts",
+  },
 ];
 
 /**

@@ -25,6 +25,20 @@ describe('parseCli', () => {
     });
   });
 
+  it('accepts the "--" that pnpm passes on before the options (pnpm start -- --map obstacles)', () => {
+    expect(parseCli(['--', '--map', 'obstacles'], quiet)).toMatchObject({ map: 'obstacles' });
+    expect(parseCli(['--', '--http'], quiet)).toMatchObject({ http: true });
+    expect(parseCli(['--', '--udp', '10.0.0.5', '--key', 'abcd'], quiet)).toMatchObject({
+      udp: '10.0.0.5',
+      key: 'abcd',
+    });
+  });
+
+  it('still refuses arguments that are not options', () => {
+    expect(() => parseCli(['obstacles'], quiet)).toThrow(CommanderError);
+    expect(() => parseCli(['--', 'obstacles'], quiet)).toThrow(CommanderError);
+  });
+
   it('turns leash options into a leash', () => {
     expect(
       parseCli(['--max-distance', '0.5', '--max-speed', '0.02', '--geofence', '-1,1,-2,2'], quiet)

@@ -77,14 +77,17 @@ function command(): Command {
     });
 }
 
-/** Parses the command line (`argv` without node and the script). Throws on bad options. */
+/**
+ * Parses the command line (`argv` without node and the script). Throws on bad options. A leading
+ * `--` is dropped: `pnpm --filter @hal/mcp start -- --map obstacles` passes it on, and hal-mcp
+ * takes no positional arguments it could separate.
+ */
 export function parseCli(
   argv: readonly string[],
   env: NodeJS.ProcessEnv = process.env,
 ): CliOptions {
-  const o = command()
-    .parse([...argv], { from: 'user' })
-    .opts<Record<string, unknown>>();
+  const args = argv[0] === '--' ? argv.slice(1) : [...argv];
+  const o = command().parse(args, { from: 'user' }).opts<Record<string, unknown>>();
   const key = (o['key'] as string | undefined) ?? env['HAL_KEY'];
   const token = (o['token'] as string | undefined) ?? env['HAL_MCP_TOKEN'];
   const leash: Leash = {};

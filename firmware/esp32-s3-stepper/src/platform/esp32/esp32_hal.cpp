@@ -42,9 +42,9 @@ void IRAM_ATTR Esp32Motors::WriteCoils(Wheel wheel, uint8_t pattern) {
 
 void Esp32Led::SetRgb(uint8_t r, uint8_t g, uint8_t b) {
 #if defined(RGB_BUILTIN)
-  const uint8_t pin = RGB_BUILTIN;
+  const uint8_t pin = board::kRgbLedPinSet ? board::kRgbLedPin : RGB_BUILTIN;
 #else
-  const uint8_t pin = board::kRgbLedPinDefault;
+  const uint8_t pin = board::kRgbLedPin;
 #endif
   // rgbLedWrite arrived in core 3.0.5, which deprecated neopixelWrite, the
   // name cores 3.0.0 to 3.0.4 have.
