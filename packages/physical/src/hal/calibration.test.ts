@@ -1,0 +1,94 @@
+import { describe, expect, it } from 'vitest';
+import { MockRobot } from '../mock/mock-robot.js';
+import type { WheelCalibration } from './calibration.js';
+import { PhysicalHAL } from './physical-hal.js';
+import type { PhysicalHALOptions } from './options.js';
+
+const TIME_SCALE = 50;
+const MEASURED: WheelCalibration = { wheelDiameterCm: 6.6, wheelBaseCm: 10.4 };
+
+function rig(options: PhysicalHALOptions = {}): { robot: MockRobot; hal: PhysicalHAL } {
+  const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000, deviceId: 'cube-7' });
+  const hal = new PhysicalHAL(
+    { mode: 'physical', deviceId: 'cube-7' },
+    { transport: robot.transport(), timeScale: TIME_SCALE, reconnectIntervalMs: 10, ...options },
+  );
+  return { robot, hal };
+}
+
+const commands = (robot: MockRobot) => robot.requests.map((r) => r['cmd']);
+const setConfigs = (robot: MockRobot) => robot.requests.filter((r) => r['cmd'] === 'set_config');
+
+describe('PhysicalHAL calibration', () => {
+  it('sends the calibration of the device its hello names with set_config, right after hello', async () => {
+    const asked: string[] = [];
+    const { robot, hal } = rig({
+      calibration: (deviceId) => {
+        asked.push(deviceId);
+        return MEASURED;
+      },
+    });
+    await hal.initialize();
+    expect(asked).toEqual(['cube-7']);
+    expect(commands(robot).slice(0, 3)).toEqual(['hello', 'set_config', 'get_status']);
+    expect(setConfigs(robot)[0]).toMatchObject({ wheel_diameter_cm: 6.6, wheel_base_cm: 10.4 });
+    expect(hal.robotConfig).toMatchObject({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
+    await hal.cleanup();
+  });
+
+  it('dead-reckons with the calibrated wheels: 10 cm is 1975 steps of a 6.6 cm wheel', async () => {
+    const { robot, hal } = rig({ calibration: () => MEASURED });
+    await hal.initialize();
+    const result = await hal.locomotion.moveForward(10);
+    expect(result.success, JSON.stringify(result)).toBe(true);
+    expect(robot.position).toEqual({ left: 1975, right: 1975 });
+    const pose = await hal.locomotion.getPose();
+    expect(pose.position.x).toBeCloseTo(0.1, 3);
+    await hal.cleanup();
+  });
+
+  it('sends the calibration again after the robot restarts and the HAL says hello again', async () => {
+    const { robot, hal } = rig({ calibration: () => MEASURED });
+    await hal.initialize();
+    robot.restart();
+    expect((await hal.locomotion.moveForward(1)).code).toBe('NOT_CONNECTED');
+    await expect.poll(() => setConfigs(robot).length, { timeout: 5000 }).toBe(2);
+    const hellos = commands(robot).filter((c) => c === 'hello').length;
+    expect(hellos).toBe(2);
+    await hal.cleanup();
+  });
+
+  it('sends nothing when the source has no calibration for the robot', async () => {
+    const { robot, hal } = rig({ calibration: () => undefined });
+    await hal.initialize();
+    expect(setConfigs(robot)).toHaveLength(0);
+    expect(hal.robotConfig.wheelDiameterCm).toBe(6);
+    await hal.cleanup();
+  });
+
+  it('fails initialize with RANGE_EXCEEDED naming the field and its range, sending nothing', async () => {
+    const { robot, hal } = rig({ calibration: () => ({ wheelDiameterCm: 60, wheelBaseCm: 10 }) });
+    const failed = hal.initialize();
+    await expect(failed).rejects.toMatchObject({
+      code: 'RANGE_EXCEEDED',
+      message: expect.stringMatching(
+        /"wheel_diameter_cm" must be a number in 0\.5\.\.50 cm, got 60/,
+      ),
+    });
+    expect(setConfigs(robot)).toHaveLength(0);
+  });
+
+  it('applies a calibration now and keeps sending it after later hellos', async () => {
+    const { robot, hal } = rig();
+    await hal.initialize();
+    const config = await hal.applyCalibration({ wheelDiameterCm: 5.8, wheelBaseCm: 9.7 });
+    expect(config).toMatchObject({ wheelDiameterCm: 5.8, wheelBaseCm: 9.7 });
+    robot.restart();
+    await expect.poll(() => setConfigs(robot).length, { timeout: 5000 }).toBe(2);
+    expect(setConfigs(robot)[1]).toMatchObject({ wheel_diameter_cm: 5.8, wheel_base_cm: 9.7 });
+    await expect(
+      hal.applyCalibration({ wheelDiameterCm: Number.NaN, wheelBaseCm: 9 }),
+    ).rejects.toMatchObject({ code: 'RANGE_EXCEEDED', message: expect.stringMatching(/got NaN/) });
+    await hal.cleanup();
+  });
+});
