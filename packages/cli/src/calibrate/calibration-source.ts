@@ -1,0 +1,53 @@
+// Which calibration a robot-facing command uses: the file `--calibration` names, else the
+// robot's own file in the calibration directory (looked up by the device id its hello reports).
+import type { CalibrationSource, WheelCalibration } from '@hal/physical';
+import type { RobotConfig } from '@hal/types';
+import { HalError } from '@hal/types';
+import {
+  calibrationDir,
+  calibrationOf,
+  calibrationPath,
+  readCalibrationFile,
+} from './calibration-file.js';
+
+type Env = Readonly<Record<string, string | undefined>>;
+
+/** The calibration in the file at `path`; INVALID_PARAMETER when there is none or it is corrupt. */
+async function namedFile(path: string): Promise<{ deviceId: string; values: WheelCalibration }> {
+  const file = await readCalibrationFile(path);
+  if (file === undefined) {
+    throw new HalError('INVALID_PARAMETER', `calibration file ${path} does not exist`, {
+      details: { parameter: 'calibration', path },
+    });
+  }
+  return { deviceId: file.deviceId, values: calibrationOf(file) };
+}
+
+/**
+ * The source PhysicalHAL asks after each hello: `file` when given (refused for another robot),
+ * else the robot's own file in {@link calibrationDir}, or none when it has no file.
+ */
+export function calibrationSource(file: string | undefined, env: Env): CalibrationSource {
+  if (file !== undefined) {
+    return async (deviceId) => {
+      const named = await namedFile(file);
+      if (named.deviceId !== deviceId) {
+        throw new HalError(
+          'INVALID_PARAMETER',
+          `calibration file ${file} is for robot ${named.deviceId}, not for ${deviceId}`,
+          { details: { parameter: 'calibration', path: file } },
+        );
+      }
+      return named.values;
+    };
+  }
+  return async (deviceId) => {
+    const found = await readCalibrationFile(calibrationPath(calibrationDir(env), deviceId));
+    return found === undefined ? undefined : calibrationOf(found);
+  };
+}
+
+/** The simulator's robot geometry from the file at `path` (`--sim --calibration`). */
+export async function simulatedGeometry(path: string): Promise<Partial<RobotConfig>> {
+  return (await namedFile(path)).values;
+}

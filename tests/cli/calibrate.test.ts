@@ -1,0 +1,226 @@
+// `hal calibrate` against the emulated robot (the firmware core as a process): the robot drives
+// the straight line and the turn, takes the computed geometry with set_config, and every later
+// session (a new process of the emulator, which forgets its RAM) gets it again after hello.
+import { mkdtemp, readFile, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { calibrationSource, runHal } from '@hal/cli';
+import { PhysicalHAL } from '@hal/physical';
+import { afterAll, afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { fakeTty } from '../../packages/cli/src/teleop/fake-tty.fixture.js';
+import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import type { Emulator, EmulatorEvent } from '../physical/emulator.js';
+import { captureIO } from './capture-io.js';
+
+const TIME_SCALE = 10;
+const DEVICE = 'cube-calib';
+/** The steps the firmware makes for `cm` on wheels of `diameterCm` (4096 steps a turn). */
+const stepsFor = (cm: number, diameterCm: number) =>
+  Math.round((cm * 4096) / (Math.PI * diameterCm));
+
+let dir: string;
+let env: Record<string, string>;
+beforeEach(async () => {
+  dir = await mkdtemp(join(tmpdir(), 'hal-calibrate-'));
+  env = { HAL_CALIBRATION_DIR: dir };
+});
+afterEach(async () => {
+  await stopAllEmulators();
+  await rm(dir, { recursive: true, force: true });
+});
+afterAll(stopAllEmulators);
+
+const emulated = () => startEmulator({ timeScale: TIME_SCALE, deviceId: DEVICE, pty: false });
+const udpOf = (e: Emulator) => [
+  '--udp',
+  `127.0.0.1:${e.udpPort}`,
+  '--time-scale',
+  String(TIME_SCALE),
+];
+const movesSince = (e: Emulator, from: number): EmulatorEvent[] =>
+  e.events.slice(from).filter((event) => event.event === 'move_started');
+
+interface CalibrateDoc {
+  deviceId: string;
+  before: { wheelDiameterCm: number; wheelBaseCm: number };
+  after: { wheelDiameterCm: number; wheelBaseCm: number };
+  straight: { leftSteps: number; rightSteps: number };
+  file: string;
+}
+
+describe('hal calibrate on the emulated robot', () => {
+  it('computes the geometry from the measured line and turn, sends it and saves it', async () => {
+    const emulator = await emulated();
+    const io = captureIO(env);
+    const code = await runHal(
+      [
+        '--json',
+        'calibrate',
+        ...udpOf(emulator),
+        '--measured-distance-cm',
+        '102',
+        '--measured-turn-deg',
+        '350',
+      ],
+      io,
+    );
+    expect(code, io.stderr()).toBe(0);
+    const doc = io.jsonLines()[0] as CalibrateDoc;
+    // the robot drove 100 cm on nominal 6 cm wheels: 21729 steps; measured 102 cm, so 6.12 cm
+    const moves = movesSince(emulator, 0);
+    expect(moves.map((m) => [m['left_steps'], m['right_steps']])).toEqual([
+      [21729, 21729],
+      [-6826, 6827],
+    ]);
+    const diameter = (102 * 4096) / (Math.PI * 21729);
+    const base = (360 * 6826.5 * diameter) / (4096 * 350);
+    expect(doc.before).toMatchObject({ wheelDiameterCm: 6, wheelBaseCm: 10 });
+    expect(doc.after.wheelDiameterCm).toBeCloseTo(diameter, 3);
+    expect(doc.after.wheelBaseCm).toBeCloseTo(base, 3);
+    expect(doc.file).toBe(join(dir, `${DEVICE}.json`));
+    const saved = JSON.parse(await readFile(doc.file, 'utf8')) as Record<string, unknown>;
+    expect(saved).toMatchObject({
+      version: 1,
+      deviceId: DEVICE,
+      wheelDiameterCm: doc.after.wheelDiameterCm,
+      wheelBaseCm: doc.after.wheelBaseCm,
+    });
+
+    // the robot holds them: a session that sends nothing hears them in the robot's own hello
+    const plain = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: DEVICE,
+        connection: { type: 'wifi', host: '127.0.0.1', udpPort: emulator.udpPort },
+      },
+      { timeScale: TIME_SCALE },
+    );
+    await plain.initialize();
+    expect(plain.identity?.config).toMatchObject({
+      wheel_diameter_cm: doc.after.wheelDiameterCm,
+      wheel_base_cm: doc.after.wheelBaseCm,
+    });
+    // and drives with them: 50 cm is fewer steps on the larger wheel
+    const before = emulator.events.length;
+    expect((await plain.locomotion.moveForward(50)).success).toBe(true);
+    expect(movesSince(emulator, before)[0]).toMatchObject({
+      left_steps: stepsFor(50, doc.after.wheelDiameterCm),
+    });
+    await plain.cleanup();
+  });
+
+  it('sends the saved calibration after hello to a robot that restarted and forgot it', async () => {
+    const first = await emulated();
+    const calibrated = await runHal(
+      ['calibrate', ...udpOf(first), '--measured-distance-cm', '97', '--measured-turn-deg', '372'],
+      captureIO(env),
+    );
+    expect(calibrated).toBe(0);
+    await first.stop();
+
+    // a new robot process: its RAM holds the firmware defaults again
+    const robot = await emulated();
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: DEVICE,
+        connection: { type: 'wifi', host: '127.0.0.1', udpPort: robot.udpPort },
+      },
+      { timeScale: TIME_SCALE, calibration: calibrationSource(undefined, env) },
+    );
+    await hal.initialize();
+    expect(hal.identity?.config.wheel_diameter_cm).toBe(6);
+    const saved = JSON.parse(await readFile(join(dir, `${DEVICE}.json`), 'utf8')) as {
+      wheelDiameterCm: number;
+      wheelBaseCm: number;
+    };
+    expect(saved.wheelDiameterCm).toBeCloseTo((97 * 4096) / (Math.PI * 21729), 3);
+    expect(hal.robotConfig).toMatchObject({
+      wheelDiameterCm: saved.wheelDiameterCm,
+      wheelBaseCm: saved.wheelBaseCm,
+    });
+    const before = robot.events.length;
+    expect((await hal.locomotion.moveForward(50)).success).toBe(true);
+    expect(movesSince(robot, before)[0]).toMatchObject({
+      left_steps: stepsFor(50, saved.wheelDiameterCm),
+    });
+    await hal.cleanup();
+
+    // hal drive does the same through its own PhysicalHAL, in a session of its own
+    const drive = captureIO(env);
+    const next = robot.events.length;
+    expect(await runHal(['--json', 'drive', 'forward', '0.2', ...udpOf(robot)], drive)).toBe(0);
+    expect(movesSince(robot, next)[0]).toMatchObject({
+      left_steps: stepsFor(20, saved.wheelDiameterCm),
+    });
+    const moved = drive.jsonLines()[0] as { pose: { position: { x: number } } };
+    expect(moved.pose.position.x).toBeCloseTo(0.2, 3);
+  });
+
+  it('asks a person for the measurements in a terminal, again after an answer that is no number', async () => {
+    const emulator = await emulated();
+    const tty = fakeTty();
+    const io = { ...captureIO(env), stdin: tty };
+    const run = runHal(['calibrate', ...udpOf(emulator)], io);
+    const answer = async (prompt: RegExp, text: string) => {
+      await expect.poll(() => io.stderr(), { timeout: 20_000 }).toMatch(prompt);
+      tty.write(`${text}\n`);
+    };
+    await answer(/press Enter when it has room/, '');
+    await answer(/distance it actually travelled, cm: $/, 'about a metre');
+    await answer(/a number > 0 cm, please/, '99.5');
+    await answer(/press Enter to turn/, '');
+    await answer(/angle it actually turned, degrees .*: $/, '361');
+    expect(await run, io.stderr()).toBe(0);
+    expect(io.stdout()).toMatch(/wheel diameter 6\.000 cm -> 5\.970 cm/);
+    const saved = JSON.parse(await readFile(join(dir, `${DEVICE}.json`), 'utf8')) as Record<
+      string,
+      number
+    >;
+    expect(saved['wheelDiameterCm']).toBeCloseTo((99.5 * 4096) / (Math.PI * 21729), 4);
+  });
+
+  it('refuses an absurd measurement and changes nothing on the robot or on disk', async () => {
+    const emulator = await emulated();
+    const io = captureIO(env);
+    const code = await runHal(
+      [
+        'calibrate',
+        ...udpOf(emulator),
+        '--measured-distance-cm',
+        '1',
+        '--measured-turn-deg',
+        '360',
+      ],
+      io,
+    );
+    expect(code).toBe(1);
+    expect(io.stderr()).toMatch(
+      /hal: INVALID_PARAMETER: "measuredDistanceCm" 1 cm is more than 2x from the 100\.0 cm/,
+    );
+    const plain = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: DEVICE,
+        connection: { type: 'wifi', host: '127.0.0.1', udpPort: emulator.udpPort },
+      },
+      { timeScale: TIME_SCALE },
+    );
+    await plain.initialize();
+    expect(plain.identity?.config.wheel_diameter_cm).toBe(6);
+    await plain.cleanup();
+    await expect(readFile(join(dir, `${DEVICE}.json`), 'utf8')).rejects.toMatchObject({
+      code: 'ENOENT',
+    });
+  });
+
+  it('is a usage error without a terminal and without the measurements', async () => {
+    const io = captureIO(env);
+    expect(
+      await runHal(['calibrate', '--udp', '127.0.0.1:9', '--measured-turn-deg', '360'], io),
+    ).toBe(2);
+    expect(io.stderr()).toMatch(
+      /give --measured-distance-cm and --measured-turn-deg, or run hal calibrate in a terminal/,
+    );
+  });
+});
