@@ -14,9 +14,9 @@ import { captureIO } from './capture-io.js';
 
 const TIME_SCALE = 10;
 const DEVICE = 'cube-calib';
-/** The steps the firmware makes for `cm` on wheels of `diameterCm` (4096 steps a turn). */
+/** The steps the firmware makes for `cm` on wheels of `diameterCm` (4096 a turn; it truncates). */
 const stepsFor = (cm: number, diameterCm: number) =>
-  Math.round((cm * 4096) / (Math.PI * diameterCm));
+  Math.trunc((cm * 4096) / (Math.PI * diameterCm));
 
 let dir: string;
 let env: Record<string, string>;

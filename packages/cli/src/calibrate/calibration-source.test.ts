@@ -1,0 +1,74 @@
+import { mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { captureIO } from '../capture-io.fixture.js';
+import { runHal } from '../program.js';
+import { writeCalibrationFile } from './calibration-file.js';
+import type { CalibrationFile } from './calibration-file.js';
+import { calibrationSource } from './calibration-source.js';
+
+const FILE: CalibrationFile = {
+  version: 1,
+  deviceId: 'cube-7',
+  wheelDiameterCm: 6.6,
+  wheelBaseCm: 10.4,
+  calibratedAt: '2026-12-01T20:00:00.000Z',
+};
+
+let dir: string;
+beforeEach(async () => {
+  dir = await mkdtemp(join(tmpdir(), 'hal-calibration-source-'));
+});
+afterEach(async () => {
+  await rm(dir, { recursive: true, force: true });
+});
+
+describe('calibrationSource', () => {
+  it("finds the robot's own file in the calibration directory, and nothing for another robot", async () => {
+    await writeCalibrationFile(join(dir, 'cube-7.json'), FILE);
+    const source = calibrationSource(undefined, { HAL_CALIBRATION_DIR: dir });
+    expect(await source('cube-7')).toEqual({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
+    expect(await source('cube-8')).toBeUndefined();
+  });
+
+  it('refuses a named file that belongs to another robot, or that does not exist', async () => {
+    const path = join(dir, 'cube-7.json');
+    await writeCalibrationFile(path, FILE);
+    await expect(calibrationSource(path, {})('cube-8')).rejects.toThrow(
+      `calibration file ${path} is for robot cube-7, not for cube-8`,
+    );
+    await expect(calibrationSource(join(dir, 'none.json'), {})('cube-7')).rejects.toThrow(
+      /does not exist/,
+    );
+  });
+});
+
+describe('--sim --calibration', () => {
+  it("gives the simulated robot the file's wheels: 5 cm is 987 steps of a 6.6 cm wheel", async () => {
+    const path = join(dir, 'sim.json');
+    await writeCalibrationFile(path, { ...FILE, deviceId: 'sim-1' });
+    const io = captureIO();
+    const argv = ['--json', 'drive', 'forward', '0.05', '--sim', '--time-scale', '20'];
+    expect(await runHal([...argv, '--calibration', path], io), io.stderr()).toBe(0);
+    const doc = io.jsonLines()[0] as { result: { data: { leftSteps: number } } };
+    expect(doc.result.data.leftSteps).toBe(Math.trunc((5 * 4096) / (Math.PI * 6.6)));
+  });
+
+  it('fails naming the file when it is corrupt, before driving', async () => {
+    const path = join(dir, 'sim.json');
+    await writeFile(path, '{"version": 1,');
+    const io = captureIO();
+    expect(await runHal(['drive', 'forward', '0.05', '--sim', '--calibration', path], io)).toBe(1);
+    expect(io.stderr()).toMatch(
+      `hal: INVALID_PARAMETER: calibration file ${path} is not valid JSON`,
+    );
+  });
+
+  it('is a usage error with a robot that is not simulated, on UDP or serial', async () => {
+    const io = captureIO();
+    const argv = ['status', '--ws', 'ws://127.0.0.1:9', '--calibration', 'x.json'];
+    expect(await runHal(argv, io)).toBe(2);
+    expect(io.stderr()).toMatch(/"--calibration" needs --sim, --udp or --serial/);
+  });
+});
