@@ -1,7 +1,7 @@
 // `hal calibrate` against the emulated robot (the firmware core as a process): the robot drives
 // the straight line and the turn, takes the computed geometry with set_config, and every later
 // session (a new process of the emulator, which forgets its RAM) gets it again after hello.
-import { mkdtemp, readFile, rm } from 'node:fs/promises';
+import { mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { calibrationSource, runHal } from '@hal/cli';
@@ -211,6 +211,36 @@ describe('hal calibrate on the emulated robot', () => {
     await plain.cleanup();
     await expect(readFile(join(dir, `${DEVICE}.json`), 'utf8')).rejects.toMatchObject({
       code: 'ENOENT',
+    });
+  });
+
+  it("fails a robot command naming the robot's corrupt calibration file, and drives nothing", async () => {
+    const emulator = await emulated();
+    const path = join(dir, `${DEVICE}.json`);
+    await writeFile(path, JSON.stringify({ version: 1, deviceId: DEVICE, wheelDiameterCm: 'six' }));
+    const io = captureIO(env);
+    expect(await runHal(['drive', 'forward', '0.05', ...udpOf(emulator)], io)).toBe(1);
+    expect(io.stderr()).toMatch(
+      `hal: INVALID_PARAMETER: calibration file ${path}: "wheelDiameterCm" Invalid input: expected number`,
+    );
+    expect(movesSince(emulator, 0)).toEqual([]);
+    // hal calibrate replaces it, starting from the robot's own values
+    const calibrate = captureIO(env);
+    const argv = [
+      'calibrate',
+      ...udpOf(emulator),
+      '--measured-distance-cm',
+      '100',
+      '--measured-turn-deg',
+      '360',
+    ];
+    expect(await runHal(argv, calibrate), calibrate.stderr()).toBe(0);
+    expect(calibrate.stderr()).toMatch(
+      /warning: calibration file .* calibrating from the robot's own values/,
+    );
+    expect(JSON.parse(await readFile(path, 'utf8'))).toMatchObject({
+      deviceId: DEVICE,
+      version: 1,
     });
   });
 

@@ -1,6 +1,7 @@
 import { mkdtemp, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import { runHal } from '../program.js';
@@ -53,6 +54,17 @@ describe('--sim --calibration', () => {
     expect(await runHal([...argv, '--calibration', path], io), io.stderr()).toBe(0);
     const doc = io.jsonLines()[0] as { result: { data: { leftSteps: number } } };
     expect(doc.result.data.leftSteps).toBe(Math.trunc((5 * 4096) / (Math.PI * 6.6)));
+  });
+
+  it("reads the repository's example file, as docs/cli.md uses it", async () => {
+    const example = fileURLToPath(
+      new URL('../../../../examples/calibration/cube-example.json', import.meta.url),
+    );
+    const io = captureIO();
+    const argv = ['--json', 'drive', 'forward', '0.05', '--sim', '--time-scale', '20'];
+    expect(await runHal([...argv, '--calibration', example], io), io.stderr()).toBe(0);
+    const doc = io.jsonLines()[0] as { result: { data: { leftSteps: number } } };
+    expect(doc.result.data.leftSteps).toBe(Math.trunc((5 * 4096) / (Math.PI * 6.1203)));
   });
 
   it('fails naming the file when it is corrupt, before driving', async () => {

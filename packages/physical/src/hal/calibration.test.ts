@@ -1,5 +1,7 @@
+import { HalError } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { MockRobot } from '../mock/mock-robot.js';
+import { sendCalibration } from './calibration.js';
 import type { WheelCalibration } from './calibration.js';
 import { PhysicalHAL } from './physical-hal.js';
 import type { PhysicalHALOptions } from './options.js';
@@ -90,5 +92,48 @@ describe('PhysicalHAL calibration', () => {
       hal.applyCalibration({ wheelDiameterCm: Number.NaN, wheelBaseCm: 9 }),
     ).rejects.toMatchObject({ code: 'RANGE_EXCEEDED', message: expect.stringMatching(/got NaN/) });
     await hal.cleanup();
+  });
+});
+
+describe('sendCalibration', () => {
+  const config = {
+    wheel_diameter_cm: 6.6,
+    wheel_base_cm: 10.4,
+    steps_per_revolution: 4096,
+    max_speed_steps_per_s: 1024,
+    acceleration_steps_per_s2: 512,
+    host_timeout_ms: 2000,
+  };
+
+  it("passes a refusal on with the robot's code, the values sent and the robot's reason", async () => {
+    const refused = new HalError(
+      'RANGE_EXCEEDED',
+      'the robot refused "set_config": wheel_base_cm must be 1..100 cm',
+    );
+    await expect(
+      sendCalibration(() => Promise.reject(refused), MEASURED, 'cube-7'),
+    ).rejects.toMatchObject({
+      code: 'RANGE_EXCEEDED',
+      message:
+        'robot cube-7 did not take its calibration (wheel_diameter_cm=6.6, wheel_base_cm=10.4): ' +
+        'the robot refused "set_config": wheel_base_cm must be 1..100 cm',
+    });
+  });
+
+  it('is a HARDWARE_ERROR naming the field when the robot reports other values than were sent', async () => {
+    const reply = { config: { ...config, wheel_base_cm: 10 } };
+    await expect(
+      sendCalibration(() => Promise.resolve(reply), MEASURED, 'cube-7'),
+    ).rejects.toMatchObject({
+      code: 'HARDWARE_ERROR',
+      message: 'robot cube-7 reports wheel_base_cm=10 after set_config wheel_base_cm=10.4',
+    });
+  });
+
+  it('resolves the configuration the robot reports when it took the values', async () => {
+    const reply = { config: { ...config, wheel_diameter_cm: 6.600000000001 } };
+    expect(await sendCalibration(() => Promise.resolve(reply), MEASURED, 'cube-7')).toEqual(
+      reply.config,
+    );
   });
 });
