@@ -77,6 +77,17 @@ describe('hal calibrate on the emulated robot', () => {
     expect(doc.before).toMatchObject({ wheelDiameterCm: 6, wheelBaseCm: 10 });
     expect(doc.after.wheelDiameterCm).toBeCloseTo(diameter, 3);
     expect(doc.after.wheelBaseCm).toBeCloseTo(base, 3);
+    // the robot was told with set_config, after both motions
+    const configs = emulator.events.filter((e) => e.event === 'config');
+    expect(configs).toHaveLength(1);
+    expect(configs[0]).toMatchObject({
+      wheel_diameter_cm: doc.after.wheelDiameterCm,
+      wheel_base_cm: doc.after.wheelBaseCm,
+      steps_per_revolution: 4096,
+    });
+    expect(emulator.events.indexOf(configs[0]!)).toBeGreaterThan(
+      emulator.events.indexOf(moves[1]!),
+    );
     expect(doc.file).toBe(join(dir, `${DEVICE}.json`));
     const saved = JSON.parse(await readFile(doc.file, 'utf8')) as Record<string, unknown>;
     expect(saved).toMatchObject({
@@ -129,6 +140,7 @@ describe('hal calibrate on the emulated robot', () => {
       { timeScale: TIME_SCALE, calibration: calibrationSource(undefined, env) },
     );
     await hal.initialize();
+    // its hello said 6 cm; the HAL answered with set_config before anything else
     expect(hal.identity?.config.wheel_diameter_cm).toBe(6);
     const saved = JSON.parse(await readFile(join(dir, `${DEVICE}.json`), 'utf8')) as {
       wheelDiameterCm: number;
@@ -139,6 +151,13 @@ describe('hal calibrate on the emulated robot', () => {
       wheelDiameterCm: saved.wheelDiameterCm,
       wheelBaseCm: saved.wheelBaseCm,
     });
+    await robot.waitFor((e) => e.event === 'config', 5000);
+    expect(robot.events.filter((e) => e.event === 'config')).toEqual([
+      expect.objectContaining({
+        wheel_diameter_cm: saved.wheelDiameterCm,
+        wheel_base_cm: saved.wheelBaseCm,
+      }),
+    ]);
     const before = robot.events.length;
     expect((await hal.locomotion.moveForward(50)).success).toBe(true);
     expect(movesSince(robot, before)[0]).toMatchObject({
