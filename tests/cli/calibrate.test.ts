@@ -4,7 +4,7 @@
 import { mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { calibrationSource, runHal } from '@hal/cli';
+import { calibrationSource, runHal, writeCalibrationFile } from '@hal/cli';
 import { PhysicalHAL } from '@hal/physical';
 import { afterAll, afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { fakeTty } from '../../packages/cli/src/teleop/fake-tty.fixture.js';
@@ -174,6 +174,49 @@ describe('hal calibrate on the emulated robot', () => {
     });
     const moved = drive.jsonLines()[0] as { pose: { position: { x: number } } };
     expect(moved.pose.position.x).toBeCloseTo(0.2, 3);
+  });
+
+  it('gives a robot that restarts mid-session its calibration again, in the new session', async () => {
+    await writeCalibrationFile(join(dir, `${DEVICE}.json`), {
+      version: 1,
+      deviceId: DEVICE,
+      wheelDiameterCm: 6.3,
+      wheelBaseCm: 10.2,
+      calibratedAt: new Date().toISOString(),
+    });
+    const first = await emulated();
+    const hal = new PhysicalHAL(
+      {
+        mode: 'physical',
+        deviceId: DEVICE,
+        connection: { type: 'wifi', host: '127.0.0.1', udpPort: first.udpPort },
+      },
+      {
+        timeScale: TIME_SCALE,
+        reconnectIntervalMs: 100,
+        calibration: calibrationSource(undefined, env),
+      },
+    );
+    try {
+      await hal.initialize();
+      await first.waitFor((e) => e.event === 'config', 5000);
+      // a power cut: the new robot boots with the firmware's defaults on the same port
+      await first.kill();
+      const second = await startEmulator({
+        timeScale: TIME_SCALE,
+        deviceId: DEVICE,
+        udpPort: first.udpPort,
+        pty: false,
+      });
+      const config = await second.waitFor((e) => e.event === 'config', 15_000);
+      expect(config).toMatchObject({ wheel_diameter_cm: 6.3, wheel_base_cm: 10.2 });
+      await expect.poll(() => hal.linkState, { timeout: 5000 }).toBe('connected');
+      const before = second.events.length;
+      expect((await hal.locomotion.moveForward(10)).success).toBe(true);
+      expect(movesSince(second, before)[0]).toMatchObject({ left_steps: stepsFor(10, 6.3) });
+    } finally {
+      await hal.cleanup();
+    }
   });
 
   it('asks a person for the measurements in a terminal, again after an answer that is no number', async () => {
