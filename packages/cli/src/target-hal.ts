@@ -75,7 +75,7 @@ async function build(
       const robot =
         target.calibration === undefined
           ? {}
-          : { robot: await simulatedGeometry(target.calibration) };
+          : { robot: await simulatedGeometry(target.calibration, io.env) };
       const hal = new SimulationHAL({
         ...robot,
         world: new World({ map: target.map }),

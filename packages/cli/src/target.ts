@@ -117,8 +117,8 @@ export function addTargetOptions(
     );
     command.addOption(
       new Option(
-        '--calibration <file>',
-        "a calibration file (from hal calibrate) for the robot's wheels; default the robot's own",
+        '--calibration <file|device-id>',
+        "the wheels of this calibration file (from hal calibrate), or of this device's; default the robot's own",
       ),
     );
   }

@@ -56,6 +56,20 @@ describe('--sim --calibration', () => {
     expect(doc.result.data.leftSteps).toBe(Math.trunc((5 * 4096) / (Math.PI * 6.6)));
   });
 
+  it('takes a device id for the file of that device in the calibration directory', async () => {
+    await writeCalibrationFile(join(dir, 'cube-7.json'), FILE);
+    const io = captureIO({ HAL_CALIBRATION_DIR: dir });
+    const argv = ['--json', 'drive', 'forward', '0.05', '--sim', '--time-scale', '20'];
+    expect(await runHal([...argv, '--calibration', 'cube-7'], io), io.stderr()).toBe(0);
+    const doc = io.jsonLines()[0] as { result: { data: { leftSteps: number } } };
+    expect(doc.result.data.leftSteps).toBe(Math.trunc((5 * 4096) / (Math.PI * 6.6)));
+    const missing = captureIO({ HAL_CALIBRATION_DIR: dir });
+    expect(await runHal([...argv, '--calibration', 'cube-8'], missing)).toBe(1);
+    expect(missing.stderr()).toContain(
+      `calibration file ${join(dir, 'cube-8.json')} does not exist`,
+    );
+  });
+
   it("reads the repository's example file, as docs/cli.md uses it", async () => {
     const example = fileURLToPath(
       new URL('../../../../examples/calibration/cube-example.json', import.meta.url),

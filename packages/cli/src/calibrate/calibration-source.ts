@@ -24,21 +24,31 @@ async function namedFile(path: string): Promise<{ deviceId: string; values: Whee
 }
 
 /**
- * The source PhysicalHAL asks after each hello: `file` when given (refused for another robot),
+ * The file `--calibration` names: a path (it has a `/` or ends in `.json`), else a device id,
+ * whose file in {@link calibrationDir} it is.
+ */
+export function calibrationFileOf(value: string, env: Env): string {
+  if (value.includes('/') || value.endsWith('.json')) return value;
+  return calibrationPath(calibrationDir(env), value);
+}
+
+/**
+ * The source PhysicalHAL asks after each hello: the `named` file when given (refused for another robot),
  * else the robot's own file in {@link calibrationDir}, or none when it has no file.
  */
-export function calibrationSource(file: string | undefined, env: Env): CalibrationSource {
-  if (file !== undefined) {
+export function calibrationSource(named: string | undefined, env: Env): CalibrationSource {
+  if (named !== undefined) {
+    const file = calibrationFileOf(named, env);
     return async (deviceId) => {
-      const named = await namedFile(file);
-      if (named.deviceId !== deviceId) {
+      const found = await namedFile(file);
+      if (found.deviceId !== deviceId) {
         throw new HalError(
           'INVALID_PARAMETER',
-          `calibration file ${file} is for robot ${named.deviceId}, not for ${deviceId}`,
+          `calibration file ${file} is for robot ${found.deviceId}, not for ${deviceId}`,
           { details: { parameter: 'calibration', path: file } },
         );
       }
-      return named.values;
+      return found.values;
     };
   }
   return async (deviceId) => {
@@ -47,7 +57,7 @@ export function calibrationSource(file: string | undefined, env: Env): Calibrati
   };
 }
 
-/** The simulator's robot geometry from the file at `path` (`--sim --calibration`). */
-export async function simulatedGeometry(path: string): Promise<Partial<RobotConfig>> {
-  return (await namedFile(path)).values;
+/** The simulator's robot geometry from the file `--sim --calibration` names. */
+export async function simulatedGeometry(named: string, env: Env): Promise<Partial<RobotConfig>> {
+  return (await namedFile(calibrationFileOf(named, env))).values;
 }
