@@ -74,6 +74,8 @@ function wsUrlArg(value: string): string {
 export function addTargetOptions(
   command: Command,
   kinds: readonly TargetKind[] = TARGET_KINDS,
+  /** Whether to offer `--calibration` (not to `hal calibrate`, which writes calibrations). */
+  { calibration = true }: { calibration?: boolean } = {},
 ): Command {
   const has = (kind: TargetKind) => kinds.includes(kind);
   if (has('sim')) {
@@ -115,12 +117,14 @@ export function addTargetOptions(
         "clock speed-up: the simulator's, or an emulated robot's --time-scale",
       ).argParser(positiveArg('--time-scale')),
     );
-    command.addOption(
-      new Option(
-        '--calibration <file|device-id>',
-        "the wheels of this calibration file (from hal calibrate), or of this device's; default the robot's own",
-      ),
-    );
+    if (calibration) {
+      command.addOption(
+        new Option(
+          '--calibration <file|device-id>',
+          "the wheels of this calibration file (from hal calibrate), or of this device's; default the robot's own",
+        ),
+      );
+    }
   }
   if (has('ws')) {
     command

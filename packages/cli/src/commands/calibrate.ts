@@ -127,76 +127,73 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
         .argParser(positiveArg('--answer-timeout'))
         .default(600),
     );
-  addTargetOptions(command, ['udp', 'serial']).action(async (options: CalibrateOptions) => {
-    const target = resolveTarget(options, io.env, ['udp', 'serial']);
-    if (options.calibration !== undefined) {
-      throw new CliError(
-        'USAGE',
-        '"--calibration" is for the commands that use a calibration; hal calibrate writes one (see --calibration-dir)',
-      );
-    }
-    const json = global().json;
-    const interactive =
-      options.measuredDistanceCm === undefined || options.measuredTurnDeg === undefined;
-    if (interactive && (json || !canPrompt(io))) {
-      throw new CliError(
-        'USAGE',
-        'give --measured-distance-cm and --measured-turn-deg, or run hal calibrate in a terminal to be asked',
-      );
-    }
-    const dir = options.calibrationDir ?? calibrationDir(io.env);
-    const connect =
-      options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-    const ask = interactive ? prompter(io, options.answerTimeout * 1000) : undefined;
-    try {
-      const doc = await withTarget(
-        target,
-        io,
-        { ...connect, json, calibration: tolerantSource(dir, io, json) },
-        async ({ hal, deviceId }) => {
-          if (!(hal instanceof PhysicalHAL)) {
-            throw new HalError('NOT_IMPLEMENTED', 'hal calibrate needs a physical robot');
-          }
-          const path = calibrationPath(dir, deviceId);
-          progress(io, { json }, `calibrating robot ${deviceId}`);
-          const run = await runCalibration(
-            hal,
-            {
-              distanceCm: options.distanceCm,
-              ...(options.measuredDistanceCm === undefined
-                ? {}
-                : { measuredDistanceCm: options.measuredDistanceCm }),
-              ...(options.measuredTurnDeg === undefined
-                ? {}
-                : { measuredTurnDeg: options.measuredTurnDeg }),
-              ...(ask === undefined ? {} : { prompter: ask }),
-            },
-            io,
-            { json },
-          );
-          if (!options.save) return { deviceId, ...run };
-          await writeCalibrationFile(path, {
-            version: 1,
-            deviceId,
-            wheelDiameterCm: run.after.wheelDiameterCm,
-            wheelBaseCm: run.after.wheelBaseCm,
-            calibratedAt: new Date().toISOString(),
-            measurements: {
-              straightSteps: Math.round((run.straight.leftSteps + run.straight.rightSteps) / 2),
-              measuredDistanceCm: run.straight.measuredCm,
-              turnSteps: Math.round(
-                (Math.abs(run.turn.leftSteps) + Math.abs(run.turn.rightSteps)) / 2,
-              ),
-              measuredTurnDeg: run.turn.measuredDeg,
-            },
-          });
-          return { deviceId, ...run, file: path };
-        },
-      );
-      emit(io, { json }, doc, () => calibrateText(doc));
-    } finally {
-      ask?.close();
-    }
-  });
+  const kinds = ['udp', 'serial'] as const;
+  addTargetOptions(command, kinds, { calibration: false }).action(
+    async (options: CalibrateOptions) => {
+      const target = resolveTarget(options, io.env, kinds);
+      const json = global().json;
+      const interactive =
+        options.measuredDistanceCm === undefined || options.measuredTurnDeg === undefined;
+      if (interactive && (json || !canPrompt(io))) {
+        throw new CliError(
+          'USAGE',
+          'give --measured-distance-cm and --measured-turn-deg, or run hal calibrate in a terminal to be asked',
+        );
+      }
+      const dir = options.calibrationDir ?? calibrationDir(io.env);
+      const connect =
+        options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+      const ask = interactive ? prompter(io, options.answerTimeout * 1000) : undefined;
+      try {
+        const doc = await withTarget(
+          target,
+          io,
+          { ...connect, json, calibration: tolerantSource(dir, io, json) },
+          async ({ hal, deviceId }) => {
+            if (!(hal instanceof PhysicalHAL)) {
+              throw new HalError('NOT_IMPLEMENTED', 'hal calibrate needs a physical robot');
+            }
+            const path = calibrationPath(dir, deviceId);
+            progress(io, { json }, `calibrating robot ${deviceId}`);
+            const run = await runCalibration(
+              hal,
+              {
+                distanceCm: options.distanceCm,
+                ...(options.measuredDistanceCm === undefined
+                  ? {}
+                  : { measuredDistanceCm: options.measuredDistanceCm }),
+                ...(options.measuredTurnDeg === undefined
+                  ? {}
+                  : { measuredTurnDeg: options.measuredTurnDeg }),
+                ...(ask === undefined ? {} : { prompter: ask }),
+              },
+              io,
+              { json },
+            );
+            if (!options.save) return { deviceId, ...run };
+            await writeCalibrationFile(path, {
+              version: 1,
+              deviceId,
+              wheelDiameterCm: run.after.wheelDiameterCm,
+              wheelBaseCm: run.after.wheelBaseCm,
+              calibratedAt: new Date().toISOString(),
+              measurements: {
+                straightSteps: Math.round((run.straight.leftSteps + run.straight.rightSteps) / 2),
+                measuredDistanceCm: run.straight.measuredCm,
+                turnSteps: Math.round(
+                  (Math.abs(run.turn.leftSteps) + Math.abs(run.turn.rightSteps)) / 2,
+                ),
+                measuredTurnDeg: run.turn.measuredDeg,
+              },
+            });
+            return { deviceId, ...run, file: path };
+          },
+        );
+        emit(io, { json }, doc, () => calibrateText(doc));
+      } finally {
+        ask?.close();
+      }
+    },
+  );
   program.addCommand(command);
 };
