@@ -306,6 +306,30 @@ describe('hal calibrate on the emulated robot', () => {
     });
   });
 
+  it('refuses, before any motion, to calibrate a robot whose id cannot name a file', async () => {
+    const emulator = await startEmulator({
+      timeScale: TIME_SCALE,
+      deviceId: 'cube one',
+      pty: false,
+    });
+    const io = captureIO(env);
+    const argv = [
+      'calibrate',
+      ...udpOf(emulator),
+      '--measured-distance-cm',
+      '100',
+      '--measured-turn-deg',
+      '360',
+    ];
+    expect(await runHal(argv, io)).toBe(1);
+    expect(io.stderr()).toMatch(
+      /hal: INVALID_PARAMETER: device id "cube one" cannot name a calibration file/,
+    );
+    expect(movesSince(emulator, 0)).toEqual([]);
+    // other commands drive it with its own geometry
+    expect(await runHal(['drive', 'forward', '0.02', ...udpOf(emulator)], captureIO(env))).toBe(0);
+  });
+
   it('is a usage error without a terminal and without the measurements', async () => {
     const io = captureIO(env);
     expect(

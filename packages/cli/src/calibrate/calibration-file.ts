@@ -46,9 +46,14 @@ export function calibrationDir(env: Readonly<Record<string, string | undefined>>
   return join(config, 'hal', 'calibration');
 }
 
+/** Whether `deviceId` can name a calibration file (no path separators, no dot first). */
+export function canNameFile(deviceId: string): boolean {
+  return DEVICE_ID.test(deviceId);
+}
+
 /** The file of `deviceId` in `dir`; INVALID_PARAMETER for an id that is not a safe file name. */
 export function calibrationPath(dir: string, deviceId: string): string {
-  if (!DEVICE_ID.test(deviceId)) {
+  if (!canNameFile(deviceId)) {
     throw new HalError(
       'INVALID_PARAMETER',
       `device id "${deviceId}" cannot name a calibration file (letters, digits, . _ - only)`,

@@ -31,6 +31,8 @@ describe('calibrationSource', () => {
     const source = calibrationSource(undefined, { HAL_CALIBRATION_DIR: dir });
     expect(await source('cube-7')).toEqual({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
     expect(await source('cube-8')).toBeUndefined();
+    // an id that cannot name a file has none (rather than failing every command)
+    expect(await source('../cube-7')).toBeUndefined();
   });
 
   it('refuses a named file that belongs to another robot, or that does not exist', async () => {

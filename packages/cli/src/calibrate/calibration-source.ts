@@ -7,6 +7,7 @@ import {
   calibrationDir,
   calibrationOf,
   calibrationPath,
+  canNameFile,
   readCalibrationFile,
 } from './calibration-file.js';
 
@@ -52,6 +53,8 @@ export function calibrationSource(named: string | undefined, env: Env): Calibrat
     };
   }
   return async (deviceId) => {
+    // a robot whose id cannot name a file has no calibration file (hal calibrate says why)
+    if (!canNameFile(deviceId)) return undefined;
     const found = await readCalibrationFile(calibrationPath(calibrationDir(env), deviceId));
     return found === undefined ? undefined : calibrationOf(found);
   };

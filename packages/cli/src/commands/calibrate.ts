@@ -11,6 +11,7 @@ import {
   calibrationDir,
   calibrationOf,
   calibrationPath,
+  canNameFile,
   readCalibrationFile,
   writeCalibrationFile,
 } from '../calibrate/calibration-file.js';
@@ -78,6 +79,7 @@ function calibrateText(doc: CalibrateDocument): string {
  */
 function tolerantSource(dir: string, io: CliIO, json: boolean): CalibrationSource {
   return async (deviceId) => {
+    if (!canNameFile(deviceId)) return undefined;
     const path = calibrationPath(dir, deviceId);
     try {
       const found = await readCalibrationFile(path);
@@ -153,7 +155,8 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
             if (!(hal instanceof PhysicalHAL)) {
               throw new HalError('NOT_IMPLEMENTED', 'hal calibrate needs a physical robot');
             }
-            const path = calibrationPath(dir, deviceId);
+            // before any motion: an id that cannot name the file would lose the measurement
+            const path = options.save ? calibrationPath(dir, deviceId) : undefined;
             progress(io, { json }, `calibrating robot ${deviceId}`);
             const run = await runCalibration(
               hal,
@@ -170,7 +173,7 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
               io,
               { json },
             );
-            if (!options.save) return { deviceId, ...run };
+            if (path === undefined) return { deviceId, ...run };
             await writeCalibrationFile(path, {
               version: 1,
               deviceId,
