@@ -22,7 +22,7 @@ const commands = (robot: MockRobot) => robot.requests.map((r) => r['cmd']);
 const setConfigs = (robot: MockRobot) => robot.requests.filter((r) => r['cmd'] === 'set_config');
 
 describe('PhysicalHAL calibration', () => {
-  it('sends the calibration of the device its hello names with set_config, right after hello', async () => {
+  it('sends the calibration of the device its hello names with set_config, after hello and the status', async () => {
     const asked: string[] = [];
     const { robot, hal } = rig({
       calibration: (deviceId) => {
@@ -32,7 +32,7 @@ describe('PhysicalHAL calibration', () => {
     });
     await hal.initialize();
     expect(asked).toEqual(['cube-7']);
-    expect(commands(robot).slice(0, 3)).toEqual(['hello', 'set_config', 'get_status']);
+    expect(commands(robot).slice(0, 3)).toEqual(['hello', 'get_status', 'set_config']);
     expect(setConfigs(robot)[0]).toMatchObject({ wheel_diameter_cm: 6.6, wheel_base_cm: 10.4 });
     expect(hal.robotConfig).toMatchObject({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
     await hal.cleanup();
@@ -57,6 +57,19 @@ describe('PhysicalHAL calibration', () => {
     await expect.poll(() => setConfigs(robot).length, { timeout: 5000 }).toBe(2);
     const hellos = commands(robot).filter((c) => c === 'hello').length;
     expect(hellos).toBe(2);
+    await hal.cleanup();
+  });
+
+  it('latches a restarted robot e-stopped by the host before it sends the calibration again', async () => {
+    const { robot, hal } = rig({ calibration: () => MEASURED });
+    await hal.initialize();
+    expect((await hal.safety.emergencyStop('operator')).success).toBe(true);
+    robot.restart();
+    await expect.poll(() => setConfigs(robot).length, { timeout: 5000 }).toBe(2);
+    const sinceHello = commands(robot).slice(commands(robot).lastIndexOf('hello'));
+    expect(sinceHello.indexOf('estop')).toBeGreaterThan(0);
+    expect(sinceHello.indexOf('estop')).toBeLessThan(sinceHello.indexOf('set_config'));
+    expect(robot.estopped).toBe(true);
     await hal.cleanup();
   });
 

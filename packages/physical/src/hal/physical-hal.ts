@@ -164,7 +164,6 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     try {
       const hello = await session.open();
       this.#learn(hello);
-      await this.#calibrate(hello);
       const status = await session.command('get_status', {});
       this.#tracker.anchor(status);
       const hostLatch = this.#safety.hostLatch;
@@ -172,6 +171,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
         // emergencyStop() was called before initialize() (or after a cleanup): latch the robot too
         await session.command('estop', { reason: hostLatch });
       }
+      await this.#calibrate(hello);
       this.#initialized = true;
       this.#camera?.start();
       this.#log.info('connected', { deviceId: hello.device_id, transport: transport.type });
@@ -321,7 +321,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#boundary.schemas(); // the call schemas for this robot now, not on the first call
   }
 
-  /** Sends the robot's calibration, if there is one, right after its hello. */
+  /** Sends the robot's calibration, if there is one, once a hello opened the session. */
   async #calibrate(hello: HelloReply): Promise<void> {
     const calibration = this.#calibration ?? (await this.#options.calibration?.(hello.device_id));
     if (calibration === undefined) return;
@@ -343,12 +343,6 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   async #resync(hello: HelloReply): Promise<void> {
     this.#learn(hello);
     try {
-      // a restarted robot has forgotten its calibration: give it again before anything else
-      await this.#calibrate(hello);
-    } catch (error) {
-      this.#log.error('calibration after reconnect failed', { error: String(error) });
-    }
-    try {
       const status = await this.#command('get_status', {});
       const hostLatch = this.#safety.hostLatch;
       if (hostLatch !== undefined && !status.safety.estop) {
@@ -358,6 +352,12 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#log.info('reconnected', { sid: hello.sid, uptimeMs: status.uptime_ms });
     } catch (error) {
       this.#log.warn('status after reconnect failed', { error: String(error) });
+    }
+    try {
+      // a restarted robot has forgotten its calibration (the e-stop went first, above)
+      await this.#calibrate(hello);
+    } catch (error) {
+      this.#log.error('calibration after reconnect failed', { error: String(error) });
     }
   }
 
