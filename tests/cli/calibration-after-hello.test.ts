@@ -2,7 +2,8 @@
 // of the emulator (which forgets its RAM), a robot that restarts mid-session, and `hal drive`.
 import { readFile, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
-import { calibrationSource, runHal, writeCalibrationFile } from '@hal/cli';
+import { runHal } from '@hal/cli';
+import { calibrationSource, writeCalibrationFile } from '@hal/physical';
 import { describe, expect, it } from 'vitest';
 import { captureIO } from './capture-io.js';
 import {

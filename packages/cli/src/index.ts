@@ -18,16 +18,6 @@ export {
 export type { Target, TargetCliOptions, TargetKind } from './target.js';
 export { openTarget, withTarget } from './target-hal.js';
 export type { OpenTargetOptions, OpenedHal } from './target-hal.js';
-export {
-  calibrationDir,
-  calibrationOf,
-  calibrationPath,
-  CalibrationFileSchema,
-  readCalibrationFile,
-  writeCalibrationFile,
-} from './calibrate/calibration-file.js';
-export type { CalibrationFile } from './calibrate/calibration-file.js';
-export { calibrationSource } from './calibrate/calibration-source.js';
 export { computeCalibration } from './calibrate/calibration-math.js';
 export type {
   CalibrationResult,

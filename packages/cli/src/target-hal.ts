@@ -1,13 +1,12 @@
 // Builds and connects the HAL a Target names, with a bound on connecting (a robot that is off
 // is NOT_CONNECTED within the timeout, never a hang), and lets go of it the right way after.
 import { NatsHAL, openConnection } from '@hal/nats';
-import { PhysicalHAL } from '@hal/physical';
+import { calibratedGeometry, calibrationSource, PhysicalHAL } from '@hal/physical';
 import type { CalibrationSource } from '@hal/physical';
 import { RemoteHAL } from '@hal/remote';
 import { SimulationHAL, World } from '@hal/simulation';
 import { HalError, isHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { calibrationSource, simulatedGeometry } from './calibrate/calibration-source.js';
 import type { CliIO } from './io.js';
 import { cliLogger, cliNatsLogger } from './logger.js';
 import { DEFAULT_CONNECT_TIMEOUT_MS, describeTarget } from './target.js';
@@ -75,7 +74,7 @@ async function build(
       const robot =
         target.calibration === undefined
           ? {}
-          : { robot: await simulatedGeometry(target.calibration, io.env) };
+          : { robot: await calibratedGeometry(target.calibration, io.env) };
       const hal = new SimulationHAL({
         ...robot,
         world: new World({ map: target.map }),

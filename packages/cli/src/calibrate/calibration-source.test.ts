@@ -5,9 +5,8 @@ import { fileURLToPath } from 'node:url';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import { runHal } from '../program.js';
-import { writeCalibrationFile } from './calibration-file.js';
-import type { CalibrationFile } from './calibration-file.js';
-import { calibrationSource } from './calibration-source.js';
+import { writeCalibrationFile } from '@hal/physical';
+import type { CalibrationFile } from '@hal/physical';
 
 const FILE: CalibrationFile = {
   version: 1,
@@ -23,28 +22,6 @@ beforeEach(async () => {
 });
 afterEach(async () => {
   await rm(dir, { recursive: true, force: true });
-});
-
-describe('calibrationSource', () => {
-  it("finds the robot's own file in the calibration directory, and nothing for another robot", async () => {
-    await writeCalibrationFile(join(dir, 'cube-7.json'), FILE);
-    const source = calibrationSource(undefined, { HAL_CALIBRATION_DIR: dir });
-    expect(await source('cube-7')).toEqual({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
-    expect(await source('cube-8')).toBeUndefined();
-    // an id that cannot name a file has none (rather than failing every command)
-    expect(await source('../cube-7')).toBeUndefined();
-  });
-
-  it('refuses a named file that belongs to another robot, or that does not exist', async () => {
-    const path = join(dir, 'cube-7.json');
-    await writeCalibrationFile(path, FILE);
-    await expect(calibrationSource(path, {})('cube-8')).rejects.toThrow(
-      `calibration file ${path} is for robot cube-7, not for cube-8`,
-    );
-    await expect(calibrationSource(join(dir, 'none.json'), {})('cube-7')).rejects.toThrow(
-      /does not exist/,
-    );
-  });
 });
 
 describe('--sim --calibration', () => {

@@ -3,18 +3,18 @@
 // file, which every later command sends again after each hello. Scripts give the measurements as
 // options; a person is asked for them.
 import { Command, Option } from 'commander';
-import { PhysicalHAL } from '@hal/physical';
-import type { CalibrationSource } from '@hal/physical';
-import { positiveArg } from '@hal/remote/cli';
-import { HalError } from '@hal/types';
 import {
   calibrationDir,
   calibrationOf,
   calibrationPath,
   canNameFile,
+  PhysicalHAL,
   readCalibrationFile,
   writeCalibrationFile,
-} from '../calibrate/calibration-file.js';
+} from '@hal/physical';
+import type { CalibrationSource } from '@hal/physical';
+import { positiveArg } from '@hal/remote/cli';
+import { HalError } from '@hal/types';
 import { canPrompt, prompter } from '../calibrate/prompt.js';
 import { runCalibration, TURN_DEG } from '../calibrate/run-calibration.js';
 import type { CalibrationRun } from '../calibrate/run-calibration.js';

@@ -1,8 +1,8 @@
-// Which calibration a robot-facing command uses: the file `--calibration` names, else the
-// robot's own file in the calibration directory (looked up by the device id its hello reports).
-import type { CalibrationSource, WheelCalibration } from '@hal/physical';
-import type { RobotConfig } from '@hal/types';
+// Which calibration a PhysicalHAL sends after hello: a named file (`hal --calibration`), else
+// the robot's own file in the calibration directory (looked up by the device id its hello reports).
 import { HalError } from '@hal/types';
+import type { RobotConfig } from '@hal/types';
+import type { CalibrationSource, WheelCalibration } from '../hal/calibration.js';
 import {
   calibrationDir,
   calibrationOf,
@@ -25,7 +25,7 @@ async function namedFile(path: string): Promise<{ deviceId: string; values: Whee
 }
 
 /**
- * The file `--calibration` names: a path (it has a `/` or ends in `.json`), else a device id,
+ * The file `named` names (`--calibration`): a path (it has a `/` or ends in `.json`), else a device id,
  * whose file in {@link calibrationDir} it is.
  */
 export function calibrationFileOf(value: string, env: Env): string {
@@ -55,12 +55,18 @@ export function calibrationSource(named: string | undefined, env: Env): Calibrat
   return async (deviceId) => {
     // a robot whose id cannot name a file has no calibration file (hal calibrate says why)
     if (!canNameFile(deviceId)) return undefined;
+    // no $HAL_CALIBRATION_DIR, $XDG_CONFIG_HOME or $HOME (a bare service): no directory, no file
+    if (
+      !['HAL_CALIBRATION_DIR', 'XDG_CONFIG_HOME', 'HOME', 'USERPROFILE'].some((name) => env[name])
+    ) {
+      return undefined;
+    }
     const found = await readCalibrationFile(calibrationPath(calibrationDir(env), deviceId));
     return found === undefined ? undefined : calibrationOf(found);
   };
 }
 
-/** The simulator's robot geometry from the file `--sim --calibration` names. */
-export async function simulatedGeometry(named: string, env: Env): Promise<Partial<RobotConfig>> {
+/** The wheel geometry in the file `named` names, for a simulated robot (`--sim --calibration`). */
+export async function calibratedGeometry(named: string, env: Env): Promise<Partial<RobotConfig>> {
   return (await namedFile(calibrationFileOf(named, env))).values;
 }

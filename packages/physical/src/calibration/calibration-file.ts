@@ -1,13 +1,19 @@
 // The host-side calibration file of one robot: `<dir>/<device-id>.json`, in
 // $HAL_CALIBRATION_DIR, else $XDG_CONFIG_HOME/hal/calibration, else ~/.config/hal/calibration.
 // Validated on every read: a corrupt file is an error naming the file, never silently ignored.
-import { mkdir, readFile, rename, writeFile } from 'node:fs/promises';
-import { homedir } from 'node:os';
-import { dirname, join } from 'node:path';
-import { DEVICE_SETTING_RANGES } from '@hal/physical';
-import type { WheelCalibration } from '@hal/physical';
+// Node's file system is loaded when a file is read or written, so a browser bundle of this
+// package never meets it.
 import { HalError } from '@hal/types';
 import { z } from 'zod';
+import type { WheelCalibration } from '../hal/calibration.js';
+import { DEVICE_SETTING_RANGES } from '../protocol/device-config.js';
+
+type Env = Readonly<Record<string, string | undefined>>;
+
+/** `dir` and `name` joined with `/` (which Node takes on every platform). */
+const join = (...parts: string[]) =>
+  parts.map((part, i) => (i === 0 ? part.replace(/\/+$/, '') : part)).join('/');
+const dirname = (path: string) => path.slice(0, Math.max(path.lastIndexOf('/'), 0)) || '/';
 
 const range = (field: keyof typeof DEVICE_SETTING_RANGES) => {
   const { min, max, integer } = DEVICE_SETTING_RANGES[field];
@@ -37,13 +43,29 @@ export const CalibrationFileSchema = z.object({
 });
 export type CalibrationFile = z.infer<typeof CalibrationFileSchema>;
 
-/** The directory calibration files live in, from `env`. */
-export function calibrationDir(env: Readonly<Record<string, string | undefined>>): string {
-  const explicit = env['HAL_CALIBRATION_DIR'];
-  if (explicit !== undefined && explicit !== '') return explicit;
-  const xdg = env['XDG_CONFIG_HOME'];
-  const config = xdg !== undefined && xdg !== '' ? xdg : join(env['HOME'] ?? homedir(), '.config');
-  return join(config, 'hal', 'calibration');
+/**
+ * The directory calibration files live in, from `env`: `$HAL_CALIBRATION_DIR`, else
+ * `$XDG_CONFIG_HOME/hal/calibration`, else `$HOME/.config/hal/calibration` (`%USERPROFILE%` on
+ * Windows). INVALID_PARAMETER when none of them is set.
+ */
+export function calibrationDir(env: Env): string {
+  const set = (name: string) => {
+    const value = env[name];
+    return value === undefined || value === '' ? undefined : value;
+  };
+  const explicit = set('HAL_CALIBRATION_DIR');
+  if (explicit !== undefined) return explicit;
+  const xdg = set('XDG_CONFIG_HOME');
+  if (xdg !== undefined) return join(xdg, 'hal', 'calibration');
+  const home = set('HOME') ?? set('USERPROFILE');
+  if (home === undefined) {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      'no calibration directory: set $HAL_CALIBRATION_DIR (or $XDG_CONFIG_HOME, or $HOME)',
+      { details: { parameter: 'HAL_CALIBRATION_DIR' } },
+    );
+  }
+  return join(home, '.config', 'hal', 'calibration');
 }
 
 /** Whether `deviceId` can name a calibration file (no path separators, no dot first). */
@@ -68,6 +90,7 @@ export function calibrationPath(dir: string, deviceId: string): string {
  * naming the file and the bad field when it is not valid JSON or not a calibration.
  */
 export async function readCalibrationFile(path: string): Promise<CalibrationFile | undefined> {
+  const { readFile } = await import('node:fs/promises');
   let text: string;
   try {
     text = await readFile(path, 'utf8');
@@ -107,6 +130,7 @@ export async function readCalibrationFile(path: string): Promise<CalibrationFile
 /** Writes `file` to `path` (creating the directory), atomically: a crash leaves the old file. */
 export async function writeCalibrationFile(path: string, file: CalibrationFile): Promise<void> {
   const checked = CalibrationFileSchema.parse(file);
+  const { mkdir, rename, writeFile } = await import('node:fs/promises');
   await mkdir(dirname(path), { recursive: true });
   const temporary = `${path}.${process.pid}.tmp`;
   await writeFile(temporary, `${JSON.stringify(checked, null, 2)}\n`, 'utf8');

@@ -38,6 +38,8 @@ describe('calibrationDir', () => {
     expect(calibrationDir({ HAL_CALIBRATION_DIR: '/a', XDG_CONFIG_HOME: '/b' })).toBe('/a');
     expect(calibrationDir({ XDG_CONFIG_HOME: '/b', HOME: '/h' })).toBe('/b/hal/calibration');
     expect(calibrationDir({ HOME: '/h' })).toBe('/h/.config/hal/calibration');
+    expect(calibrationDir({ XDG_CONFIG_HOME: '/b/' })).toBe('/b/hal/calibration');
+    expect(() => calibrationDir({})).toThrow(/no calibration directory: set \$HAL_CALIBRATION_DIR/);
   });
 });
 
