@@ -211,6 +211,7 @@ int main(int argc, char** argv) {
 
   cube::EventLog log(robot, robot_clock);
   robot.set_observer(&log);
+  log.CheckConfig();  // the configuration at boot: later changes are events
 
   cube::UdpEndpoint udp;
   std::string error;
@@ -284,6 +285,7 @@ int main(int argc, char** argv) {
       if (robot.left_position() == l && robot.right_position() == r) break;
     }
     link.Poll(real_clock.NowUs() / 1000);
+    log.CheckConfig();
   }
   log.Stopping(g_stop != 0 ? "signal" : why);
   return 0;

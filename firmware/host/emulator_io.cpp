@@ -260,6 +260,43 @@ void EventLog::OnTrip(const SafetyTrip& trip) {
   Emit(w, buf);
 }
 
+void EventLog::CheckConfig() {
+  const CubeConfig& c = cube_.config();
+  const bool same = seen_any_ &&
+                    c.geometry.wheel_diameter_cm ==
+                        seen_.geometry.wheel_diameter_cm &&
+                    c.geometry.wheel_base_cm == seen_.geometry.wheel_base_cm &&
+                    c.geometry.steps_per_revolution ==
+                        seen_.geometry.steps_per_revolution &&
+                    c.max_speed_sps == seen_.max_speed_sps &&
+                    c.accel_sps2 == seen_.accel_sps2 &&
+                    c.host_timeout_ms == seen_.host_timeout_ms;
+  const bool first = !seen_any_;
+  seen_ = c;
+  seen_any_ = true;
+  if (same || first) return;  // the configuration at boot is in hello
+  char buf[512];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("config");
+  w.Key("wheel_diameter_cm");
+  w.Double(c.geometry.wheel_diameter_cm);
+  w.Key("wheel_base_cm");
+  w.Double(c.geometry.wheel_base_cm);
+  w.Key("steps_per_revolution");
+  w.Int(static_cast<int64_t>(c.geometry.steps_per_revolution));
+  w.Key("max_speed_steps_per_s");
+  w.Int(c.max_speed_sps);
+  w.Key("acceleration_steps_per_s2");
+  w.Int(c.accel_sps2);
+  w.Key("host_timeout_ms");
+  w.Int(c.host_timeout_ms);
+  w.Key("t_ms");
+  w.Uint(cube_.uptime_ms());
+  Emit(w, buf);
+}
+
 void EventLog::Stopping(const char* why) {
   char buf[256];
   JsonWriter w(buf, sizeof(buf) - 1);

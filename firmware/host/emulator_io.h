@@ -60,6 +60,9 @@ class EventLog : public CubeObserver {
   void OnMotionStarted(const MotionReport& r) override;
   void OnMotionFinished(const MotionReport& r) override;
   void OnTrip(const SafetyTrip& trip) override;
+  // Prints a `config` event when the robot's configuration differs from the
+  // last one seen (set_config over either link); call after each request.
+  void CheckConfig();
   void Stopping(const char* why);
 
  private:
@@ -67,6 +70,8 @@ class EventLog : public CubeObserver {
 
   Cube& cube_;
   Clock& clock_;
+  CubeConfig seen_;
+  bool seen_any_ = false;
 };
 
 }  // namespace cube

@@ -285,6 +285,26 @@ TEST(Emulator, RunsTheSeedCommandsOverUdpWithTheirStepCounts) {
   EXPECT_EQ(r["running"], false);
 }
 
+TEST(Emulator, PrintsAConfigEventOnlyWhenSetConfigChangesTheConfiguration) {
+  Emulator e;
+  json r = json::parse(e.Udp(
+      R"({"cmd":"set_config","wheel_diameter_cm":6.0,"wheel_base_cm":10.0})"));
+  EXPECT_EQ(r["ok"], true);
+  r = json::parse(e.Udp(
+      R"({"cmd":"set_config","wheel_diameter_cm":6.12,"wheel_base_cm":10.49})"));
+  EXPECT_EQ(r["ok"], true);
+  const json c = e.WaitEvent("config", 2000);
+  ASSERT_FALSE(c.is_null()) << "no config event after a change";
+  EXPECT_DOUBLE_EQ(c["wheel_diameter_cm"].get<double>(), 6.12);
+  EXPECT_DOUBLE_EQ(c["wheel_base_cm"].get<double>(), 10.49);
+  EXPECT_EQ(c["steps_per_revolution"], 4096);
+  EXPECT_EQ(c["host_timeout_ms"], 2000);
+  // a refused set_config changes nothing, and so prints nothing
+  r = json::parse(e.Udp(R"({"cmd":"set_config","wheel_base_cm":0})"));
+  EXPECT_EQ(r["ok"], false);
+  EXPECT_TRUE(e.WaitEvent("config", 300).is_null());
+}
+
 TEST(Emulator, AnswersAnOversizeFrameOverThePtyWithMalformed) {
   Emulator e;
   const int fd =

@@ -49,7 +49,11 @@ describe('HybridHAL against the emulator', () => {
   });
 
   it("reports a twin whose wheels are 10 % larger than the robot's as exceeded", async () => {
-    const { hal, emulator } = await emulatedRig({ twin: { robot: { wheelDiameterCm: 6.6 } } });
+    // the twin keeps its own (wrong) wheels instead of taking the robot's
+    const { hal, emulator } = await emulatedRig({
+      twin: { robot: { wheelDiameterCm: 6.6 } },
+      hybrid: { twinGeometry: 'own' },
+    });
     const events: DivergenceEvent[] = [];
     hal.onDivergence((event) => events.push(event));
     try {

@@ -18,3 +18,10 @@ export {
 export type { Target, TargetCliOptions, TargetKind } from './target.js';
 export { openTarget, withTarget } from './target-hal.js';
 export type { OpenTargetOptions, OpenedHal } from './target-hal.js';
+export { computeCalibration } from './calibrate/calibration-math.js';
+export type {
+  CalibrationResult,
+  StraightRun,
+  TurnRun,
+  WheelGeometry,
+} from './calibrate/calibration-math.js';

@@ -1,7 +1,8 @@
 // Builds and connects the HAL a Target names, with a bound on connecting (a robot that is off
 // is NOT_CONNECTED within the timeout, never a hang), and lets go of it the right way after.
 import { NatsHAL, openConnection } from '@hal/nats';
-import { PhysicalHAL } from '@hal/physical';
+import { calibratedGeometry, calibrationSource, PhysicalHAL } from '@hal/physical';
+import type { CalibrationSource } from '@hal/physical';
 import { RemoteHAL } from '@hal/remote';
 import { SimulationHAL, World } from '@hal/simulation';
 import { HalError, isHalError } from '@hal/types';
@@ -34,6 +35,11 @@ export interface OpenTargetOptions {
   json?: boolean;
   /** The device id a simulator reports, or a physical robot's HAL (default: the robot's own). */
   deviceId?: string;
+  /**
+   * Where a physical robot's calibration comes from (default: the target's `--calibration` file,
+   * else the robot's own file in the calibration directory).
+   */
+  calibration?: CalibrationSource;
 }
 
 const CLOSE_TIMEOUT_MS = 5000;
@@ -65,7 +71,12 @@ async function build(
   const watch = options.role === 'watch';
   switch (target.kind) {
     case 'sim': {
+      const robot =
+        target.calibration === undefined
+          ? {}
+          : { robot: await calibratedGeometry(target.calibration, io.env) };
       const hal = new SimulationHAL({
+        ...robot,
         world: new World({ map: target.map }),
         clock: 'realtime',
         realtimeSpeed: target.speed,
@@ -91,6 +102,7 @@ async function build(
           logger: cliLogger(io, options.json === true),
           timeScale: target.timeScale,
           client: 'hal-cli',
+          calibration: options.calibration ?? calibrationSource(target.calibration, io.env),
         },
       );
       return { hal, release: () => hal.cleanup() };

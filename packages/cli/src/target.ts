@@ -12,9 +12,23 @@ import type { NatsCliOptions } from './nats-options.js';
 
 /** A robot a command can talk to. */
 export type Target =
-  | { kind: 'sim'; map: BuiltinMapName; speed: number; deviceId?: string }
-  | { kind: 'udp'; host: string; port: number; key?: string; timeScale: number }
-  | { kind: 'serial'; path: string; baudRate?: number; key?: string; timeScale: number }
+  | { kind: 'sim'; map: BuiltinMapName; speed: number; deviceId?: string; calibration?: string }
+  | {
+      kind: 'udp';
+      host: string;
+      port: number;
+      key?: string;
+      timeScale: number;
+      calibration?: string;
+    }
+  | {
+      kind: 'serial';
+      path: string;
+      baudRate?: number;
+      key?: string;
+      timeScale: number;
+      calibration?: string;
+    }
   | { kind: 'ws'; url: string; token?: string }
   | { kind: 'nats'; deviceId?: string; nats: NatsConnectOptions };
 
@@ -30,6 +44,7 @@ export interface TargetCliOptions extends NatsCliOptions {
   baud?: number;
   key?: string;
   timeScale?: number;
+  calibration?: string;
   ws?: string;
   token?: string;
   device?: string;
@@ -59,6 +74,8 @@ function wsUrlArg(value: string): string {
 export function addTargetOptions(
   command: Command,
   kinds: readonly TargetKind[] = TARGET_KINDS,
+  /** Whether to offer `--calibration` (not to `hal calibrate`, which writes calibrations). */
+  { calibration = true }: { calibration?: boolean } = {},
 ): Command {
   const has = (kind: TargetKind) => kinds.includes(kind);
   if (has('sim')) {
@@ -100,6 +117,14 @@ export function addTargetOptions(
         "clock speed-up: the simulator's, or an emulated robot's --time-scale",
       ).argParser(positiveArg('--time-scale')),
     );
+    if (calibration) {
+      command.addOption(
+        new Option(
+          '--calibration <file|device-id>',
+          "the wheels of this calibration file (from hal calibrate), or of this device's; default the robot's own",
+        ),
+      );
+    }
   }
   if (has('ws')) {
     command
@@ -189,13 +214,14 @@ export function resolveTarget(
   if (kind !== 'serial') onlyWith(options, ['baud'], '--serial');
   if (kind !== 'udp' && kind !== 'serial') onlyWith(options, ['key'], '--udp or --serial');
   if (kind === 'ws' || kind === 'nats')
-    onlyWith(options, ['timeScale'], '--sim, --udp or --serial');
+    onlyWith(options, ['timeScale', 'calibration'], '--sim, --udp or --serial');
   const key = options.key === undefined ? {} : { key: options.key };
+  const calibration = options.calibration === undefined ? {} : { calibration: options.calibration };
   switch (kind) {
     case 'sim':
-      return { kind, map: options.map ?? 'empty', speed: options.timeScale ?? 1 };
+      return { kind, map: options.map ?? 'empty', speed: options.timeScale ?? 1, ...calibration };
     case 'udp':
-      return { kind, ...options.udp!, ...key, timeScale: options.timeScale ?? 1 };
+      return { kind, ...options.udp!, ...key, timeScale: options.timeScale ?? 1, ...calibration };
     case 'serial':
       return {
         kind,
@@ -203,6 +229,7 @@ export function resolveTarget(
         ...(options.baud === undefined ? {} : { baudRate: options.baud }),
         ...key,
         timeScale: options.timeScale ?? 1,
+        ...calibration,
       };
     case 'ws': {
       const token = options.token ?? env['HAL_SERVE_TOKEN'];

@@ -102,7 +102,10 @@ describe('HybridHAL', () => {
     });
 
     it('reports a twin with larger wheels as exceeded after a timed drive, until unsubscribed', async () => {
-      const { hal } = hybridRig({ twin: { robot: { wheelDiameterCm: 6.6 } } });
+      const { hal } = hybridRig({
+        twin: { robot: { wheelDiameterCm: 6.6 } },
+        hybrid: { twinGeometry: 'own' },
+      });
       const listener = vi.fn<(event: DivergenceEvent) => void>();
       const unsubscribe = hal.onDivergence(listener);
       await hal.initialize();
@@ -121,7 +124,7 @@ describe('HybridHAL', () => {
       const log = vi.fn();
       const { hal } = hybridRig({
         twin: { robot: { wheelDiameterCm: 6.6 } },
-        hybrid: { logger: { log } },
+        hybrid: { logger: { log }, twinGeometry: 'own' },
       });
       hal.onDivergence(() => {
         throw new Error('listener broke');

@@ -54,6 +54,22 @@ function exposedConfig(hal: HardwareAbstractionLayer): RobotConfig | undefined {
     : undefined;
 }
 
+/** A twin whose wheel geometry can be set (SimulationHAL's robot can). */
+interface ConfigurableTwin {
+  robot: { setConfig(overrides: Partial<RobotConfig>): unknown };
+}
+
+function isConfigurable(
+  hal: HardwareAbstractionLayer,
+): hal is HardwareAbstractionLayer & ConfigurableTwin {
+  const robot: unknown = (hal as { robot?: unknown }).robot;
+  return (
+    typeof robot === 'object' &&
+    robot !== null &&
+    typeof (robot as { setConfig?: unknown }).setConfig === 'function'
+  );
+}
+
 /**
  * The physical robot and its simulated twin as one HAL (mode 'hybrid'). Every call is validated
  * and gated once, then runs on both at the same time. The physical result is the truth: it is
@@ -168,6 +184,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
         cause: reason,
       });
     }
+    if ((this.#options.twinGeometry ?? 'physical') === 'physical') this.#shapeTwin();
     let physicalPose: Pose;
     let twinPose: Pose;
     try {
@@ -186,6 +203,22 @@ export class HybridHAL implements HardwareAbstractionLayer {
     this.#latest = { positionM: 0, yawRad: 0, exceeded: false };
     this.#ready = true;
     this.#log('info', 'initialized', { physical: this.physical.mode, twin: this.twin.mode });
+  }
+
+  /**
+   * Gives the twin the physical robot's wheel geometry (its calibrated values, once PhysicalHAL
+   * has sent them after hello), so both convert distances to steps alike.
+   */
+  #shapeTwin(): void {
+    const physical = exposedConfig(this.physical);
+    if (physical === undefined || !isConfigurable(this.twin)) return;
+    const { stepsPerRevolution, wheelDiameterCm, wheelBaseCm } = physical;
+    this.twin.robot.setConfig({ stepsPerRevolution, wheelDiameterCm, wheelBaseCm });
+    this.#log('info', 'twin takes the physical wheel geometry', {
+      stepsPerRevolution,
+      wheelDiameterCm,
+      wheelBaseCm,
+    });
   }
 
   /** Cleans up both robots. Safe to call twice; rejects, naming the side, if either cleanup did. */

@@ -36,4 +36,10 @@ export interface HybridHALOptions {
   robotConfig?: () => RobotConfig;
   /** The clock results are stamped with, ms. Default `Date.now`. */
   now?: () => number;
+  /**
+   * 'physical' (default): at `initialize()` the twin (a SimulationHAL) takes the physical robot's
+   * wheel diameter, wheel base and steps per revolution, calibrated values included. 'own': the
+   * twin keeps the geometry it was built with (to study a twin that differs on purpose).
+   */
+  twinGeometry?: 'physical' | 'own';
 }

@@ -1,4 +1,4 @@
-import { PhysicalHAL } from '@hal/physical';
+import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import { SimulationHAL, World } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
 import type { HALConfig, HardwareAbstractionLayer } from '@hal/types';
@@ -40,7 +40,13 @@ export function createRobot(target: RobotTarget): {
     } else {
       connection = { type: 'serial', port: target.serial as string, ...key };
     }
-    return { hal: new PhysicalHAL({ mode: 'physical', deviceId: 'robot', connection }), world: {} };
+    // the robot's calibration file (hal calibrate), sent after every hello
+    const calibration = calibrationSource(undefined, process.env);
+    const hal = new PhysicalHAL(
+      { mode: 'physical', deviceId: 'robot', connection },
+      { calibration },
+    );
+    return { hal, world: {} };
   }
   const sim = new SimulationHAL({
     world: new World(target.map === undefined ? {} : { map: target.map }),

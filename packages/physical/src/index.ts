@@ -1,5 +1,24 @@
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
+export { calibrationParams } from './hal/calibration.js';
+export type { CalibrationSource, WheelCalibration } from './hal/calibration.js';
+export {
+  calibrationDir,
+  calibrationOf,
+  calibrationPath,
+  CalibrationFileSchema,
+  canNameFile,
+  readCalibrationFile,
+  writeCalibrationFile,
+} from './calibration/calibration-file.js';
+export type { CalibrationFile } from './calibration/calibration-file.js';
+export {
+  calibratedGeometry,
+  calibrationFileOf,
+  calibrationSource,
+} from './calibration/calibration-source.js';
+export { DEVICE_SETTING_RANGES } from './protocol/device-config.js';
+export type { SettingRange } from './protocol/device-config.js';
 
 export { DEFAULT_SAFETY_LANE } from './safety-lane.js';
 export type { SafetyLaneTiming } from './safety-lane.js';

@@ -1,6 +1,6 @@
 import { NatsHAL } from '@hal/nats';
 import type { NatsConnectionSource, NatsLogger } from '@hal/nats';
-import { PhysicalHAL } from '@hal/physical';
+import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import type { World } from '@hal/simulation';
 import { SimulationHAL } from '@hal/simulation';
 import { HalError, robotConfig } from '@hal/types';
@@ -35,12 +35,16 @@ export function createDeviceHAL(
         ...(config.robot === undefined ? {} : { robot: robotConfig(definedFields(config.robot)) }),
       });
     case 'physical':
-      return new PhysicalHAL({
-        mode: 'physical',
-        deviceId: config.id,
-        connection: config.connection,
-        ...(config.robot === undefined ? {} : { robot: config.robot }),
-      });
+      return new PhysicalHAL(
+        {
+          mode: 'physical',
+          deviceId: config.id,
+          connection: config.connection,
+          ...(config.robot === undefined ? {} : { robot: config.robot }),
+        },
+        // the robot's calibration file (hal calibrate), sent after every hello
+        { calibration: calibrationSource(undefined, process.env) },
+      );
     case 'nats': {
       if (context.nats === undefined) {
         throw new HalError(

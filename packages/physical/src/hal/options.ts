@@ -1,4 +1,5 @@
 import type { Logger } from '../logger.js';
+import type { CalibrationSource } from './calibration.js';
 import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
 import type { SafetyLaneTiming } from '../safety-lane.js';
 import type { TransportFactory } from '../transport/transport.js';
@@ -43,6 +44,12 @@ export interface PhysicalHALOptions {
   motionTimeoutMarginMs?: number;
   /** Names the host software in `hello`. */
   client?: string;
+  /**
+   * The robot's measured wheel geometry, looked up by the device id its `hello` reports and sent
+   * with `set_config` after every hello (the first and each reconnect). Default: none (the
+   * robot's own geometry).
+   */
+  calibration?: CalibrationSource;
 }
 
 /** What the robot said about itself when the session opened. */

@@ -28,6 +28,8 @@ import type { SafetyInterrupt, SafetyLaneTiming } from '../safety-lane.js';
 import { Session } from '../session.js';
 import type { SessionState } from '../session.js';
 import type { SerialLinkStats, Transport, TransportStats } from '../transport/transport.js';
+import { sendCalibration } from './calibration.js';
+import type { WheelCalibration } from './calibration.js';
 import { createCommunication } from './communication.js';
 import type { HalContext } from './context.js';
 import { defaultTransport, initialRobotConfig, parsePhysicalConfig } from './from-config.js';
@@ -68,6 +70,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   #identity: RobotIdentity | undefined;
   #initialized = false;
   #initializing: Promise<void> | undefined;
+  /** A calibration applied in this HAL's life ({@link applyCalibration}): wins over the source. */
+  #calibration: WheelCalibration | undefined;
 
   constructor(config: HALConfig, options: PhysicalHALOptions = {}) {
     const parsed = parsePhysicalConfig(config);
@@ -170,6 +174,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
         // emergencyStop() was called before initialize() (or after a cleanup): latch the robot too
         await session.command('estop', { reason: hostLatch });
       }
+      await this.#calibrate(hello);
       this.#initialized = true;
       this.#camera?.start();
       this.#log.info('connected', { deviceId: hello.device_id, transport: transport.type });
@@ -255,6 +260,24 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#session?.resumeHeartbeat();
   }
 
+  /**
+   * Sends `calibration` to the robot now (`set_config`), uses it for the host's odometry and
+   * validation, and sends it again after every later hello of this HAL (reconnects). Resolves the
+   * robot configuration now in use; RANGE_EXCEEDED naming the field when a value is outside the
+   * firmware's range (nothing is sent), the robot's own code when it refuses.
+   */
+  async applyCalibration(calibration: WheelCalibration): Promise<RobotConfig> {
+    const deviceId = this.#identity?.deviceId ?? this.#config.deviceId;
+    const config = await sendCalibration(
+      (params) => this.#command('set_config', params),
+      calibration,
+      deviceId,
+    );
+    this.#calibration = calibration;
+    this.#useDeviceConfig(config);
+    return this.#robot;
+  }
+
   /** Asks the robot for its status now (and updates the pose and safety state from it). */
   async refreshStatus(): Promise<StatusReply> {
     return await this.#command('get_status', {});
@@ -301,9 +324,32 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       capabilities: hello.capabilities,
       config: hello.config,
     };
-    this.#robot = robotConfigFromDevice(this.#robot, hello.config);
+    this.#useDeviceConfig(hello.config);
+  }
+
+  #useDeviceConfig(config: HelloReply['config']): void {
+    this.#robot = robotConfigFromDevice(this.#robot, config);
     this.#tracker.setConfig(this.#robot);
     this.#boundary.schemas(); // the call schemas for this robot now, not on the first call
+  }
+
+  /** Sends the robot's calibration, if there is one, once a hello opened the session. */
+  async #calibrate(hello: HelloReply): Promise<void> {
+    const calibration = this.#calibration ?? (await this.#options.calibration?.(hello.device_id));
+    if (calibration === undefined) return;
+    const session = this.#session;
+    if (session === undefined) throw new HalError('NOT_READY', 'the HAL is not initialised');
+    const config = await sendCalibration(
+      (params) => session.command('set_config', params),
+      calibration,
+      hello.device_id,
+    );
+    this.#useDeviceConfig(config);
+    this.#log.info('calibration sent', {
+      deviceId: hello.device_id,
+      wheelDiameterCm: config.wheel_diameter_cm,
+      wheelBaseCm: config.wheel_base_cm,
+    });
   }
 
   async #resync(hello: HelloReply): Promise<void> {
@@ -318,6 +364,12 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#log.info('reconnected', { sid: hello.sid, uptimeMs: status.uptime_ms });
     } catch (error) {
       this.#log.warn('status after reconnect failed', { error: String(error) });
+    }
+    try {
+      // a restarted robot has forgotten its calibration (the e-stop went first, above)
+      await this.#calibrate(hello);
+    } catch (error) {
+      this.#log.error('calibration after reconnect failed', { error: String(error) });
     }
   }
 

@@ -1,5 +1,9 @@
 import { sanitizeEstopReason } from '@hal/types';
-import { deviceGeometry, MAX_STEPS_PER_COMMAND } from '../protocol/device-config.js';
+import {
+  DEVICE_SETTING_RANGES,
+  deviceGeometry,
+  MAX_STEPS_PER_COMMAND,
+} from '../protocol/device-config.js';
 import type { DeviceSettings } from '../protocol/device-config.js';
 import { LED_PATTERNS } from '../protocol/schemas.js';
 import type { AuthScheme, DeviceConfig, ReplyDataOf } from '../protocol/schemas.js';
@@ -8,16 +12,6 @@ import { integerField, isAbsent, numberField, Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
 import { emergencyStop, stopReport } from './robot-state.js';
 import type { RobotState } from './robot-state.js';
-
-/** Every configuration field `set_config` takes: its range, and whether it must be an int. */
-const SETTING_RANGES: Record<keyof DeviceSettings, [number, number, boolean]> = {
-  wheel_diameter_cm: [0.5, 50, false],
-  wheel_base_cm: [1, 100, false],
-  steps_per_revolution: [100, 100000, true],
-  max_speed_steps_per_s: [1, 2048, true],
-  acceleration_steps_per_s2: [1, 100000, true],
-  host_timeout_ms: [500, 10000, true],
-};
 
 function configJson(state: RobotState): DeviceConfig {
   return { ...state.settings, max_steps_per_command: MAX_STEPS_PER_COMMAND };
@@ -75,8 +69,8 @@ function status(state: RobotState): ReplyDataOf<'get_status'> {
 
 function setConfig(state: RobotState, r: Json): ReplyDataOf<'set_config'> {
   const next = { ...state.settings };
-  for (const [field, [min, max, integer]] of Object.entries(SETTING_RANGES) as Array<
-    [keyof DeviceSettings, [number, number, boolean]]
+  for (const [field, { min, max, integer }] of Object.entries(DEVICE_SETTING_RANGES) as Array<
+    [keyof DeviceSettings, (typeof DEVICE_SETTING_RANGES)[keyof DeviceSettings]]
   >) {
     if (isAbsent(r, field)) continue;
     const value = integer ? integerField(r, field) : numberField(r, field);

@@ -8,6 +8,24 @@ export const MAX_STEPS_PER_COMMAND = 40_960;
 /** The configuration `set_config` may change: every {@link DeviceConfig} field but the fixed limit. */
 export type DeviceSettings = Omit<DeviceConfig, 'max_steps_per_command'>;
 
+/** A `set_config` field's accepted range (inclusive, as the firmware checks it). */
+export interface SettingRange {
+  min: number;
+  max: number;
+  integer: boolean;
+  unit: string;
+}
+
+/** Every field `set_config` takes and its range, as the firmware (cube_commands.cpp) checks it. */
+export const DEVICE_SETTING_RANGES: Readonly<Record<keyof DeviceSettings, SettingRange>> = {
+  wheel_diameter_cm: { min: 0.5, max: 50, integer: false, unit: 'cm' },
+  wheel_base_cm: { min: 1, max: 100, integer: false, unit: 'cm' },
+  steps_per_revolution: { min: 100, max: 100_000, integer: true, unit: 'steps' },
+  max_speed_steps_per_s: { min: 1, max: 2048, integer: true, unit: 'steps/s' },
+  acceleration_steps_per_s2: { min: 1, max: 100_000, integer: true, unit: 'steps/s^2' },
+  host_timeout_ms: { min: 500, max: 10_000, integer: true, unit: 'ms' },
+};
+
 /** The wheel geometry of a device configuration, as the step math (`@hal/kinematics`) takes it. */
 export function deviceGeometry(
   c: DeviceSettings,

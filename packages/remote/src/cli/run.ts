@@ -1,5 +1,5 @@
 // Builds the chosen HAL, initialises it and serves it until stopped.
-import { PhysicalHAL } from '@hal/physical';
+import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { RemoteLogger } from '../logger.js';
@@ -26,7 +26,12 @@ export function buildHal(command: ServeCommand, logger: RemoteLogger): HardwareA
         };
   return new PhysicalHAL(
     { mode: 'physical', deviceId: command.deviceId, connection },
-    { logger, timeScale: command.timeScale },
+    // the robot's calibration file (hal calibrate), sent after every hello
+    {
+      logger,
+      timeScale: command.timeScale,
+      calibration: calibrationSource(undefined, process.env),
+    },
   );
 }
 

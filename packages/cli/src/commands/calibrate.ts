@@ -1,0 +1,202 @@
+// `hal calibrate`: measures a physical robot's wheel diameter and wheel base (a measured straight
+// line, a measured full turn), sends them to the robot and saves them in the robot's calibration
+// file, which every later command sends again after each hello. Scripts give the measurements as
+// options; a person is asked for them.
+import { Command, Option } from 'commander';
+import {
+  calibrationDir,
+  calibrationOf,
+  calibrationPath,
+  canNameFile,
+  PhysicalHAL,
+  readCalibrationFile,
+  writeCalibrationFile,
+} from '@hal/physical';
+import type { CalibrationSource } from '@hal/physical';
+import { positiveArg } from '@hal/remote/cli';
+import { HalError } from '@hal/types';
+import { canPrompt, prompter } from '../calibrate/prompt.js';
+import { runCalibration, TURN_DEG } from '../calibrate/run-calibration.js';
+import type { CalibrationRun } from '../calibrate/run-calibration.js';
+import { CliError } from '../cli-error.js';
+import { emit, progress } from '../io.js';
+import type { CliIO } from '../io.js';
+import { addTargetOptions, resolveTarget } from '../target.js';
+import type { TargetCliOptions } from '../target.js';
+import { withTarget } from '../target-hal.js';
+import type { RegisterCommand } from './index.js';
+
+interface CalibrateOptions extends TargetCliOptions {
+  distanceCm: number;
+  measuredDistanceCm?: number;
+  measuredTurnDeg?: number;
+  calibrationDir?: string;
+  save: boolean;
+  answerTimeout: number;
+}
+
+/** The longest straight line asked for: well inside one command's 40960 steps on 6 cm wheels. */
+const MAX_DISTANCE_CM = 150;
+const MIN_DISTANCE_CM = 20;
+
+function distanceArg(value: string): number {
+  const n = positiveArg('--distance-cm')(value);
+  if (n < MIN_DISTANCE_CM || n > MAX_DISTANCE_CM) {
+    throw new CliError(
+      'USAGE',
+      `"--distance-cm" must be ${MIN_DISTANCE_CM}..${MAX_DISTANCE_CM} cm, got "${value}"`,
+    );
+  }
+  return n;
+}
+
+export interface CalibrateDocument extends CalibrationRun {
+  deviceId: string;
+  /** The calibration file written (absent with --no-save). */
+  file?: string;
+}
+
+const cm = (value: number) => `${value.toFixed(3)} cm`;
+
+function calibrateText(doc: CalibrateDocument): string {
+  const { before, after, straight, turn } = doc;
+  return [
+    `robot ${doc.deviceId} calibrated`,
+    `  straight line: measured ${straight.measuredCm} cm, the old geometry said ${straight.predictedCm.toFixed(1)} cm`,
+    `  full turn:     measured ${turn.measuredDeg} degrees, the old geometry said ${turn.predictedDeg.toFixed(1)} degrees`,
+    `  wheel diameter ${cm(before.wheelDiameterCm)} -> ${cm(after.wheelDiameterCm)}`,
+    `  wheel base     ${cm(before.wheelBaseCm)} -> ${cm(after.wheelBaseCm)}`,
+    '  sent to the robot (set_config): it uses them now',
+    doc.file === undefined
+      ? '  not saved (--no-save): the robot forgets them when it restarts'
+      : `  saved to ${doc.file}: hal sends them to this robot after every hello`,
+  ].join('\n');
+}
+
+/**
+ * The robot's own calibration file, if readable. A corrupt one is reported and left out, so the
+ * calibration that replaces it can still run.
+ */
+function tolerantSource(dir: string, io: CliIO, json: boolean): CalibrationSource {
+  return async (deviceId) => {
+    if (!canNameFile(deviceId)) return undefined;
+    const path = calibrationPath(dir, deviceId);
+    try {
+      const found = await readCalibrationFile(path);
+      return found === undefined ? undefined : calibrationOf(found);
+    } catch (error) {
+      progress(
+        io,
+        { json },
+        `warning: ${(error as Error).message}; calibrating from the robot's own values`,
+      );
+      return undefined;
+    }
+  };
+}
+
+export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
+  const command = new Command('calibrate')
+    .description(
+      "measure a physical robot's wheel diameter and wheel base: it drives a straight line and a full turn, you measure them",
+    )
+    .addOption(
+      new Option('--distance-cm <cm>', 'the straight line to drive')
+        .argParser(distanceArg)
+        .default(100),
+    )
+    .addOption(
+      new Option(
+        '--measured-distance-cm <cm>',
+        'the distance it travels, measured (for scripts; else asked)',
+      ).argParser(positiveArg('--measured-distance-cm')),
+    )
+    .addOption(
+      new Option(
+        '--measured-turn-deg <degrees>',
+        `the angle its ${TURN_DEG}-degree turn turns, measured (for scripts; else asked)`,
+      ).argParser(positiveArg('--measured-turn-deg')),
+    )
+    .addOption(
+      new Option(
+        '--calibration-dir <dir>',
+        'where calibration files are kept (default $HAL_CALIBRATION_DIR, else $XDG_CONFIG_HOME/hal/calibration, else ~/.config/hal/calibration)',
+      ),
+    )
+    .addOption(new Option('--no-save', 'send the values to the robot only; write no file'))
+    .addOption(
+      new Option('--answer-timeout <s>', 'give up when a question is not answered within this')
+        .argParser(positiveArg('--answer-timeout'))
+        .default(600),
+    );
+  const kinds = ['udp', 'serial'] as const;
+  addTargetOptions(command, kinds, { calibration: false }).action(
+    async (options: CalibrateOptions) => {
+      const target = resolveTarget(options, io.env, kinds);
+      const json = global().json;
+      const interactive =
+        options.measuredDistanceCm === undefined || options.measuredTurnDeg === undefined;
+      if (interactive && (json || !canPrompt(io))) {
+        throw new CliError(
+          'USAGE',
+          'give --measured-distance-cm and --measured-turn-deg, or run hal calibrate in a terminal to be asked',
+        );
+      }
+      const dir = options.calibrationDir ?? calibrationDir(io.env);
+      const connect =
+        options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+      const ask = interactive ? prompter(io, options.answerTimeout * 1000) : undefined;
+      try {
+        const doc = await withTarget(
+          target,
+          io,
+          { ...connect, json, calibration: tolerantSource(dir, io, json) },
+          async ({ hal, deviceId }) => {
+            if (!(hal instanceof PhysicalHAL)) {
+              throw new HalError('NOT_IMPLEMENTED', 'hal calibrate needs a physical robot');
+            }
+            // before any motion: an id that cannot name the file would lose the measurement
+            const path = options.save ? calibrationPath(dir, deviceId) : undefined;
+            progress(io, { json }, `calibrating robot ${deviceId}`);
+            const run = await runCalibration(
+              hal,
+              {
+                distanceCm: options.distanceCm,
+                ...(options.measuredDistanceCm === undefined
+                  ? {}
+                  : { measuredDistanceCm: options.measuredDistanceCm }),
+                ...(options.measuredTurnDeg === undefined
+                  ? {}
+                  : { measuredTurnDeg: options.measuredTurnDeg }),
+                ...(ask === undefined ? {} : { prompter: ask }),
+              },
+              io,
+              { json },
+            );
+            if (path === undefined) return { deviceId, ...run };
+            await writeCalibrationFile(path, {
+              version: 1,
+              deviceId,
+              wheelDiameterCm: run.after.wheelDiameterCm,
+              wheelBaseCm: run.after.wheelBaseCm,
+              calibratedAt: new Date().toISOString(),
+              measurements: {
+                straightSteps: Math.round((run.straight.leftSteps + run.straight.rightSteps) / 2),
+                measuredDistanceCm: run.straight.measuredCm,
+                turnSteps: Math.round(
+                  (Math.abs(run.turn.leftSteps) + Math.abs(run.turn.rightSteps)) / 2,
+                ),
+                measuredTurnDeg: run.turn.measuredDeg,
+              },
+            });
+            return { deviceId, ...run, file: path };
+          },
+        );
+        emit(io, { json }, doc, () => calibrateText(doc));
+      } finally {
+        ask?.close();
+      }
+    },
+  );
+  program.addCommand(command);
+};
