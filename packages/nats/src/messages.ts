@@ -64,8 +64,12 @@ export const ImuDataSchema = z.looseObject({
   gyro_rad_per_s: Xyz.describe('Rotation rate, rad/s'),
   temperature_celsius: z.number().optional().describe('IMU temperature, where it has a sensor'),
   mag_tesla: Xyz.optional().describe('Magnetic field, tesla, where it has a magnetometer'),
-  heading_rad: z.number().describe('Heading, radians (ours, beside the quaternion)'),
-  source: z.string().describe('Where the reading comes from: sensor, odometry, simulation'),
+  // ours, always sent by our gateway; optional so that a device speaking only the spec is valid
+  heading_rad: z.number().optional().describe('Heading, radians (ours, beside the quaternion)'),
+  source: z
+    .string()
+    .optional()
+    .describe('Where the reading comes from: sensor, odometry, simulation (ours)'),
 });
 export type ImuData = z.infer<typeof ImuDataSchema>;
 

@@ -68,6 +68,18 @@ export const SYSTEM_CHECKS: readonly Check[] = [
   {
     capability: 'system',
     group: 'format',
+    name: 'bare-request',
+    title: 'a bare spec payload on system.health.req (no envelope) is answered as HAL v1',
+    run: async (ctx) => {
+      const answer = await ctx.ask(ctx.wire.subject('health'), ctx.wire.bare({}), 'health');
+      const problem = validReply(answer);
+      if (problem !== undefined) return fail(`a bare health request was answered ${problem}`);
+      return pass('a bare {} got a valid health reply');
+    },
+  },
+  {
+    capability: 'system',
+    group: 'format',
     name: 'capability-reply',
     title: "capability replies are valid, and the envelope's caps are the announced caps",
     run: async (ctx) => {
