@@ -18,6 +18,10 @@ export const registerTest: RegisterCommand = (program, ctx) => {
       "the device to check (default: the spec's default device)",
       deviceIdArg,
     )
+    .option(
+      '--all',
+      'check every device seen announcing its capabilities on NATS (listens 6 s), one after the other',
+    )
     .addOption(
       new Option(
         '--capability <name>',
