@@ -13,6 +13,7 @@ import { SimulationHAL } from '@hal/simulation';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
 import jpeg from 'jpeg-js';
+import { availableParallelism } from 'node:os';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from './nats-server.js';
 
@@ -119,9 +120,17 @@ describe('the spec fields a gateway sends', () => {
 
   it("reports the serving process's free memory and its measured CPU use in health", async () => {
     await ask('hal.v1.system.health.req', {}); // starts a measuring window
-    const busyUntil = Date.now() + 400;
-    while (Date.now() < busyUntil) Math.sqrt(Math.random());
+    // burn 300 ms of CPU in this process (the gateway's), however long the machine makes it take
+    const wallStart = performance.now();
+    const cpuStart = process.cpuUsage();
+    while ((process.cpuUsage(cpuStart).user + process.cpuUsage(cpuStart).system) / 1000 < 300) {
+      Math.sqrt(Math.random());
+    }
     const health = HealthSchema.parse((await ask('hal.v1.system.health.req', {})).payload);
+    const wallMs = performance.now() - wallStart;
+    // at least the 300 ms burnt over the window (a little longer than ours: the first reply came first)
+    expect(health.cpu_percent).toBeGreaterThan((300 / (wallMs + 250)) * 100 * 0.8);
+    expect(health.cpu_percent).toBeLessThan(100 * availableParallelism() + 10);
     expect(health.free_memory_bytes).toBeGreaterThan(1_000_000);
     expect(health.cpu_percent).toBeGreaterThan(10);
     // no supply voltage is measured on the simulated robot: none is reported
