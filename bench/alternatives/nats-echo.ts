@@ -9,7 +9,11 @@ if (url === undefined) {
   process.exit(2);
 }
 const nc = await connect({ servers: url });
-nc.subscribe('bench.echo', { callback: (_error, msg) => msg.respond(msg.data) });
+nc.subscribe('bench.echo', {
+  callback: (_error, msg) => {
+    msg.respond(msg.data);
+  },
+});
 await nc.flush();
 nc.publish('bench.echo.up', new TextEncoder().encode('{}'));
 await nc.flush();
