@@ -72,6 +72,35 @@ describe('hal serve --nats', () => {
     expect([...(node?.caps ?? [])].sort()).toEqual([...announced].sort());
   });
 
+  it("passes the compliance runner's mDNS check, asked for with hal test hal --mdns", async () => {
+    const run = await runHalProcess(
+      [
+        '--json',
+        'test',
+        'hal',
+        '--device',
+        'desk-sim',
+        '--capability',
+        'system',
+        '--samples',
+        '3',
+        '--mdns',
+        '--nats',
+        nats.url,
+      ],
+      60_000,
+    );
+    expect(run.code, run.stderr).toBe(0);
+    const report = JSON.parse(run.stdout) as {
+      checks: { id: string; status: string; reason: string }[];
+    };
+    expect(report.checks.find((c) => c.id === 'system/capability/mdns-announcement')).toMatchObject(
+      {
+        status: 'pass',
+      },
+    );
+  }, 90_000);
+
   it('answers hal status --device from another process', async () => {
     const run = await runHalProcess([
       '--json',

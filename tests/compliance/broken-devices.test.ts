@@ -2,6 +2,7 @@
 // device (a fake spec device written with plain nats.js), so every check group is shown able to
 // fail, beside the same fake device without faults passing every check.
 import { runCompliance } from '@hal/compliance';
+import { announceTafyNode } from '@hal/discovery';
 import type { ComplianceReport, SpecCapability } from '@hal/compliance';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
@@ -281,6 +282,46 @@ describe('runCompliance against a fake device written from the spec', () => {
       );
       const skewed = await check({ imuNotUnitQuaternion: true }, ['sensor.imu'], ALL_FEATURES);
       expect(failed(skewed.report)).toEqual(['sensor.imu/state/orientation']);
+    },
+  );
+
+  it(
+    'checks the mDNS announcement when asked: found with the queried caps, missing, or with other caps',
+    { timeout: 60_000 },
+    async () => {
+      const run = async (announce: 'right' | 'none' | 'other caps') => {
+        const deviceId = `fake-mdns-${(next += 1)}-${process.pid}`;
+        const device = startFakeSpecDevice(nc, deviceId);
+        const caps = announce === 'other caps' ? device.caps.slice(1) : device.caps;
+        const announcer =
+          announce === 'none' ? undefined : await announceTafyNode({ deviceId, caps, port: 4222 });
+        await nc.flush();
+        try {
+          const report = await runCompliance({
+            connection: nc,
+            device: deviceId,
+            capabilities: ['system'],
+            samples: 3,
+            announceTimeoutMs: 3000,
+            mdns: true,
+            mdnsTimeoutMs: 2500,
+          });
+          return report.checks.find((c) => c.id === 'system/capability/mdns-announcement');
+        } finally {
+          device.close();
+          await announcer?.stop();
+        }
+      };
+      expect(await run('right')).toMatchObject({ status: 'pass' });
+      const missing = await run('none');
+      expect(missing?.status).toBe('fail');
+      expect(missing?.reason).toContain('no _tafynode._tcp node with device_id');
+      const other = await run('other caps');
+      expect(other?.status).toBe('fail');
+      expect(other?.reason).toContain("the TXT record's caps are");
+      // not asked for: not part of the run
+      const { report } = await check({}, ['system']);
+      expect(report.checks.map((c) => c.id)).not.toContain('system/capability/mdns-announcement');
     },
   );
 

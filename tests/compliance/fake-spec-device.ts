@@ -56,6 +56,8 @@ const TOP_TURN = 1; // rad/s
 const RATE_HZ = 20;
 
 export interface FakeSpecDevice {
+  /** The capabilities it announces. */
+  readonly caps: readonly string[];
   readonly estopped: boolean;
   readonly moving: boolean;
   close(): void;
@@ -265,6 +267,7 @@ export function startFakeSpecDevice(
     ),
   );
   return {
+    caps,
     get estopped() {
       return robot.estopped;
     },

@@ -28,6 +28,10 @@ export const registerTest: RegisterCommand = (program, ctx) => {
         `check only this capability (repeatable): ${SPEC_CAPABILITIES.join(', ')}; default all`,
       ).argParser(capabilityArg),
     )
+    .option(
+      '--mdns',
+      "also check the device's mDNS announcement (_tafynode._tcp); on the device's network segment",
+    )
     .option('--samples <n>', 'requests per latency measurement (default 20)', samplesArg)
     .option(
       '--judge <percentile>',

@@ -19,6 +19,8 @@ export interface TestHalOptions extends NatsCliOptions {
   device?: string;
   /** Every device seen announcing itself on NATS, one after the other. */
   all?: boolean;
+  /** Also check the device's mDNS announcement. */
+  mdns?: boolean;
   capability?: SpecCapability[];
   samples?: number;
   judge?: 'p50' | 'p99';
@@ -52,6 +54,7 @@ async function checkOne(
     capabilities: options.capability,
     ...(options.samples === undefined ? {} : { samples: options.samples }),
     ...(options.judge === undefined ? {} : { judge: options.judge }),
+    ...(options.mdns === true ? { mdns: true } : {}),
     signal: io.signal,
     onProgress: (event) => {
       const line = progressLine(event);
