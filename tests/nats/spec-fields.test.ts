@@ -142,6 +142,23 @@ describe('the spec fields a gateway sends', () => {
   });
 });
 
+describe('readings the robot measures', () => {
+  it('reports the supply voltage in health diagnostics when the robot measures it', async () => {
+    const status = hal.safety.getSafetyStatus.bind(hal.safety);
+    hal.safety.getSafetyStatus = () => ({ ...status(), batteryVoltage: 7.9 });
+    try {
+      const health = HealthSchema.parse(
+        (await ask('hal.v1.system.health.req', { include_diagnostics: true })).payload,
+      );
+      expect(health.diagnostics?.voltage).toBe(7.9);
+      const [state] = await collect('hal.v1.motor.differential.state', 300);
+      expect(parse(state ?? new Uint8Array()).payload['battery_volts']).toBe(7.9);
+    } finally {
+      hal.safety.getSafetyStatus = status;
+    }
+  });
+});
+
 describe('bare spec payloads on command subjects', () => {
   it('drives on a bare command, as HAL v1 from an unnamed sender', async () => {
     const before = (await hal.locomotion.getPose()).position;

@@ -1,7 +1,14 @@
 import { SimulationHAL } from '@hal/simulation';
 import type { DistanceSensors, HardwareAbstractionLayer, IMUReading } from '@hal/types';
 import { describe, expect, it } from 'vitest';
-import { quaternionFromHeading, rangePerSensor, readImu, readRange } from './gateway-streams.js';
+import { V1_ROBOT } from '@hal/types';
+import {
+  quaternionFromHeading,
+  rangePerSensor,
+  readDifferentialState,
+  readImu,
+  readRange,
+} from './gateway-streams.js';
 
 /** A simulated robot whose IMU reads as `imu`. */
 function withImu(imu: IMUReading): HardwareAbstractionLayer {
@@ -88,6 +95,28 @@ describe('the range streams', () => {
       ]);
       expect(range?.perSensor[0]?.distance_m).toBe(range?.summary.front_m);
       expect(range?.perSensor[0]?.max_range_m).toBe(2);
+    } finally {
+      await hal.cleanup();
+    }
+  });
+});
+
+describe('the state stream', () => {
+  it('sends battery_volts and current_amps only when the robot measures them', async () => {
+    const hal = new SimulationHAL();
+    await hal.initialize();
+    try {
+      const unmeasured = await readDifferentialState(hal, V1_ROBOT);
+      expect(unmeasured).not.toHaveProperty('battery_volts');
+      expect(unmeasured).not.toHaveProperty('current_amps');
+      const status = hal.safety.getSafetyStatus.bind(hal.safety);
+      hal.safety.getSafetyStatus = () => ({
+        ...status(),
+        batteryVoltage: 7.4,
+        batteryCurrent: 0.35,
+      });
+      const measured = await readDifferentialState(hal, V1_ROBOT);
+      expect(measured).toMatchObject({ battery_volts: 7.4, current_amps: 0.35 });
     } finally {
       await hal.cleanup();
     }
