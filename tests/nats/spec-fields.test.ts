@@ -10,6 +10,7 @@ import {
   serveHalOnNats,
 } from '@hal/nats';
 import { SimulationHAL } from '@hal/simulation';
+import { sanitizeEstopReason } from '@hal/types';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
 import jpeg from 'jpeg-js';
@@ -179,6 +180,28 @@ describe('bare spec payloads on command subjects', () => {
     expect(hal.safety.isEmergencyStopped()).toBe(true);
     expect((await ask('hal.v1.safety.estop.reset', {})).payload).toMatchObject({ ok: true });
     expect(hal.safety.isEmergencyStopped()).toBe(false);
+  });
+
+  it('latches an e-stop whatever its reason is, a number included, bare or in an envelope', async () => {
+    const envelope = (payload: unknown) => ({
+      hal_major: 1,
+      hal_minor: 0,
+      schema: 's',
+      device_id: 'c',
+      caps: [],
+      ts: new Date().toISOString(),
+      payload,
+    });
+    for (const [body, reason] of [
+      [{ reason: 42 }, 42],
+      [envelope({ reason: ['pit', 'ahead'] }), ['pit', 'ahead']],
+    ] as const) {
+      expect((await ask('hal.v1.safety.estop.cmd', body)).payload).toMatchObject({ ok: true });
+      expect(hal.safety.isEmergencyStopped()).toBe(true);
+      expect(hal.safety.getSafetyStatus().emergencyStopReason).toBe(sanitizeEstopReason(reason));
+      expect((await ask('hal.v1.safety.estop.reset', {})).payload).toMatchObject({ ok: true });
+    }
+    expect(sanitizeEstopReason(42)).toBe('42');
   });
 
   it('refuses what is neither an envelope nor a valid bare payload with MALFORMED, moving nothing', async () => {

@@ -1,4 +1,4 @@
-import { HalError, V1_ROBOT, isHalError, toHalError } from '@hal/types';
+import { HalError, V1_ROBOT, isHalError, sanitizeEstopReason, toHalError } from '@hal/types';
 import type { HalErrorPayload, HardwareAbstractionLayer, RobotConfig } from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
 import { decodeArgs, decodeMessage, decodeSpecMessage, encodeMessage } from './codec.js';
@@ -271,11 +271,10 @@ class Gateway implements HalGateway {
   }
 
   async #onEstop(msg: Msg): Promise<void> {
-    const body = decodeSpecMessage(
-      msg.data,
-      z.looseObject({ reason: z.string().optional() }),
-    ).payload;
-    const result = await this.hal.safety.emergencyStop(body.reason);
+    // never refused for its reason: any value becomes a stored reason (sanitizeEstopReason)
+    const body = decodeSpecMessage(msg.data, z.looseObject({ reason: z.unknown() })).payload;
+    const reason = body.reason === undefined ? undefined : sanitizeEstopReason(body.reason);
+    const result = await this.hal.safety.emergencyStop(reason);
     await this.#reply(msg, SCHEMAS.ack, { ok: result.success, emergency_stopped: true });
   }
 
