@@ -1,6 +1,7 @@
 // `hal serve --nats` and `hal status` as two processes, as users run them, through a real
 // nats-server: the gateway owns the simulator; every other program reaches it through NATS.
 import { runHal } from '@hal/cli';
+import { discoverTafyNodes } from '@hal/discovery';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import type { NatsServer } from '../nats/nats-server.js';
@@ -12,6 +13,7 @@ interface ServeEvent {
   event: string;
   device?: string;
   nats?: { servers: string[]; subjects: string[] };
+  mdns?: { service: string; name: string } | { error: string };
 }
 
 let nats: NatsServer;
@@ -48,8 +50,56 @@ describe('hal serve --nats', () => {
         servers: [nats.url],
         subjects: ['hal.v1.dev.desk-sim.>', 'hal.v1.> (the default device)'],
       },
+      mdns: { service: '_tafynode._tcp', name: 'desk-sim' },
     });
   });
+
+  it("is announced by mDNS as the spec's _tafynode._tcp, with its device id and capabilities", async () => {
+    const nodes = await discoverTafyNodes({ timeoutMs: 2500 });
+    const node = nodes.find((n) => n.deviceId === 'desk-sim');
+    expect(node).toBeDefined();
+    expect(node?.port).toBe(Number(new URL(nats.url).port));
+    expect(node?.servers).toEqual([nats.url]);
+    const status = await runHalProcess([
+      '--json',
+      'status',
+      '--device',
+      'desk-sim',
+      '--nats',
+      nats.url,
+    ]);
+    const announced = (JSON.parse(status.stdout) as { capabilities: string[] }).capabilities;
+    expect([...(node?.caps ?? [])].sort()).toEqual([...announced].sort());
+  });
+
+  it("passes the compliance runner's mDNS check, asked for with hal test hal --mdns", async () => {
+    const run = await runHalProcess(
+      [
+        '--json',
+        'test',
+        'hal',
+        '--device',
+        'desk-sim',
+        '--capability',
+        'system',
+        '--samples',
+        '3',
+        '--mdns',
+        '--nats',
+        nats.url,
+      ],
+      60_000,
+    );
+    expect(run.code, run.stderr).toBe(0);
+    const report = JSON.parse(run.stdout) as {
+      checks: { id: string; status: string; reason: string }[];
+    };
+    expect(report.checks.find((c) => c.id === 'system/capability/mdns-announcement')).toMatchObject(
+      {
+        status: 'pass',
+      },
+    );
+  }, 90_000);
 
   it('answers hal status --device from another process', async () => {
     const run = await runHalProcess([

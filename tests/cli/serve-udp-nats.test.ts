@@ -81,6 +81,7 @@ describe('hal serve --nats --udp, a gateway to the emulated robot', () => {
         servers: [nats.url],
         subjects: ['hal.v1.dev.cube-gw.>', 'hal.v1.> (the default device)'],
       },
+      mdns: { service: '_tafynode._tcp', name: 'cube-gw' },
     });
   });
 

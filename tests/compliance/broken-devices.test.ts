@@ -2,13 +2,14 @@
 // device (a fake spec device written with plain nats.js), so every check group is shown able to
 // fail, beside the same fake device without faults passing every check.
 import { runCompliance } from '@hal/compliance';
+import { announceTafyNode } from '@hal/discovery';
 import type { ComplianceReport, SpecCapability } from '@hal/compliance';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import { startFakeSpecDevice } from './fake-spec-device.js';
-import type { FakeSpecDevice, Faults } from './fake-spec-device.js';
+import type { FakeSpecDevice, Faults, Features } from './fake-spec-device.js';
 
 let nc: NatsConnection;
 let next = 0;
@@ -27,9 +28,10 @@ afterAll(async () => {
 async function check(
   faults: Faults,
   capabilities?: SpecCapability[],
+  features: Features = {},
 ): Promise<{ report: ComplianceReport; device: FakeSpecDevice }> {
   const deviceId = `fake-${(next += 1)}`;
-  const device = startFakeSpecDevice(nc, deviceId, faults);
+  const device = startFakeSpecDevice(nc, deviceId, faults, features);
   await nc.flush();
   try {
     const report = await runCompliance({
@@ -49,6 +51,9 @@ async function check(
 
 const failed = (report: ComplianceReport) =>
   report.checks.filter((c) => c.status === 'fail').map((c) => c.id);
+const reasonOf = (report: ComplianceReport, id: string) =>
+  report.checks.find((c) => c.id === id)?.reason ?? '';
+const ALL_FEATURES: Features = { camera: true, imu: true, range: true };
 
 describe('runCompliance against a fake device written from the spec', () => {
   it(
@@ -75,6 +80,22 @@ describe('runCompliance against a fake device written from the spec', () => {
         expect(skip.reason).toContain(`does not announce ${skip.capability}`);
       expect(device.estopped).toBe(false);
       expect(device.moving).toBe(false);
+    },
+  );
+
+  it(
+    'passes every check of a device with a camera, an IMU and range sensors that follows the spec',
+    { timeout: 90_000 },
+    async () => {
+      const { report } = await check({}, ['camera', 'sensor.imu', 'sensor.range'], ALL_FEATURES);
+      expect(report.checks.filter((c) => c.status !== 'pass')).toEqual([]);
+      expect(report.checks.map((c) => c.id)).toEqual(
+        expect.arrayContaining([
+          'camera/format/frame-reply',
+          'sensor.imu/state/orientation',
+          'sensor.range/state/one-per-sensor',
+        ]),
+      );
     },
   );
 
@@ -178,6 +199,129 @@ describe('runCompliance against a fake device written from the spec', () => {
         'never showed emergency_stopped',
       );
       expect(device.estopped).toBe(false);
+    },
+  );
+
+  it(
+    'fails message format when ts is a number of milliseconds, not ISO 8601',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ numericTs: true }, ['system']);
+      expect(failed(report)).toContain('system/format/health-reply');
+      expect(reasonOf(report, 'system/format/health-reply')).toContain('not an ISO 8601 string');
+    },
+  );
+
+  it(
+    'fails message format when health lacks free_memory_bytes and cpu_percent',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ healthWithoutResources: true }, ['system']);
+      expect(failed(report)).toContain('system/format/health-reply');
+      expect(reasonOf(report, 'system/format/health-reply')).toContain('free_memory_bytes');
+    },
+  );
+
+  it(
+    'fails message format when a bare spec payload is refused on a command subject',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ refusesBare: true }, ['system', 'motor.differential']);
+      expect(failed(report)).toEqual([
+        'system/format/bare-request',
+        'motor.differential/format/bare-command',
+      ]);
+    },
+  );
+
+  it(
+    'fails error handling when a bare message that is no valid payload is taken as a command',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ acceptsNeither: true }, ['motor.differential']);
+      expect(failed(report)).toEqual(['motor.differential/errors/neither-envelope-nor-payload']);
+    },
+  );
+
+  it(
+    'fails message format when a camera reply lacks its width and height, or states the wrong ones',
+    { timeout: 60_000 },
+    async () => {
+      const without = await check({ frameWithoutSize: true }, ['camera'], ALL_FEATURES);
+      expect(failed(without.report)).toContain('camera/format/frame-reply');
+      expect(reasonOf(without.report, 'camera/format/frame-reply')).toMatch(/width/);
+      const wrong = await check({ frameWrongSize: true }, ['camera'], ALL_FEATURES);
+      expect(failed(wrong.report)).toEqual(['camera/format/frame-reply']);
+      expect(reasonOf(wrong.report, 'camera/format/frame-reply')).toContain(
+        'says 320x240, the JPEG is 32x24',
+      );
+    },
+  );
+
+  it(
+    "fails message format when range data is one message for all sensors, not the spec's one-sensor form",
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({ rangeAllInOne: true }, ['sensor.range'], ALL_FEATURES);
+      expect(failed(report)).toEqual([
+        'sensor.range/format/stream',
+        'sensor.range/state/one-per-sensor',
+      ]);
+      expect(reasonOf(report, 'sensor.range/format/stream')).toContain('sensor');
+    },
+  );
+
+  it(
+    'fails the IMU checks when orientation_quaternion is missing, or not a unit quaternion',
+    { timeout: 60_000 },
+    async () => {
+      const missing = await check({ imuWithoutQuaternion: true }, ['sensor.imu'], ALL_FEATURES);
+      expect(failed(missing.report)).toEqual(expect.arrayContaining(['sensor.imu/format/stream']));
+      expect(reasonOf(missing.report, 'sensor.imu/format/stream')).toContain(
+        'orientation_quaternion',
+      );
+      const skewed = await check({ imuNotUnitQuaternion: true }, ['sensor.imu'], ALL_FEATURES);
+      expect(failed(skewed.report)).toEqual(['sensor.imu/state/orientation']);
+    },
+  );
+
+  it(
+    'checks the mDNS announcement when asked: found with the queried caps, missing, or with other caps',
+    { timeout: 60_000 },
+    async () => {
+      const run = async (announce: 'right' | 'none' | 'other caps') => {
+        const deviceId = `fake-mdns-${(next += 1)}-${process.pid}`;
+        const device = startFakeSpecDevice(nc, deviceId);
+        const caps = announce === 'other caps' ? device.caps.slice(1) : device.caps;
+        const announcer =
+          announce === 'none' ? undefined : await announceTafyNode({ deviceId, caps, port: 4222 });
+        await nc.flush();
+        try {
+          const report = await runCompliance({
+            connection: nc,
+            device: deviceId,
+            capabilities: ['system'],
+            samples: 3,
+            announceTimeoutMs: 3000,
+            mdns: true,
+            mdnsTimeoutMs: 2500,
+          });
+          return report.checks.find((c) => c.id === 'system/capability/mdns-announcement');
+        } finally {
+          device.close();
+          await announcer?.stop();
+        }
+      };
+      expect(await run('right')).toMatchObject({ status: 'pass' });
+      const missing = await run('none');
+      expect(missing?.status).toBe('fail');
+      expect(missing?.reason).toContain('no _tafynode._tcp node with device_id');
+      const other = await run('other caps');
+      expect(other?.status).toBe('fail');
+      expect(other?.reason).toContain("the TXT record's caps are");
+      // not asked for: not part of the run
+      const { report } = await check({}, ['system']);
+      expect(report.checks.map((c) => c.id)).not.toContain('system/capability/mdns-announcement');
     },
   );
 

@@ -116,4 +116,49 @@ describe('hal test hal', () => {
       expect(broken.moving).toBe(false);
     },
   );
+
+  it(
+    'tests every device seen on NATS with --all, and exits 1 naming the device that failed',
+    { timeout: 180_000 },
+    async () => {
+      const io = captureIO();
+      const code = await runHal(
+        [
+          '--json',
+          'test',
+          'hal',
+          '--all',
+          '--capability',
+          'motor.differential',
+          '--samples',
+          '5',
+          '--nats',
+          server.url,
+        ],
+        io,
+      );
+      expect(code).toBe(1);
+      const reports = JSON.parse(io.stdout()) as ComplianceReport[];
+      // the gateway is the default device too: seen on both subjects, tested once, by its id
+      expect(reports.map((r) => [r.deviceId, r.addressed, r.ok])).toEqual([
+        ['fake-broken', 'fake-broken', false],
+        ['sim-cli', 'sim-cli', true],
+      ]);
+      const error = JSON.parse(io.stderr()) as { error: { code: string; message: string } };
+      expect(error.error.code).toBe('CHECK_FAILED');
+      expect(error.error.message).toMatch(
+        /^1 of 2 devices failed: fake-broken \(1 of \d+ checks failed: motor\.differential\/errors\/out-of-range\)$/,
+      );
+    },
+  );
+
+  it('refuses --all beside --device as a usage error, sending nothing', async () => {
+    const io = captureIO();
+    const code = await runHal(
+      ['test', 'hal', '--all', '--device', 'sim-cli', '--nats', server.url],
+      io,
+    );
+    expect(code).toBe(2);
+    expect(io.stderr()).toContain('--all tests every device seen on NATS: leave out --device');
+  });
 });

@@ -3,6 +3,14 @@
 // and latches an e-stop. Each fault breaks one thing, so the tests can show that every check
 // group of the compliance runner fails a device that gets it wrong.
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
+import jpeg from 'jpeg-js';
+
+/** What the device has beyond drive, e-stop and health (each announced, and served as the spec says). */
+export interface Features {
+  camera?: boolean;
+  imu?: boolean;
+  range?: boolean;
+}
 
 export interface Faults {
   /** Health replies claim hal_major 2 (message format). */
@@ -23,6 +31,24 @@ export interface Faults {
   estopNotLatched?: boolean;
   /** The state stream never reports the e-stop (state consistency; the runner must still reset). */
   stateHidesEstop?: boolean;
+  /** Envelopes carry `ts` as ms since the epoch, not ISO 8601 (message format). */
+  numericTs?: boolean;
+  /** Camera replies lack width and height (message format). */
+  frameWithoutSize?: boolean;
+  /** Camera replies state a size that is not the JPEG's (message format). */
+  frameWrongSize?: boolean;
+  /** Range data in one message for all sensors, `{front_m, left_m, right_m}`, not the spec's (format). */
+  rangeAllInOne?: boolean;
+  /** IMU data without `orientation_quaternion` (message format). */
+  imuWithoutQuaternion?: boolean;
+  /** An IMU quaternion that is not of unit length (state consistency). */
+  imuNotUnitQuaternion?: boolean;
+  /** Health without `free_memory_bytes` and `cpu_percent` (message format). */
+  healthWithoutResources?: boolean;
+  /** A bare spec payload (no envelope) is refused as MALFORMED (message format). */
+  refusesBare?: boolean;
+  /** A bare message that is not a valid payload is taken as a stop (error handling). */
+  acceptsNeither?: boolean;
 }
 
 const TOP_SPEED = 0.05; // m/s
@@ -30,6 +56,8 @@ const TOP_TURN = 1; // rad/s
 const RATE_HZ = 20;
 
 export interface FakeSpecDevice {
+  /** The capabilities it announces. */
+  readonly caps: readonly string[];
   readonly estopped: boolean;
   readonly moving: boolean;
   close(): void;
@@ -39,8 +67,13 @@ export function startFakeSpecDevice(
   nc: NatsConnection,
   deviceId: string,
   faults: Faults = {},
+  features: Features = {},
 ): FakeSpecDevice {
   const caps = ['motor.differential:v1.0', 'safety.estop:v1.0', 'system.health:v1.0'];
+  if (features.camera) caps.push('camera.rgb:v1.0');
+  if (features.imu) caps.push('sensor.imu:v1.0');
+  if (features.range) caps.push('sensor.range:v1.0');
+  const frame = jpeg.encode({ data: Buffer.alloc(32 * 24 * 4, 0x60), width: 32, height: 24 }, 80);
   const robot = { x: 0, y: 0, yaw: 0, v: 0, w: 0, until: 0, estopped: false };
   const subs: Subscription[] = [];
   const timers: NodeJS.Timeout[] = [];
@@ -55,7 +88,7 @@ export function startFakeSpecDevice(
         schema,
         device_id: deviceId,
         caps,
-        ts: new Date().toISOString(),
+        ts: faults.numericTs ? Date.now() : new Date().toISOString(),
         payload,
       }),
     );
@@ -64,11 +97,20 @@ export function startFakeSpecDevice(
   };
   const error = (msg: Msg, code: string, message: string) =>
     reply(msg, 'tafylabs/hal/error/1.0', { error: { code, message } });
+  // an envelope's payload, or (as the spec's example driver reads it) a bare payload
   const read = (msg: Msg): Record<string, unknown> | undefined => {
     try {
-      const body = JSON.parse(new TextDecoder().decode(msg.data)) as { payload?: unknown };
-      return typeof body.payload === 'object' && body.payload !== null
-        ? (body.payload as Record<string, unknown>)
+      const body = JSON.parse(new TextDecoder().decode(msg.data)) as Record<string, unknown>;
+      if (typeof body !== 'object' || body === null || Array.isArray(body)) return undefined;
+      if (!('hal_major' in body) && !('payload' in body)) {
+        if (faults.refusesBare) return undefined;
+        if (faults.acceptsNeither && typeof body['linear_vel_m_per_s'] !== 'number') {
+          return { linear_vel_m_per_s: 0, angular_vel_rad_per_s: 0 };
+        }
+        return body;
+      }
+      return typeof body['payload'] === 'object' && body['payload'] !== null
+        ? (body['payload'] as Record<string, unknown>)
         : undefined;
     } catch {
       return undefined;
@@ -86,6 +128,7 @@ export function startFakeSpecDevice(
     status: robot.estopped ? 'emergency_stopped' : 'healthy',
     uptime_s: (Date.now() - started) / 1000,
     mode: 'simulation',
+    ...(faults.healthWithoutResources ? {} : { free_memory_bytes: 182_000, cpu_percent: 3.5 }),
   });
 
   serve(at('motor', 'differential', 'cmd'), (msg) => {
@@ -117,7 +160,16 @@ export function startFakeSpecDevice(
   serve(at('system', 'capability', 'req'), (msg) =>
     reply(msg, 'tafylabs/hal/system/capability/1.0', announcement()),
   );
-  serve(at('camera', 'frame', 'req'), (msg) => error(msg, 'NOT_IMPLEMENTED', 'no camera'));
+  serve(at('camera', 'frame', 'req'), (msg) => {
+    if (!features.camera) return error(msg, 'NOT_IMPLEMENTED', 'no camera');
+    const size = faults.frameWrongSize ? { width: 320, height: 240 } : { width: 32, height: 24 };
+    reply(msg, 'tafylabs/hal/camera/frame/1.0', {
+      format: 'jpeg',
+      ...(faults.frameWithoutSize ? {} : size),
+      data: Buffer.from(frame.data).toString('base64'),
+      timestamp_ms: Date.now(),
+    });
+  });
   serve(at('safety', 'estop', 'cmd'), (msg) => {
     Object.assign(robot, { estopped: true, v: 0, w: 0 });
     reply(msg, 'tafylabs/hal/ack/1.0', { ok: true });
@@ -152,6 +204,41 @@ export function startFakeSpecDevice(
           timestamp_ms: now,
         }),
       );
+      if (features.imu) {
+        const q = { w: Math.cos(robot.yaw / 2), x: 0, y: 0, z: Math.sin(robot.yaw / 2) };
+        nc.publish(
+          at('sensor', 'imu', 'data'),
+          envelope('tafylabs/hal/sensor/imu/1.0', {
+            ...(faults.imuWithoutQuaternion
+              ? {}
+              : {
+                  orientation_quaternion: faults.imuNotUnitQuaternion ? { ...q, w: q.w + 0.5 } : q,
+                }),
+            accel_m_per_s2: { x: 0, y: 0, z: 9.81 },
+            gyro_rad_per_s: { x: 0, y: 0, z: robot.w },
+          }),
+        );
+      }
+      if (features.range && faults.rangeAllInOne) {
+        nc.publish(
+          at('sensor', 'range', 'data'),
+          envelope('tafylabs/hal/sensor/range/1.0', { front_m: 1, left_m: 1, right_m: 1 }),
+        );
+      } else if (features.range) {
+        for (const sensor of ['front', 'rear']) {
+          nc.publish(
+            at('sensor', 'range', 'data'),
+            envelope('tafylabs/hal/sensor/range/1.0', {
+              sensor,
+              distance_m: sensor === 'front' ? 0.8 : 4,
+              min_range_m: 0.03,
+              max_range_m: 4,
+              fov_deg: 27,
+              confidence: sensor === 'front' ? 0.9 : 0,
+            }),
+          );
+        }
+      }
       if (faults.unannouncedImu) {
         nc.publish(
           at('sensor', 'imu', 'data'),
@@ -180,6 +267,7 @@ export function startFakeSpecDevice(
     ),
   );
   return {
+    caps,
     get estopped() {
       return robot.estopped;
     },

@@ -1,4 +1,6 @@
 export { runCompliance, CHECKS } from './runner.js';
+export { DEFAULT_SEEN_WINDOW_MS, devicesSeenOnNats } from './discover.js';
+export type { SeenDevice } from './discover.js';
 export { formatReport, measuredText, specText } from './format-report.js';
 export {
   LATENCY_CLASSES,

@@ -33,13 +33,16 @@ describe('inspect', () => {
     expect(result.payload?.x_m).toBe(0);
   });
 
-  it('names what is wrong: JSON, envelope, hal_major, sender, capability strings, payload', () => {
+  it('names what is wrong: JSON, envelope, ts, hal_major, sender, capability strings, payload', () => {
     const issues = (data: Uint8Array) => inspect(data, DifferentialStateSchema, 'cube-01').issues;
     expect(issues(bytes('{"hal_major":'))).toEqual(['the message is not JSON']);
     expect(issues(bytes({ payload: state }))[0]).toMatch(/^not a HAL envelope/);
     expect(issues(bytes(envelope({ hal_major: 2 })))).toEqual(["hal_major is 2, the spec's is 1"]);
     expect(issues(bytes(envelope({ device_id: 'cube-02' })))).toEqual([
       'device_id is "cube-02", not the device "cube-01"',
+    ]);
+    expect(issues(bytes(envelope({ ts: 1710412200000 })))).toEqual([
+      'ts is 1710412200000, not an ISO 8601 string as the spec writes it ("2024-03-14T10:30:00.000Z")',
     ]);
     expect(issues(bytes(envelope({ caps: ['motor'] })))).toEqual([
       'caps holds "motor", not a {domain}.{type}:v{major}.{minor} string',

@@ -23,7 +23,8 @@ function firstIssue(error: z.ZodError): string {
 }
 
 /**
- * Checks one message as a spec-only client reads it: JSON, the Tafy envelope, `hal_major`,
+ * Checks one message as a spec-only client reads it: JSON, the Tafy envelope, `ts` in ISO 8601
+ * (the spec's form; a reader accepts ms too, a device must send the spec's), `hal_major`,
  * `device_id` (the sender: it must be the device under test), capability strings, and the
  * payload against `schema` (or the spec's error shape).
  */
@@ -54,6 +55,11 @@ export function inspect<S extends z.ZodType>(
   result.envelope = env;
   if (env.hal_major !== HAL_MAJOR) {
     result.issues.push(`hal_major is ${env.hal_major}, the spec's is ${HAL_MAJOR}`);
+  }
+  if (typeof env.ts !== 'string') {
+    result.issues.push(
+      `ts is ${JSON.stringify(env.ts)}, not an ISO 8601 string as the spec writes it ("2024-03-14T10:30:00.000Z")`,
+    );
   }
   if (deviceId !== undefined && env.device_id !== deviceId) {
     result.issues.push(`device_id is "${env.device_id}", not the device "${deviceId}"`);

@@ -25,6 +25,16 @@ describe('resolveOptions', () => {
     });
   });
 
+  it('refuses an mdns option that is not a boolean as INVALID_PARAMETER', () => {
+    expect(
+      errorOf(() => resolveOptions({ connection, mdns: 'yes' as unknown as boolean })),
+    ).toMatchObject({
+      code: 'INVALID_PARAMETER',
+      message: '"mdns" must be true or false, got yes',
+    });
+    expect(resolveOptions({ connection })).toMatchObject({ mdns: false, mdnsTimeoutMs: 3000 });
+  });
+
   it('refuses NaN and wrong types as INVALID_PARAMETER, naming the option', () => {
     expect(errorOf(() => resolveOptions({ connection, samples: Number.NaN }))).toMatchObject({
       code: 'INVALID_PARAMETER',

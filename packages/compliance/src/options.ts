@@ -30,6 +30,14 @@ export interface ComplianceOptions {
   turnRateRadPerS?: number;
   /** Each motion check's `duration_ms` (the robot stops by itself then even if we vanish). Default 3000. */
   motionMs?: number;
+  /**
+   * Also check that the device is announced by mDNS as the spec's `_tafynode._tcp`, with its
+   * device id and the capabilities it answers on NATS. Default false: mDNS reaches one network
+   * segment, so ask for it only where the runner shares the device's.
+   */
+  mdns?: boolean;
+  /** How long to browse for the mDNS announcement, ms. Default 3000. */
+  mdnsTimeoutMs?: number;
   /** The envelope's `device_id` of what the runner sends. Default `hal-compliance`. */
   clientId?: string;
   /** Aborting stops the run after the running check (the robot is still stopped and reset). */
@@ -58,6 +66,8 @@ export function resolveOptions(options: ComplianceOptions): ResolvedOptions {
     turnRateRadPerS: options.turnRateRadPerS ?? 0.3,
     motionMs: options.motionMs ?? 3000,
     clientId: options.clientId ?? 'hal-compliance',
+    mdns: options.mdns ?? false,
+    mdnsTimeoutMs: options.mdnsTimeoutMs ?? 3000,
   };
   const bounds: [keyof ResolvedOptions, number, number][] = [
     ['samples', 1, 10_000],
@@ -67,6 +77,7 @@ export function resolveOptions(options: ComplianceOptions): ResolvedOptions {
     ['driveSpeedMPerS', 0.001, 10],
     ['turnRateRadPerS', 0.01, 20],
     ['motionMs', 500, 60_000],
+    ['mdnsTimeoutMs', 100, 60_000],
   ];
   for (const [name, min, max] of bounds) {
     const value = resolved[name];
@@ -90,6 +101,12 @@ export function resolveOptions(options: ComplianceOptions): ResolvedOptions {
     throw new HalError(
       'INVALID_PARAMETER',
       `"samples" must be an integer, got ${resolved.samples}`,
+    );
+  }
+  if (typeof resolved.mdns !== 'boolean') {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"mdns" must be true or false, got ${String(resolved.mdns)}`,
     );
   }
   if (resolved.judge !== 'p50' && resolved.judge !== 'p99') {

@@ -95,6 +95,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
       if (!capabilities.includes(check.capability)) continue;
       // a check of honest absence does not apply to a capability the device has
       if (check.when === 'unannounced' && announces(ctx.caps, check.capability)) continue;
+      if (check.onlyWith === 'mdns' && !resolved.mdns) continue;
       const result = await runOne(ctx, check, options.onProgress);
       checks.push(result);
       options.onProgress?.({ type: 'result', result });

@@ -56,6 +56,11 @@ export class DeviceWire {
     );
   }
 
+  /** A bare spec payload, as the spec's own example driver reads it: no envelope around it. */
+  bare(payload: unknown): Uint8Array {
+    return encoder.encode(JSON.stringify(payload));
+  }
+
   async request(
     subject: string,
     data: Uint8Array,

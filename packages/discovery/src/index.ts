@@ -19,3 +19,12 @@ export {
   parseAnnouncementTxt,
 } from './txt-record.js';
 export type { AnnouncedAuth, ParsedAnnouncement, RobotAnnouncement } from './txt-record.js';
+export {
+  TAFY_NODE_PROTOCOL,
+  TAFY_NODE_SERVICE,
+  TAFY_NODE_TYPE,
+  announceTafyNode,
+  discoverTafyNodes,
+  tafyNodeTxt,
+} from './tafy-node.js';
+export type { FoundTafyNode, TafyNodeAnnouncement, TafyNodeAnnouncer } from './tafy-node.js';

@@ -1,6 +1,13 @@
 import { HalError } from '@hal/types';
 import { describe, expect, it } from 'vitest';
-import { decodeArgs, decodeMessage, encodeArgs, encodeMessage } from './codec.js';
+import {
+  UNNAMED_SENDER,
+  decodeArgs,
+  decodeMessage,
+  decodeSpecMessage,
+  encodeArgs,
+  encodeMessage,
+} from './codec.js';
 import { DifferentialCommandSchema } from './messages.js';
 
 describe('call arguments', () => {
@@ -30,6 +37,48 @@ describe('messages', () => {
     const data = encodeMessage('s', 'client-1', [], { linear_vel_m_per_s: 'fast' });
     expect(() => decodeMessage(data, DifferentialCommandSchema)).toThrow(
       /linear_vel_m_per_s|expected number/,
+    );
+  });
+});
+
+describe('spec messages', () => {
+  const bytes = (value: unknown) => new TextEncoder().encode(JSON.stringify(value));
+
+  it('take a bare spec payload as HAL v1 from an unnamed sender', () => {
+    const message = decodeSpecMessage(
+      bytes({ linear_vel_m_per_s: 0.02, angular_vel_rad_per_s: 0, duration_ms: 500 }),
+      DifferentialCommandSchema,
+    );
+    expect(message.device_id).toBe(UNNAMED_SENDER);
+    expect(message.hal_major).toBe(1);
+    expect(message.payload.duration_ms).toBe(500);
+  });
+
+  it('still read an envelope as the envelope, naming its sender', () => {
+    const data = encodeMessage('s', 'client-1', [], {
+      linear_vel_m_per_s: 0,
+      angular_vel_rad_per_s: 0,
+    });
+    expect(decodeSpecMessage(data, DifferentialCommandSchema).device_id).toBe('client-1');
+  });
+
+  it('refuse with MALFORMED what is neither an envelope nor a valid bare payload', () => {
+    const refused = (value: unknown) => {
+      try {
+        decodeSpecMessage(bytes(value), DifferentialCommandSchema);
+      } catch (error) {
+        return error instanceof HalError ? `${error.code}: ${error.message}` : 'not a HalError';
+      }
+      return 'accepted';
+    };
+    expect(refused({ linear_vel_m_per_s: 'fast', angular_vel_rad_per_s: 0 })).toMatch(
+      /^MALFORMED: neither a HAL envelope nor a bare payload/,
+    );
+    expect(refused({ duration_ms: 500 })).toMatch(/^MALFORMED/);
+    expect(refused([1, 2])).toMatch(/^MALFORMED: not a HAL envelope/);
+    // an envelope field makes it an envelope, held to the envelope's rules
+    expect(refused({ hal_major: 1, linear_vel_m_per_s: 0, angular_vel_rad_per_s: 0 })).toMatch(
+      /^MALFORMED: not a HAL envelope/,
     );
   });
 });

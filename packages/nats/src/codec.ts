@@ -1,4 +1,4 @@
-import { HalError, makeEnvelope, parseEnvelope } from '@hal/types';
+import { HAL_MAJOR, HAL_MINOR, HalError, makeEnvelope, parseEnvelope } from '@hal/types';
 import type { Envelope } from '@hal/types';
 import type { z } from 'zod';
 
@@ -29,6 +29,52 @@ export function decodeMessage<S extends z.ZodType>(
     throw new HalError('MALFORMED', 'message is not JSON', { cause });
   }
   return parseEnvelope(raw, payload);
+}
+
+/** The sender of a bare spec payload, which names nobody (never a valid device id). */
+export const UNNAMED_SENDER = '(unnamed)';
+
+/**
+ * Decodes a message on one of the spec's subjects: an envelope, or a bare spec payload (the spec's
+ * own example driver reads a command's fields at the top level), which is taken as HAL v1 from
+ * {@link UNNAMED_SENDER}. A JSON object with any envelope field is held to the envelope; what is
+ * neither a valid envelope nor a valid bare payload is MALFORMED.
+ */
+export function decodeSpecMessage<S extends z.ZodType>(
+  data: Uint8Array,
+  payload: S,
+): Envelope<z.output<S>> {
+  let raw: unknown;
+  try {
+    raw = JSON.parse(decoder.decode(data));
+  } catch (cause) {
+    throw new HalError('MALFORMED', 'message is not JSON', { cause });
+  }
+  if (typeof raw !== 'object' || raw === null || Array.isArray(raw) || looksLikeEnvelope(raw)) {
+    return parseEnvelope(raw, payload);
+  }
+  const body = payload.safeParse(raw);
+  if (!body.success) {
+    throw new HalError(
+      'MALFORMED',
+      `neither a HAL envelope nor a bare payload: ${body.error.issues[0]?.message ?? 'invalid'}`,
+    );
+  }
+  return {
+    hal_major: HAL_MAJOR,
+    hal_minor: HAL_MINOR,
+    schema: 'bare',
+    device_id: UNNAMED_SENDER,
+    caps: [],
+    ts: new Date().toISOString(),
+    payload: body.data,
+  };
+}
+
+const ENVELOPE_FIELDS = ['hal_major', 'hal_minor', 'schema', 'device_id', 'caps', 'ts', 'payload'];
+
+function looksLikeEnvelope(raw: object): boolean {
+  return ENVELOPE_FIELDS.some((field) => field in raw);
 }
 
 // JSON has no NaN, Infinity or undefined; call arguments keep them, so a NaN power is refused

@@ -1,14 +1,16 @@
-import { HalError, V1_ROBOT, isHalError, toHalError } from '@hal/types';
+import { HalError, V1_ROBOT, isHalError, sanitizeEstopReason, toHalError } from '@hal/types';
 import type { HalErrorPayload, HardwareAbstractionLayer, RobotConfig } from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
-import { decodeArgs, decodeMessage, encodeMessage } from './codec.js';
+import { decodeArgs, decodeMessage, decodeSpecMessage, encodeMessage } from './codec.js';
 import { CommandQueue } from './command-queue.js';
 import { ControllerWatchdog } from './controller-watchdog.js';
+import { CpuMeter } from './cpu-meter.js';
 import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
 import { wheelPowersFor } from './drive-mapping.js';
 import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
 import { HAL_CALLS } from './hal-calls.js';
+import { jpegSize } from './jpeg-size.js';
 import type { NatsLogger } from './logger.js';
 import { silentNatsLogger } from './logger.js';
 import {
@@ -21,6 +23,7 @@ import {
 import type { CapabilityAnnouncement, Health, HalCallReply } from './messages.js';
 import { subjectFor } from './subjects.js';
 import type { SubjectName } from './subjects.js';
+import { getHeapStatistics } from 'node:v8';
 import { z } from 'zod';
 
 export type GatewayOptions = NatsConnectionSource & {
@@ -84,6 +87,7 @@ class Gateway implements HalGateway {
   readonly #robot: RobotConfig;
   readonly #log: NatsLogger;
   readonly #watchdog: ControllerWatchdog;
+  readonly #cpu = new CpuMeter();
   #streaming = false;
   #closed = false;
 
@@ -114,7 +118,7 @@ class Gateway implements HalGateway {
     this.#serve('cameraFrame', (m) => this.#onCamera(m));
     this.#serve('log', (m) => this.#onLog(m));
     this.#serve('heartbeat', async (m) => {
-      this.#watchdog.heard(decodeMessage(m.data, z.unknown()).device_id);
+      this.#watchdog.heard(decodeSpecMessage(m.data, z.looseObject({})).device_id);
     });
     const rate = this.options.stateRateHz ?? 20;
     if (rate !== 0 && !(rate >= 10 && rate <= 100)) {
@@ -234,7 +238,7 @@ class Gateway implements HalGateway {
   }
 
   async #onDrive(msg: Msg): Promise<void> {
-    const envelope = decodeMessage(msg.data, DifferentialCommandSchema);
+    const envelope = decodeSpecMessage(msg.data, DifferentialCommandSchema);
     const command = envelope.payload;
     this.#watchdog.heard(envelope.device_id);
     const { left, right } = wheelPowersFor(command, this.#robot);
@@ -267,19 +271,22 @@ class Gateway implements HalGateway {
   }
 
   async #onEstop(msg: Msg): Promise<void> {
-    const body = decodeMessage(msg.data, z.looseObject({ reason: z.string().optional() })).payload;
-    const result = await this.hal.safety.emergencyStop(body.reason);
+    // never refused for its reason: any value becomes a stored reason (sanitizeEstopReason)
+    const body = decodeSpecMessage(msg.data, z.looseObject({ reason: z.unknown() })).payload;
+    const reason = body.reason === undefined ? undefined : sanitizeEstopReason(body.reason);
+    const result = await this.hal.safety.emergencyStop(reason);
     await this.#reply(msg, SCHEMAS.ack, { ok: result.success, emergency_stopped: true });
   }
 
   async #onEstopReset(msg: Msg): Promise<void> {
+    decodeSpecMessage(msg.data, z.looseObject({}));
     const result = await this.hal.safety.resetEmergencyStop();
     if (!result.success) throw new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? '');
     await this.#reply(msg, SCHEMAS.ack, { ok: true, emergency_stopped: false });
   }
 
   async #onHealth(msg: Msg): Promise<void> {
-    const request = decodeMessage(msg.data, HealthRequestSchema).payload;
+    const request = decodeSpecMessage(msg.data, HealthRequestSchema).payload;
     const status = this.hal.safety.getSafetyStatus();
     const health: Health = {
       status: !this.hal.isReady()
@@ -291,26 +298,37 @@ class Gateway implements HalGateway {
             : 'healthy',
       uptime_s: (Date.now() - this.#started) / 1000,
       mode: this.hal.mode,
+      free_memory_bytes: getHeapStatistics().total_available_size,
+      cpu_percent: this.#cpu.percent(),
       battery_percent: status.batteryLevel,
     };
     if (status.temperature !== undefined) health.temperature_celsius = status.temperature;
-    if (request.include_diagnostics === true) health.diagnostics = { errors: status.errors };
+    if (request.include_diagnostics === true) {
+      health.diagnostics = { errors: status.errors };
+      if (status.batteryVoltage !== undefined) health.diagnostics.voltage = status.batteryVoltage;
+    }
     await this.#reply(msg, SCHEMAS.health, health);
   }
 
   async #onCamera(msg: Msg): Promise<void> {
-    decodeMessage(msg.data, CameraFrameRequestSchema);
+    decodeSpecMessage(msg.data, CameraFrameRequestSchema);
     const url = await this.hal.vision.captureFrame();
     const data = url.slice(url.indexOf(',') + 1);
+    const size = jpegSize(Buffer.from(data, 'base64'));
+    if (size === undefined) {
+      throw new HalError('HARDWARE_ERROR', 'the camera returned a frame that is not a JPEG');
+    }
     await this.#reply(msg, SCHEMAS.cameraFrame, {
       format: 'jpeg',
+      width: size.width,
+      height: size.height,
       data,
       timestamp_ms: Date.now(),
     });
   }
 
   async #onLog(msg: Msg): Promise<void> {
-    const body = decodeMessage(
+    const body = decodeSpecMessage(
       msg.data,
       z.looseObject({ message: z.unknown(), level: z.unknown().optional() }),
     ).payload;
@@ -340,7 +358,10 @@ class Gateway implements HalGateway {
       const imu = await readImu(this.hal);
       if (imu !== undefined) this.#publish('imuData', SCHEMAS.imu, imu);
       const range = await readRange(this.hal);
-      if (range !== undefined) this.#publish('rangeData', SCHEMAS.range, range);
+      if (range !== undefined) {
+        for (const sensor of range.perSensor) this.#publish('rangeData', SCHEMAS.range, sensor);
+        this.#publish('rangeSummary', SCHEMAS.rangeSummary, range.summary);
+      }
     } catch (thrown) {
       this.#log.debug('state read failed', { error: toHalError(thrown).message });
     } finally {

@@ -24,7 +24,9 @@ export {
   HealthRequestSchema,
   HealthSchema,
   ImuDataSchema,
+  QuaternionSchema,
   RangeDataSchema,
+  RangeSummarySchema,
   SCHEMAS,
 } from './messages.js';
 export type {
@@ -37,6 +39,7 @@ export type {
   Health,
   ImuData,
   RangeData,
+  RangeSummary,
 } from './messages.js';
 export { silentNatsLogger } from './logger.js';
 export type { NatsLogger } from './logger.js';

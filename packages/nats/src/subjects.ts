@@ -6,6 +6,7 @@ export const SUBJECTS = Object.freeze({
   differentialState: ['motor', 'differential', 'state'],
   imuData: ['sensor', 'imu', 'data'],
   rangeData: ['sensor', 'range', 'data'],
+  rangeSummary: ['sensor', 'range', 'all'],
   cameraFrame: ['camera', 'frame', 'req'],
   health: ['system', 'health', 'req'],
   capabilityReq: ['system', 'capability', 'req'],

@@ -108,6 +108,7 @@ export function readDistanceSensors(
     right: coneReading(world, robot, -Math.PI / 2, o),
     frontLeft: coneReading(world, robot, Math.PI / 4, o),
     frontRight: coneReading(world, robot, -Math.PI / 4, o),
+    limits: { minM: 0, maxM: o.maxRange, fieldOfViewDeg: o.fieldOfViewDeg },
     source: 'simulation',
   };
 }

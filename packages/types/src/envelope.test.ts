@@ -3,6 +3,7 @@ import { z } from 'zod';
 import {
   buildSubject,
   EnvelopeSchema,
+  envelopeTimeMs,
   HalErrorPayloadSchema,
   makeEnvelope,
   parseEnvelope,
@@ -25,6 +26,15 @@ describe('envelope', () => {
     const parsed = parseEnvelope(wire, PoseMessage);
     expect(parsed.payload.x_m).toBe(1);
     expect(parsed.device_id).toBe('cube-01');
+  });
+
+  it('writes ts as an ISO 8601 string, as the spec does, and reads both forms back as a time', () => {
+    const before = Date.now();
+    const envelope = makeEnvelope({ schema: 's', device_id: 'd' }, {});
+    expect(envelope.ts).toMatch(/^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z$/);
+    expect(envelopeTimeMs(envelope)).toBeGreaterThanOrEqual(before);
+    expect(envelopeTimeMs({ ts: '2024-03-14T10:30:00.000Z' })).toBe(1710412200000);
+    expect(envelopeTimeMs({ ts: 1710412200000 })).toBe(1710412200000);
   });
 
   it('refuses a newer major version, a bad payload and a non-envelope with MALFORMED', () => {

@@ -32,7 +32,7 @@ export const EnvelopeSchema = z
     ts: z
       .union([z.number(), z.iso.datetime({ offset: true })])
       .describe(
-        'Time the message was made: ms since the Unix epoch (what we send) or an ISO 8601 string (as the spec writes it)',
+        "Time the message was made: an ISO 8601 string (the spec's form, what we send) or ms since the Unix epoch (accepted when reading)",
       ),
     payload: z.unknown().describe('The message body'),
   })
@@ -45,14 +45,14 @@ export interface Envelope<P = unknown> {
   /** The sender: the robot on what a device publishes, the client's id on what a client sends. */
   device_id: string;
   caps: string[];
-  /** ms since the Unix epoch, or an ISO 8601 string from a client that writes the spec's form. */
+  /** An ISO 8601 string (the spec's form, what we send), or ms since the Unix epoch (read too). */
   ts: number | string;
   payload: P;
 }
 
-/** Wraps a payload in an envelope of this library's version. */
+/** Wraps a payload in an envelope of this library's version, `ts` as the spec writes it (ISO 8601). */
 export function makeEnvelope<P>(
-  init: { schema: string; device_id: string; caps?: readonly string[]; ts?: number },
+  init: { schema: string; device_id: string; caps?: readonly string[]; ts?: number | string },
   payload: P,
 ): Envelope<P> {
   if (!DEVICE_ID.test(init.device_id)) {
@@ -67,9 +67,14 @@ export function makeEnvelope<P>(
     schema: init.schema,
     device_id: init.device_id,
     caps: [...(init.caps ?? [])],
-    ts: init.ts ?? Date.now(),
+    ts: init.ts ?? new Date().toISOString(),
     payload,
   };
+}
+
+/** When the envelope's `ts` says it was made, ms since the Unix epoch (either form of `ts`). */
+export function envelopeTimeMs(envelope: Pick<Envelope, 'ts'>): number {
+  return typeof envelope.ts === 'number' ? envelope.ts : Date.parse(envelope.ts);
 }
 
 /** Parses an envelope, checking its payload with `payload`; a newer major version is refused. */

@@ -127,6 +127,7 @@ export {
   HAL_MINOR,
   HalErrorPayloadSchema,
   buildSubject,
+  envelopeTimeMs,
   makeEnvelope,
   parseEnvelope,
   parseSubject,

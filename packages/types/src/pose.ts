@@ -65,6 +65,14 @@ export const DistanceSensorsSchema = z
     right: finite.describe('metres to the nearest obstacle on the right'),
     frontLeft: finite.optional().describe('metres, 45 degrees left'),
     frontRight: finite.optional().describe('metres, 45 degrees right'),
+    limits: z
+      .object({
+        minM: finite.describe('metres, the shortest distance a sensor reads'),
+        maxM: finite.describe('metres, the longest; the reading when nothing is in range'),
+        fieldOfViewDeg: finite.describe('degrees, the full cone of each sensor'),
+      })
+      .optional()
+      .describe('What every sensor can see, where the robot knows it'),
     source: ValueSourceSchema.optional(),
   })
   .describe("Range readings, metres (the sensor's maximum range when nothing is in range)");
@@ -75,6 +83,10 @@ export const IMUReadingSchema = z
     acceleration: Vector3Schema.describe('m/s^2, robot frame'),
     gyroscope: Vector3Schema.describe('rad/s, robot frame'),
     heading: finite.describe('radians, counter-clockwise positive, (-pi, pi]'),
+    temperature: finite.optional().describe('degrees Celsius, where the IMU has a thermometer'),
+    magneticField: Vector3Schema.optional().describe(
+      'tesla, robot frame, where the IMU has a magnetometer',
+    ),
     source: ValueSourceSchema.optional(),
   })
   .describe('Inertial reading');
@@ -102,6 +114,10 @@ export const SafetyStatusSchema = z
     emergencyStopped: z.boolean(),
     batteryLevel: z.number().min(0).max(100).describe('percent; 100 where the robot has no gauge'),
     temperature: finite.optional().describe('degrees Celsius'),
+    batteryVoltage: finite.optional().describe('volts, where the robot measures its supply'),
+    batteryCurrent: finite
+      .optional()
+      .describe('amperes drawn from the supply, where the robot measures it'),
     errors: z.array(z.string()).describe('Active faults and recorded safety trips'),
     emergencyStopReason: z.string().optional(),
   })

@@ -2,6 +2,8 @@
 // gateway of @hal/nats), on WebSocket (serveHal of @hal/remote), or both, until Ctrl-C. Then it
 // stops serving and cleans the HAL up, which stops a physical robot.
 import { Command, Option } from 'commander';
+import { TAFY_NODE_TYPE } from '@hal/discovery';
+import type { TafyNodeAnnouncer } from '@hal/discovery';
 import { serveHalOnNats } from '@hal/nats';
 import type { HalGateway } from '@hal/nats';
 import { checkBinding, integerArg } from '@hal/remote/cli';
@@ -11,6 +13,7 @@ import { HalError, isHalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
+import { announceGateway } from '../serve/announce-node.js';
 import { servePlan, servedSubjects } from '../serve/where.js';
 import type { ServeCliOptions } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
@@ -35,6 +38,12 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
       new Option(
         '--no-default-device',
         "do not answer the spec's bare subjects (hal.v1.motor...); for all but one device of a fleet",
+      ),
+    )
+    .addOption(
+      new Option(
+        '--no-mdns',
+        "do not announce the NATS gateway by mDNS (as the spec's _tafynode._tcp)",
       ),
     )
     .addOption(
@@ -82,6 +91,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
     const { hal } = opened;
     let gateway: HalGateway | undefined;
     let server: HalServer | undefined;
+    let announcer: TafyNodeAnnouncer | undefined;
     try {
       const deviceId = options.device ?? opened.deviceId;
       if (plan.nats !== undefined) {
@@ -112,6 +122,19 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
           logger: cliLogger(io, global().json),
         });
       }
+      let mdns: { service: string; name: string } | { error: string } | undefined;
+      if (plan.nats !== undefined && options.mdns !== false) {
+        const announced = await announceGateway({
+          deviceId,
+          caps: hal.getDeviceInfo().capabilities,
+          servers: [plan.nats.connect.servers].flat(),
+        });
+        if (typeof announced === 'string') mdns = { error: announced };
+        else {
+          announcer = announced;
+          mdns = { service: TAFY_NODE_TYPE, name: announced.name };
+        }
+      }
       const serving = {
         event: 'serving',
         device: deviceId,
@@ -125,6 +148,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
               },
             }),
         ...(server === undefined ? {} : { ws: { url: server.url } }),
+        ...(mdns === undefined ? {} : { mdns }),
       };
       emit(io, global(), serving, () =>
         [
@@ -133,12 +157,18 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
             ? []
             : [`  nats ${serving.nats.servers.join(',')}: ${serving.nats.subjects.join(', ')}`]),
           ...(server === undefined ? [] : [`  listening ${server.url}`]),
+          ...(mdns === undefined
+            ? []
+            : 'error' in mdns
+              ? [`  not announced by mDNS: ${mdns.error}`]
+              : [`  announced by mDNS as ${mdns.name}.${mdns.service}.local`]),
         ].join('\n'),
       );
       progress(io, global(), 'Ctrl-C stops serving (and stops the robot)');
       await aborted(io.signal);
       progress(io, global(), 'stopping');
     } finally {
+      await announcer?.stop().catch(() => undefined);
       await server?.close().catch(() => undefined);
       await gateway?.close().catch(() => undefined);
       await opened.close();

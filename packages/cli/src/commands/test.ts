@@ -18,11 +18,19 @@ export const registerTest: RegisterCommand = (program, ctx) => {
       "the device to check (default: the spec's default device)",
       deviceIdArg,
     )
+    .option(
+      '--all',
+      'check every device seen announcing its capabilities on NATS (listens 6 s), one after the other',
+    )
     .addOption(
       new Option(
         '--capability <name>',
         `check only this capability (repeatable): ${SPEC_CAPABILITIES.join(', ')}; default all`,
       ).argParser(capabilityArg),
+    )
+    .option(
+      '--mdns',
+      "also check the device's mDNS announcement (_tafynode._tcp); on the device's network segment",
     )
     .option('--samples <n>', 'requests per latency measurement (default 20)', samplesArg)
     .option(

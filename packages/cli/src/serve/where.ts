@@ -8,6 +8,8 @@ import type { NatsCliOptions } from '../nats-options.js';
 export interface ServeCliOptions extends NatsCliOptions {
   device?: string;
   defaultDevice: boolean;
+  /** False with --no-mdns: the NATS gateway is not announced by mDNS. */
+  mdns?: boolean;
   stateRate?: number;
   wsPort?: number;
   host?: string;

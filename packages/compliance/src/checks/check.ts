@@ -23,6 +23,8 @@ export interface Check {
    * 'unannounced': runs only when it does not (the capability must then be honestly absent).
    */
   when?: 'announced' | 'unannounced';
+  /** Runs only when the option is asked for (`mdns: true`); otherwise it is not part of the run. */
+  onlyWith?: 'mdns';
   run(ctx: RunContext): Promise<Verdict>;
 }
 

@@ -5,7 +5,7 @@ import type { Inspected } from '../inspect.js';
 import { summarize } from '../stats.js';
 import { STREAM_RATE_HZ } from '../spec.js';
 import type { LatencyClass } from '../spec.js';
-import type { StreamView } from '../streams.js';
+import type { Received, StreamView } from '../streams.js';
 import { fail, pass, sleep } from './check.js';
 import type { Verdict } from './check.js';
 
@@ -56,19 +56,46 @@ export function validReply(answer: Answer<unknown>): string | undefined {
   return describeAnswer(answer);
 }
 
-/** Watches `stream` for the stream window and judges its rate against the spec's 10-100 Hz. */
+/**
+ * Watches `stream` for the stream window and judges its rate against the spec's 10-100 Hz. With
+ * `key`, a stream that interleaves several sources (the spec's one-sensor range messages) is
+ * judged per source: each must stream at the spec's rate.
+ */
 export async function rateVerdict(
   ctx: RunContext,
   stream: StreamView,
   what: string,
+  key?: (message: Received<unknown>) => string | undefined,
 ): Promise<Verdict> {
   const from = performance.now();
   await sleep(ctx.options.streamWindowMs);
   const seen = stream.since(from);
+  if (key === undefined) return rateOf(seen, what, ctx.options.streamWindowMs);
+  const groups = new Map<string, Received<unknown>[]>();
+  for (const message of seen) {
+    const name = key(message) ?? '(unnamed)';
+    groups.set(name, [...(groups.get(name) ?? []), message]);
+  }
+  if (groups.size === 0) return rateOf(seen, what, ctx.options.streamWindowMs);
+  const verdicts = [...groups].map(([name, messages]) => ({
+    name,
+    verdict: rateOf(messages, `${what} "${name}"`, ctx.options.streamWindowMs),
+  }));
+  const failed = verdicts.find((v) => v.verdict.status === 'fail');
+  if (failed !== undefined) return failed.verdict;
+  const slowest = verdicts.reduce((a, b) =>
+    (a.verdict.rateHz ?? 0) <= (b.verdict.rateHz ?? 0) ? a : b,
+  );
+  const text = `${verdicts.length} sources, each ${verdicts.map((v) => `${v.name} ${(v.verdict.rateHz ?? 0).toFixed(1)} Hz`).join(', ')}`;
+  return pass(text, {
+    ...(slowest.verdict.measured === undefined ? {} : { measured: slowest.verdict.measured }),
+    ...(slowest.verdict.rateHz === undefined ? {} : { rateHz: slowest.verdict.rateHz }),
+  });
+}
+
+function rateOf(seen: readonly Received<unknown>[], what: string, windowMs: number): Verdict {
   if (seen.length < 2) {
-    return fail(
-      `${seen.length} ${what} message(s) in ${ctx.options.streamWindowMs} ms: not streaming`,
-    );
+    return fail(`${seen.length} ${what} message(s) in ${windowMs} ms: not streaming`);
   }
   const intervals = seen.slice(1).map((m, i) => m.atMs - (seen[i]?.atMs ?? m.atMs));
   const spanMs = (seen.at(-1)?.atMs ?? 0) - (seen[0]?.atMs ?? 0);

@@ -81,6 +81,37 @@ export const MOTOR_CHECKS: readonly Check[] = [
   },
   {
     capability: 'motor.differential',
+    group: 'errors',
+    name: 'neither-envelope-nor-payload',
+    title:
+      'a bare message that is not a valid spec payload gets the standard error and changes nothing',
+    run: (ctx) =>
+      refusesVerdict(
+        ctx,
+        cmd(ctx),
+        ctx.wire.bare({ linear_vel_m_per_s: 'fast', angular_vel_rad_per_s: 0, duration_ms: 500 }),
+        BAD_INPUT,
+      ),
+  },
+  {
+    capability: 'motor.differential',
+    group: 'format',
+    name: 'bare-command',
+    title: 'a bare spec command (no envelope, as the spec example sends it) is taken as HAL v1',
+    run: async (ctx) => {
+      const answer = await ctx.ask(
+        cmd(ctx),
+        ctx.wire.bare({ linear_vel_m_per_s: 0, angular_vel_rad_per_s: 0 }),
+        'ack',
+        { priority: 'high' },
+      );
+      const problem = validReply(answer);
+      if (problem !== undefined) return fail(`a bare stop command was answered ${problem}`);
+      return pass('a bare stop command was acknowledged');
+    },
+  },
+  {
+    capability: 'motor.differential',
     group: 'capability',
     name: 'announced-rate',
     title: "the announced state_rate_hz is the stream's rate (within 25 %)",

@@ -1,5 +1,6 @@
 // The `system` capability every device serves: capability query and announcement, health, and
 // the answers to bad input and to subjects the spec does not define.
+import { discoverTafyNodes } from '@hal/discovery';
 import { LATENCY_CLASSES } from '../spec.js';
 import type { Check } from './check.js';
 import { fail, pass } from './check.js';
@@ -68,6 +69,18 @@ export const SYSTEM_CHECKS: readonly Check[] = [
   {
     capability: 'system',
     group: 'format',
+    name: 'bare-request',
+    title: 'a bare spec payload on system.health.req (no envelope) is answered as HAL v1',
+    run: async (ctx) => {
+      const answer = await ctx.ask(ctx.wire.subject('health'), ctx.wire.bare({}), 'health');
+      const problem = validReply(answer);
+      if (problem !== undefined) return fail(`a bare health request was answered ${problem}`);
+      return pass('a bare {} got a valid health reply');
+    },
+  },
+  {
+    capability: 'system',
+    group: 'format',
     name: 'capability-reply',
     title: "capability replies are valid, and the envelope's caps are the announced caps",
     run: async (ctx) => {
@@ -108,6 +121,29 @@ export const SYSTEM_CHECKS: readonly Check[] = [
       if (announced !== queried)
         return fail(`announced ${announced}, but the query answered ${queried}`);
       return pass(`announced ${ctx.caps.length} capabilities, the same as the query`);
+    },
+  },
+  {
+    capability: 'system',
+    group: 'capability',
+    name: 'mdns-announcement',
+    title: 'announced by mDNS as _tafynode._tcp with its device_id and the queried caps in TXT',
+    onlyWith: 'mdns',
+    run: async (ctx) => {
+      const nodes = await discoverTafyNodes({ timeoutMs: ctx.options.mdnsTimeoutMs });
+      const node = nodes.find((n) => n.deviceId === ctx.deviceId);
+      if (node === undefined) {
+        const seen = nodes.map((n) => n.deviceId).join(', ') || 'none';
+        return fail(
+          `no _tafynode._tcp node with device_id "${ctx.deviceId}" in ${ctx.options.mdnsTimeoutMs} ms (seen: ${seen})`,
+        );
+      }
+      const announced = JSON.stringify([...node.caps].sort());
+      const queried = JSON.stringify([...ctx.caps].sort());
+      if (announced !== queried) {
+        return fail(`the TXT record's caps are ${announced}, the capability query's ${queried}`);
+      }
+      return pass(`found on port ${node.port} with ${node.caps.length} capabilities`);
     },
   },
   {
