@@ -47,7 +47,9 @@ async function stopRobot(hal: HardwareAbstractionLayer): Promise<HalError | unde
   let timer: NodeJS.Timeout | undefined;
   const result = await Promise.race([
     hal.locomotion.stop().catch((error: unknown) => toHalError(error)),
-    new Promise<undefined>((resolve) => (timer = setTimeout(resolve, STOP_WAIT_MS))),
+    new Promise<undefined>(
+      (resolve) => (timer = setTimeout(() => resolve(undefined), STOP_WAIT_MS)),
+    ),
   ]);
   clearTimeout(timer);
   if (result === undefined) {
