@@ -74,6 +74,11 @@ describe('hal serve on WebSocket', () => {
       /"--host" needs --ws-port/,
     ],
     [
+      ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--token', 'a-token-of-16-chars'],
+      2,
+      /"--token" needs --ws-port/,
+    ],
+    [
       ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--state-rate', '5'],
       2,
       /"--state-rate" on NATS is 10..100 Hz/,
