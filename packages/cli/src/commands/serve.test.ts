@@ -43,7 +43,9 @@ describe('hal serve on WebSocket', () => {
     const { ws } = io.jsonLines()[0] as { ws: { url: string } };
     const refused = captureIO();
     expect(await runHal(['status', '--ws', ws.url], refused)).toBe(1);
-    expect(refused.stderr()).toContain('NOT_CONNECTED');
+    expect(refused.stderr()).toContain(
+      `AUTH_FAILED: ${ws.url} refused the connection (HTTP 401): no token was given`,
+    );
     const admitted = captureIO(env);
     expect(await runHal(['status', '--ws', ws.url], admitted), admitted.stderr()).toBe(0);
     const byOption = captureIO();

@@ -7,7 +7,6 @@ import type { HalGateway } from '@hal/nats';
 import { checkBinding, integerArg } from '@hal/remote/cli';
 import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
-import { HalError, isHalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
@@ -98,11 +97,6 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
           deviceId,
           defaultDevice: plan.nats.defaultDevice,
           stateRateHz: plan.nats.stateRateHz,
-        }).catch((error: unknown) => {
-          if (isHalError(error)) throw error;
-          throw new HalError('NOT_CONNECTED', `cannot reach NATS: ${String(error)}`, {
-            cause: error,
-          });
         });
       }
       if (plan.ws !== undefined) {

@@ -3,7 +3,6 @@
 import { formatReport, runCompliance } from '@hal/compliance';
 import type { ProgressEvent, SpecCapability } from '@hal/compliance';
 import { openConnection } from '@hal/nats';
-import { HalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import type { CommandContext } from '../commands/index.js';
 import { emit, progress } from '../io.js';
@@ -40,12 +39,7 @@ export async function runTestHal(
   }
   const output = global();
   const connect = natsConnectOptions(options, io.env, 'hal-test');
-  const nc = await openConnection(connect).catch((cause: unknown) => {
-    const why = cause instanceof Error ? cause.message : String(cause);
-    throw new HalError('NOT_CONNECTED', `cannot reach NATS at ${String(connect.servers)}: ${why}`, {
-      cause,
-    });
-  });
+  const nc = await openConnection(connect);
   try {
     const report = await runCompliance({
       connection: nc,
