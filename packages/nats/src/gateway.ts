@@ -67,10 +67,58 @@ export async function serveHalOnNats(
   options: GatewayOptions,
 ): Promise<HalGateway> {
   const { nc, owned } = await resolveConnection(options);
+  try {
+    await refuseServedTwice(nc, options);
+  } catch (error) {
+    if (owned) await nc.close();
+    throw error;
+  }
   const gateway = new Gateway(nc, owned, hal, options);
   gateway.start();
   await nc.flush(); // the server has every subscription: the first request finds a responder
   return gateway;
+}
+
+/** How long a gateway already serving the device id has to answer the probe, ms. */
+const PROBE_TIMEOUT_MS = 1000;
+
+/** Whether something answers a health request on `subject` (NATS says "no responders" if not). */
+async function answers(nc: NatsConnection, subject: string, from: string): Promise<boolean> {
+  const body = encodeMessage(SCHEMAS.healthRequest, from, [], {});
+  try {
+    await nc.request(subject, body, { timeout: PROBE_TIMEOUT_MS });
+    return true;
+  } catch {
+    // no responders: nobody serves it; a timeout: a subscriber that does not answer health,
+    // which is not a gateway
+    return false;
+  }
+}
+
+/**
+ * Refuses to serve a device id (or the default device) that another gateway on this NATS already
+ * serves: two gateways would both execute every command and both answer it.
+ */
+async function refuseServedTwice(nc: NatsConnection, options: GatewayOptions): Promise<void> {
+  const probe = `hal-gateway-probe-${options.deviceId}`;
+  const own = subjectFor('health', options.deviceId);
+  if (await answers(nc, own, probe)) {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `device "${options.deviceId}" is already served on this NATS (a gateway answers ${own}): stop that one, or serve this robot under another device id`,
+      { details: { parameter: 'deviceId', deviceId: options.deviceId, subject: own } },
+    );
+  }
+  if (options.defaultDevice ?? true) {
+    const bare = subjectFor('health');
+    if (await answers(nc, bare, probe)) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `another gateway already serves the default device on this NATS (it answers ${bare}): serve "${options.deviceId}" with defaultDevice: false (hal serve --no-default-device)`,
+        { details: { parameter: 'defaultDevice', subject: bare } },
+      );
+    }
+  }
 }
 
 class Gateway implements HalGateway {
@@ -214,7 +262,16 @@ class Gateway implements HalGateway {
     priority: boolean,
   ): Promise<Omit<HalCallReply, 'request_id'>> {
     const spec = HAL_CALLS[name];
-    const safety = () => ({ emergency_stopped: this.hal.safety.isEmergencyStopped() });
+    // every reply carries the latch, and its reason while latched, so a client's status has both
+    const safety = () => {
+      const emergency_stopped = this.hal.safety.isEmergencyStopped();
+      const reason = emergency_stopped
+        ? this.hal.safety.getSafetyStatus().emergencyStopReason
+        : undefined;
+      return reason === undefined
+        ? { emergency_stopped }
+        : { emergency_stopped, emergency_stop_reason: reason };
+    };
     if (spec === undefined) {
       return {
         error: { code: 'UNKNOWN_COMMAND', message: `"call" is not a HAL call: "${name}"` },

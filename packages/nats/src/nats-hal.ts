@@ -265,9 +265,10 @@ export class NatsHAL implements HardwareAbstractionLayer {
   }
 
   /** The device's latch as a reply or its state reports it. */
-  #deviceLatch(estopped: boolean): void {
+  #deviceLatch(estopped: boolean, reason?: string): void {
     this.#deviceEstopped = estopped;
     if (!estopped) this.#deviceReason = undefined;
+    else if (reason !== undefined) this.#deviceReason = reason;
   }
 
   async #emergencyStop(reason: unknown): Promise<HALToolResult> {
@@ -333,7 +334,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
         ...(timeoutMs === undefined ? {} : { timeoutMs }),
       },
     );
-    this.#deviceLatch(reply.emergency_stopped);
+    this.#deviceLatch(reply.emergency_stopped, reply.emergency_stop_reason);
     if (reply.error !== undefined) throw errorFromPayload(reply.error);
     return reply;
   }
