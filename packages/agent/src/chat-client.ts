@@ -1,4 +1,4 @@
-import { AgentError, errorMessage } from './errors.js';
+import { AgentError, errorWithCauses } from './errors.js';
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import { parseReply } from './reply.js';
 import type { AssistantReply } from './reply.js';
@@ -108,7 +108,12 @@ async function attemptOnce(
         new AgentError('TIMEOUT', `no reply within ${settings.requestTimeoutMs} ms`, { cause }),
       );
     }
-    return failed(new AgentError('NETWORK', `request failed: ${errorMessage(cause)}`, { cause }));
+    return failed(
+      new AgentError('NETWORK', `request to ${settings.url} failed: ${errorWithCauses(cause)}`, {
+        cause,
+        details: { url: settings.url },
+      }),
+    );
   }
   if (!response.ok) {
     const error = new AgentError('HTTP', `HTTP ${response.status}: ${text.slice(0, 200)}`, {
