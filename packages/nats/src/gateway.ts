@@ -6,6 +6,7 @@ import { CommandQueue } from './command-queue.js';
 import { ControllerWatchdog } from './controller-watchdog.js';
 import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
+import { refuseServedTwice } from './served-probe.js';
 import { wheelPowersFor } from './drive-mapping.js';
 import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
 import { HAL_CALLS } from './hal-calls.js';
@@ -68,7 +69,10 @@ export async function serveHalOnNats(
 ): Promise<HalGateway> {
   const { nc, owned } = await resolveConnection(options);
   try {
-    await refuseServedTwice(nc, options);
+    await refuseServedTwice(nc, {
+      deviceId: options.deviceId,
+      defaultDevice: options.defaultDevice ?? true,
+    });
   } catch (error) {
     if (owned) await nc.close();
     throw error;
@@ -77,48 +81,6 @@ export async function serveHalOnNats(
   gateway.start();
   await nc.flush(); // the server has every subscription: the first request finds a responder
   return gateway;
-}
-
-/** How long a gateway already serving the device id has to answer the probe, ms. */
-const PROBE_TIMEOUT_MS = 1000;
-
-/** Whether something answers a health request on `subject` (NATS says "no responders" if not). */
-async function answers(nc: NatsConnection, subject: string, from: string): Promise<boolean> {
-  const body = encodeMessage(SCHEMAS.healthRequest, from, [], {});
-  try {
-    await nc.request(subject, body, { timeout: PROBE_TIMEOUT_MS });
-    return true;
-  } catch {
-    // no responders: nobody serves it; a timeout: a subscriber that does not answer health,
-    // which is not a gateway
-    return false;
-  }
-}
-
-/**
- * Refuses to serve a device id (or the default device) that another gateway on this NATS already
- * serves: two gateways would both execute every command and both answer it.
- */
-async function refuseServedTwice(nc: NatsConnection, options: GatewayOptions): Promise<void> {
-  const probe = `hal-gateway-probe-${options.deviceId}`;
-  const own = subjectFor('health', options.deviceId);
-  if (await answers(nc, own, probe)) {
-    throw new HalError(
-      'INVALID_PARAMETER',
-      `device "${options.deviceId}" is already served on this NATS (a gateway answers ${own}): stop that one, or serve this robot under another device id`,
-      { details: { parameter: 'deviceId', deviceId: options.deviceId, subject: own } },
-    );
-  }
-  if (options.defaultDevice ?? true) {
-    const bare = subjectFor('health');
-    if (await answers(nc, bare, probe)) {
-      throw new HalError(
-        'INVALID_PARAMETER',
-        `another gateway already serves the default device on this NATS (it answers ${bare}): serve "${options.deviceId}" with defaultDevice: false (hal serve --no-default-device)`,
-        { details: { parameter: 'defaultDevice', subject: bare } },
-      );
-    }
-  }
 }
 
 class Gateway implements HalGateway {
