@@ -116,8 +116,8 @@ async function attemptOnce(
     );
   }
   if (!response.ok) {
-    const error = new AgentError('HTTP', `HTTP ${response.status}: ${text.slice(0, 200)}`, {
-      details: { status: response.status },
+    const error = new AgentError('HTTP', httpErrorText(settings, response.status, text), {
+      details: { status: response.status, url: settings.url },
     });
     return {
       error,
@@ -136,6 +136,14 @@ async function attemptOnce(
           }),
     );
   }
+}
+
+/** An HTTP error: the status, the URL, what the server said, and for 401/403 what the key was. */
+function httpErrorText(settings: ChatClientSettings, status: number, text: string): string {
+  const said = `HTTP ${status} from ${settings.url}: ${text.slice(0, 200)}`;
+  if (status !== 401 && status !== 403) return said;
+  const hasKey = settings.apiKey !== undefined && settings.apiKey !== '';
+  return `${said} (${hasKey ? 'the API key was refused' : 'no API key was given'})`;
 }
 
 function failed(error: AgentError): AttemptFailure {
