@@ -87,6 +87,10 @@ describe('hal serve --nats', () => {
     ]);
     const pose = (JSON.parse(status.stdout) as { pose: { position: { x: number } } }).pose;
     expect(pose.position.x).toBeCloseTo(moved.pose.position.x, 3);
+    // without --device, the default device is named by the id it is served as
+    const bare = captureIO();
+    expect(await runHal(['--json', 'status', '--nats', nats.url], bare)).toBe(0);
+    expect((bare.jsonLines()[0] as { device: { id: string } }).device.id).toBe('desk-sim');
   });
 
   it('shows the e-stop and its reason in hal status over NATS, until it is reset', async () => {

@@ -178,7 +178,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
         CapabilityAnnouncementSchema,
         { timeoutMs: Math.min(this.#options.callTimeoutMs ?? 5000, 5000) },
       );
-      this.#learn(announcement);
+      this.#learn(announcement, link.sender);
     } catch (error) {
       link.close();
       throw error instanceof HalError && error.code === 'TIMEOUT'
@@ -243,10 +243,11 @@ export class NatsHAL implements HardwareAbstractionLayer {
     }
   }
 
-  #learn(announcement: CapabilityAnnouncement): void {
+  /** What the device said about itself; `sender` (the reply's `device_id`) names the default one. */
+  #learn(announcement: CapabilityAnnouncement, sender?: string): void {
     this.mode = announcement.mode as HALMode;
     this.#info = {
-      id: this.#options.deviceId ?? this.#info.id,
+      id: this.#options.deviceId ?? sender ?? this.#info.id,
       type: announcement.device_type,
       mode: this.mode,
       capabilities: announcement.caps,
