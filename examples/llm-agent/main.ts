@@ -17,10 +17,25 @@ if (model === undefined || model === '') {
   console.error('Set OPENAI_MODEL (and OPENAI_BASE_URL, OPENAI_API_KEY for your endpoint).');
   process.exit(2);
 }
+const HOSTED = 'https://api.openai.com/v1';
+const baseUrl = env['OPENAI_BASE_URL'] || HOSTED;
+const apiKey = env['OPENAI_API_KEY'] || undefined;
+// The hosted default answers nothing without a key: say so now, not after a failed request.
+if (baseUrl === HOSTED && apiKey === undefined) {
+  console.error(
+    `OPENAI_MODEL is set but OPENAI_BASE_URL is not, so the endpoint would be the hosted ${HOSTED}, ` +
+      'and OPENAI_API_KEY is not set. Set OPENAI_BASE_URL to your endpoint ' +
+      '(e.g. http://127.0.0.1:11434/v1 for a local server), or OPENAI_API_KEY for the hosted one.',
+  );
+  process.exit(2);
+}
 
 const { hal, label } = robotFromEnv(env);
 await hal.initialize();
 console.log(`robot: ${label}`);
+console.log(
+  `endpoint: ${baseUrl} (model ${model}, ${apiKey === undefined ? 'no key' : 'with a key'})`,
+);
 console.log(`goal: ${goal}`);
 
 const controller = new AbortController();
@@ -31,11 +46,7 @@ const executor = createToolExecutor(hal, { leash: { maxDistanceM: 1, maxSpeedMPe
 const outcome = await runAgent({
   goal,
   executor,
-  endpoint: {
-    baseUrl: env['OPENAI_BASE_URL'] ?? 'https://api.openai.com/v1',
-    model,
-    ...(env['OPENAI_API_KEY'] ? { apiKey: env['OPENAI_API_KEY'] } : {}),
-  },
+  endpoint: { baseUrl, model, ...(apiKey === undefined ? {} : { apiKey }) },
   caps: { maxSteps: Number(env['AGENT_MAX_STEPS'] ?? 20), maxMs: 5 * 60_000 },
   signal: controller.signal,
   onEvent: (event) => console.log(describeEvent(event)),

@@ -16,7 +16,8 @@ export function describeEvent(e: AgentEvent): string {
     case 'retry':
       return `  retry ${e.attempt} in ${e.delayMs} ms: ${clip(e.reason)}`;
     case 'error':
-      return `  endpoint error ${e.error.code}: ${clip(e.error.message)}`;
+      // not clipped: the URL and the cause are at its end
+      return `  endpoint error ${e.error.code}: ${e.error.message}`;
     case 'done':
       return `done: ${e.reason} after ${e.steps} steps, ${(e.elapsedMs / 1000).toFixed(1)} s`;
   }

@@ -4,6 +4,7 @@ import { spawn } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { distanceToSteps } from '@hal/kinematics';
 import { afterAll, describe, expect, it } from 'vitest';
+import { freePort } from '../nats/nats-server.js';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import { call, serve } from './fixtures.js';
 
@@ -67,6 +68,27 @@ describe('examples/llm-agent', () => {
     const run = await runApp({}, 'Anything.');
     expect(run.code).toBe(2);
     expect(run.stderr).toContain('OPENAI_MODEL');
+  });
+
+  it('refuses the hosted default endpoint without a key, naming the URL and both variables', async () => {
+    const run = await runApp({ OPENAI_MODEL: 'gpt-4o-mini' }, 'Anything.');
+    expect(run.code).toBe(2);
+    expect(run.stdout).toBe('');
+    expect(run.stderr).toContain('https://api.openai.com/v1');
+    expect(run.stderr).toMatch(/OPENAI_BASE_URL is not.*OPENAI_API_KEY is not set/s);
+  });
+
+  it('names the endpoint URL and the cause when nothing listens there', async () => {
+    const port = await freePort();
+    const run = await runApp(
+      { OPENAI_BASE_URL: `http://127.0.0.1:${port}/v1`, OPENAI_MODEL: 'm', AGENT_MAX_STEPS: '1' },
+      'Anything.',
+    );
+    expect(run.code).toBe(1);
+    expect(run.stdout).toContain(`endpoint: http://127.0.0.1:${port}/v1 (model m, no key)`);
+    expect(run.stdout).toContain(
+      `endpoint error NETWORK: request to http://127.0.0.1:${port}/v1/chat/completions failed: fetch failed (connect ECONNREFUSED 127.0.0.1:${port})`,
+    );
   });
 
   it('drives the emulated robot over UDP when HAL_UDP_HOST is set', async () => {

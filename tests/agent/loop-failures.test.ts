@@ -62,6 +62,12 @@ describe('runAgent retries', () => {
       error: { code: 'HTTP', details: { status: 401 } },
     });
     expect(s.requests).toHaveLength(1);
+    // the message names the URL, what the server said, and whether a key was sent
+    const { error } = outcome as { error: AgentError };
+    const url = `${endpoint(s).baseUrl}/chat/completions`;
+    expect(error.message).toBe(
+      `HTTP 401 from ${url}: {"error":{"message":"bad key"}} (the API key was refused)`,
+    );
   });
 
   it('ends at once when the server asks for a longer wait than maxDelayMs', async () => {

@@ -31,7 +31,7 @@ describe('the hal program', () => {
     ]);
     expect(run.code).toBe(1);
     expect(run.stderr).toBe(
-      'hal: NOT_CONNECTED: no answer from the robot at udp 127.0.0.1:9 within 1000 ms\n',
+      'hal: NOT_CONNECTED: no answer from the robot at udp 127.0.0.1:9 within 1000 ms: nothing came back. Is it powered, on this network, at this address and port? (A wrong --key is answered with AUTH_FAILED: silence is not a key problem.)\n',
     );
     expect(Date.now() - started).toBeLessThan(15_000); // process start-up included: it did not hang
   });

@@ -78,6 +78,11 @@ describe('hal on the emulated robot', () => {
       .split('\n')
       .map((l) => JSON.parse(l) as unknown);
     expect(lines.at(-1)).toMatchObject({ error: { code: 'EMERGENCY_STOPPED' } });
+    // the hint is the command to type, with this robot's options, not the library's method
+    const { message } = (lines.at(-1) as { error: { message: string } }).error;
+    expect(message).toBe(
+      `forward 0.02 m: the emergency stop is latched; reset it with: hal drive reset-estop ${udp.join(' ')}`,
+    );
     expect((await hal(['drive', 'reset-estop', ...udp])).code).toBe(0);
     expect((await status()).safety.emergencyStopped).toBe(false);
   });

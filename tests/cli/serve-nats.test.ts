@@ -137,6 +137,63 @@ describe('hal serve --nats', () => {
     ]);
     const pose = (JSON.parse(status.stdout) as { pose: { position: { x: number } } }).pose;
     expect(pose.position.x).toBeCloseTo(moved.pose.position.x, 3);
+    // without --device, the default device is named by the id it is served as
+    const bare = captureIO();
+    expect(await runHal(['--json', 'status', '--nats', nats.url], bare)).toBe(0);
+    expect((bare.jsonLines()[0] as { device: { id: string } }).device.id).toBe('desk-sim');
+  });
+
+  it('shows the e-stop and its reason in hal status over NATS, until it is reset', async () => {
+    const target = ['--device', 'desk-sim', '--nats', nats.url];
+    expect(await runHal(['drive', 'estop', 'bumper hit', ...target], captureIO())).toBe(0);
+    const json = captureIO();
+    expect(await runHal(['--json', 'status', ...target], json)).toBe(0);
+    expect((json.jsonLines()[0] as { safety: unknown }).safety).toEqual({
+      emergencyStopped: true,
+      reason: 'bumper hit',
+    });
+    const human = captureIO();
+    expect(await runHal(['status', ...target], human)).toBe(0);
+    expect(human.stdout()).toMatch(/^safety {8}EMERGENCY STOP \(bumper hit\)$/m);
+    expect(await runHal(['drive', 'reset-estop', ...target], captureIO())).toBe(0);
+    const after = captureIO();
+    expect(await runHal(['--json', 'status', ...target], after)).toBe(0);
+    expect((after.jsonLines()[0] as { safety: unknown }).safety).toEqual({
+      emergencyStopped: false,
+    });
+  });
+
+  it('refuses to serve a device id that is already served, and a second default device', async () => {
+    const same = captureIO();
+    const args = ['--json', 'serve', '--sim', '--nats', nats.url];
+    expect(await runHal([...args, '--device', 'desk-sim'], same)).toBe(1);
+    expect(JSON.parse(same.stderr())).toEqual({
+      error: {
+        code: 'INVALID_PARAMETER',
+        message: expect.stringMatching(
+          /^device "desk-sim" is already served on this NATS \(a gateway answers hal\.v1\.dev\.desk-sim\.system\.health\.req\)/,
+        ),
+        details: expect.objectContaining({ deviceId: 'desk-sim' }) as unknown,
+      },
+    });
+    const secondDefault = captureIO();
+    expect(await runHal([...args, '--device', 'desk-sim-2'], secondDefault)).toBe(1);
+    expect(JSON.parse(secondDefault.stderr())).toMatchObject({
+      error: {
+        code: 'INVALID_PARAMETER',
+        message: expect.stringContaining('--no-default-device'),
+      },
+    });
+    // under its own id and not as the default device, it is served
+    const own = captureIO();
+    const serving = runHal([...args, '--device', 'desk-sim-2', '--no-default-device'], own);
+    const deadline = Date.now() + 20_000;
+    while (own.jsonLines().length === 0 && Date.now() < deadline) {
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+    expect(own.jsonLines()[0]).toMatchObject({ event: 'serving', device: 'desk-sim-2' });
+    own.abort();
+    expect(await serving).toBe(0);
   });
 
   it('says NOT_CONNECTED for a device nobody serves, within the connect timeout', async () => {

@@ -128,6 +128,20 @@ describe('hal serve --nats --udp, a gateway to the emulated robot', () => {
     expect(moves()).toBe(before + 1);
   }, 90_000);
 
+  it('refuses a second gateway for the same device before it opens the robot', async () => {
+    const second = captureIO();
+    const argv = ['--json', 'serve', '--udp', `127.0.0.1:${robot.udpPort}`, '--nats', nats.url];
+    expect(await runHal([...argv, '--device', 'cube-gw'], second)).toBe(1);
+    expect(JSON.parse(second.stderr())).toMatchObject({
+      error: {
+        code: 'INVALID_PARAMETER',
+        message: expect.stringMatching(/^device "cube-gw" is already served/),
+      },
+    });
+    // the serving gateway still owns the robot: its status is the robot's, ready
+    expect((await status()).health.ready).toBe(true);
+  });
+
   it('stops serving on Ctrl-C and lets the robot go', async () => {
     expect(await gateway.stop('SIGINT', 20_000)).toBe(0);
     expect(gateway.events.at(-1)).toEqual({ event: 'stopped' });

@@ -184,7 +184,7 @@ describe('PhysicalHAL against an emulator that requires a key', () => {
     }
   });
 
-  it('never accepts a reply signed with another key', async () => {
+  it('never accepts a reply signed with another key, and says the key is wrong', async () => {
     const emulator = await startEmulator({ key: 'c0ffee', pty: false });
     const hal = new PhysicalHAL(
       {
@@ -195,7 +195,12 @@ describe('PhysicalHAL against an emulator that requires a key', () => {
       { requestTimeoutMs: 50, attempts: 3 },
     );
     try {
-      await expect(hal.initialize()).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
+      // the robot answered with its own key: AUTH_FAILED, not the silence of NOT_CONNECTED
+      await expect(hal.initialize()).rejects.toMatchObject({
+        code: 'AUTH_FAILED',
+        message: expect.stringContaining('the key is wrong'),
+      });
+      expect(hal.isReady()).toBe(false);
     } finally {
       await hal.cleanup();
       await emulator.stop();

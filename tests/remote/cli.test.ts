@@ -38,7 +38,11 @@ describe('hal-serve', () => {
     const url = await serve(['--sim'], { HAL_SERVE_TOKEN: token });
     const refused = new RemoteHAL({ url, reconnect: false });
     hals.push(refused);
-    await expect(refused.initialize()).rejects.toMatchObject({ code: 'NOT_CONNECTED' });
+    // the server answered 401: a refused token, not a server that is not there
+    await expect(refused.initialize()).rejects.toMatchObject({
+      code: 'AUTH_FAILED',
+      message: expect.stringMatching(/refused the connection \(HTTP 401\): no token was given/),
+    });
     const hal = new RemoteHAL({ url, token });
     hals.push(hal);
     await hal.initialize();

@@ -1,4 +1,4 @@
-import { AgentError, errorMessage } from './errors.js';
+import { AgentError, errorWithCauses } from './errors.js';
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import { parseReply } from './reply.js';
 import type { AssistantReply } from './reply.js';
@@ -108,11 +108,16 @@ async function attemptOnce(
         new AgentError('TIMEOUT', `no reply within ${settings.requestTimeoutMs} ms`, { cause }),
       );
     }
-    return failed(new AgentError('NETWORK', `request failed: ${errorMessage(cause)}`, { cause }));
+    return failed(
+      new AgentError('NETWORK', `request to ${settings.url} failed: ${errorWithCauses(cause)}`, {
+        cause,
+        details: { url: settings.url },
+      }),
+    );
   }
   if (!response.ok) {
-    const error = new AgentError('HTTP', `HTTP ${response.status}: ${text.slice(0, 200)}`, {
-      details: { status: response.status },
+    const error = new AgentError('HTTP', httpErrorText(settings, response.status, text), {
+      details: { status: response.status, url: settings.url },
     });
     return {
       error,
@@ -131,6 +136,14 @@ async function attemptOnce(
           }),
     );
   }
+}
+
+/** An HTTP error: the status, the URL, what the server said, and for 401/403 what the key was. */
+function httpErrorText(settings: ChatClientSettings, status: number, text: string): string {
+  const said = `HTTP ${status} from ${settings.url}: ${text.slice(0, 200)}`;
+  if (status !== 401 && status !== 403) return said;
+  const hasKey = settings.apiKey !== undefined && settings.apiKey !== '';
+  return `${said} (${hasKey ? 'the API key was refused' : 'no API key was given'})`;
 }
 
 function failed(error: AgentError): AttemptFailure {

@@ -33,6 +33,27 @@ export function errorMessage(error: unknown): string {
   return error instanceof Error ? error.message : String(error);
 }
 
+/**
+ * The message of `error` with the causes under it, e.g. `fetch failed (ECONNREFUSED: connect
+ * ECONNREFUSED 127.0.0.1:1)`: fetch's own "fetch failed" says nothing without its cause.
+ */
+export function errorWithCauses(error: unknown): string {
+  const parts: string[] = [];
+  const seen = new Set<unknown>();
+  for (let at: unknown = error; at !== undefined && at !== null && !seen.has(at);) {
+    seen.add(at);
+    const code = (at as { code?: unknown }).code;
+    const message = errorMessage(at);
+    const text =
+      typeof code === 'string' && !message.includes(code) ? `${code}: ${message}` : message;
+    if (text !== '' && !parts.includes(text)) parts.push(text);
+    const inner = at instanceof AggregateError ? at.errors[0] : (at as { cause?: unknown }).cause;
+    at = inner;
+  }
+  const [first, ...rest] = parts;
+  return rest.length === 0 ? (first ?? String(error)) : `${first} (${rest.join('; ')})`;
+}
+
 /** A logger the package writes through (it never uses the console). */
 export interface AgentLogger {
   debug(message: string, fields?: Record<string, unknown>): void;

@@ -63,12 +63,24 @@ export async function runHal(argv: readonly string[], io: CliIO): Promise<number
   return runProgram(buildProgram(io), argv, io);
 }
 
+/** Stops `program` and its subcommands writing usage errors (and the help after them). */
+function silenceErrorText(program: Command): void {
+  const pending = [program];
+  for (let command = pending.pop(); command !== undefined; command = pending.pop()) {
+    command.configureOutput({ writeErr: () => undefined, outputError: () => undefined });
+    pending.push(...command.commands);
+  }
+}
+
 /** Runs an already built program (see {@link runHal}); tests add commands to it first. */
 export async function runProgram(
   program: Command,
   argv: readonly string[],
   io: CliIO,
 ): Promise<number> {
+  const json = argv.includes('--json');
+  // with --json an error is one JSON document: commander's own text would be a second copy
+  if (json) silenceErrorText(program);
   try {
     await program.parseAsync([...argv], { from: 'user' });
     return 0;
@@ -76,13 +88,14 @@ export async function runProgram(
     if (error instanceof CommanderError) {
       // help and --version end here too, with exit code 0; usage errors were already written
       if (error.exitCode === 0) return 0;
-      if (argv.includes('--json')) {
-        io.err(`${JSON.stringify({ error: { code: 'USAGE', message: error.message } })}\n`);
+      if (json) {
+        const message = error.message.replace(/^error: /, '');
+        io.err(`${JSON.stringify({ error: { code: 'USAGE', message } })}\n`);
       }
       return 2;
     }
     const { doc, exitCode } = describeError(error);
-    if (argv.includes('--json')) io.err(`${JSON.stringify(doc)}\n`);
+    if (json) io.err(`${JSON.stringify(doc)}\n`);
     else io.err(`hal: ${doc.error.code}: ${doc.error.message}\n`);
     return exitCode;
   }

@@ -103,6 +103,8 @@ async function build(
           timeScale: target.timeScale,
           client: 'hal-cli',
           calibration: options.calibration ?? calibrationSource(target.calibration, io.env),
+          // the HAL says hello for as long as the user allows, and tells silence from a wrong key
+          connectTimeoutMs: options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS,
         },
       );
       return { hal, release: () => hal.cleanup() };
@@ -122,11 +124,8 @@ async function build(
     case 'nats': {
       // Our own connection, so a watcher can let go without NatsHAL's cleanup (which stops the
       // wheels of a robot someone else may be driving).
-      const nc = await openConnection(target.nats).catch((error: unknown) => {
-        throw new HalError('NOT_CONNECTED', `cannot reach NATS: ${String(error)}`, {
-          cause: error,
-        });
-      });
+      // a failure is already the one NOT_CONNECTED (or AUTH_FAILED) every command reports
+      const nc = await openConnection(target.nats);
       const hal = new NatsHAL({
         connection: nc,
         ...(target.deviceId === undefined ? {} : { deviceId: target.deviceId }),
@@ -173,23 +172,47 @@ export async function openTarget(
   }
 }
 
+/** Beyond the connect timeout, how long a physical HAL's own verdict is waited for. */
+const PHYSICAL_VERDICT_MS = 1000;
+
+/** The error of a robot that did not answer within the connect timeout: what was tried, hints. */
+function unanswered(target: Target, timeoutMs: number, cause?: unknown): HalError {
+  const name = describeTarget(target);
+  const hint =
+    target.kind === 'udp' || target.kind === 'serial'
+      ? `: nothing came back. Is it powered${target.kind === 'udp' ? ', on this network, at this address and port' : ', on this port, at this baud rate'}? (A wrong --key is answered with AUTH_FAILED: silence is not a key problem.)`
+      : '';
+  return new HalError('NOT_CONNECTED', `no answer from the ${name} within ${timeoutMs} ms${hint}`, {
+    ...(cause === undefined ? {} : { cause }),
+    details: { timeoutMs },
+  });
+}
+
 async function openOnce(target: Target, io: CliIO, options: OpenTargetOptions): Promise<OpenedHal> {
   const timeoutMs = options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS;
   const name = describeTarget(target);
-  const { hal, release } = await within(
-    build(target, io, options),
-    timeoutMs,
-    () => new HalError('NOT_CONNECTED', `no answer from the ${name} within ${timeoutMs} ms`),
+  const physical = target.kind === 'udp' || target.kind === 'serial';
+  const { hal, release } = await within(build(target, io, options), timeoutMs, () =>
+    unanswered(target, timeoutMs),
   );
   try {
-    await within(
-      hal.initialize(),
-      timeoutMs,
-      () => new HalError('NOT_CONNECTED', `no answer from the ${name} within ${timeoutMs} ms`),
+    // PhysicalHAL bounds its own hello by the timeout and says why it failed (silence, a wrong
+    // key); the margin lets that verdict arrive before this one
+    await within(hal.initialize(), timeoutMs + (physical ? PHYSICAL_VERDICT_MS : 0), () =>
+      unanswered(target, timeoutMs),
     );
   } catch (error) {
     // let go in the background: a HAL still connecting may take its own retry budget to stop
     void bounded(() => release(false));
+    if (isHalError(error) && error.code === 'NOT_CONNECTED' && physical) {
+      throw unanswered(target, timeoutMs, error);
+    }
+    if (isHalError(error) && error.code === 'AUTH_FAILED' && physical) {
+      throw new HalError('AUTH_FAILED', error.message.replace(/^the robot /, `the ${name} `), {
+        cause: error,
+        ...(error.details === undefined ? {} : { details: error.details }),
+      });
+    }
     if (isHalError(error)) throw error;
     throw new HalError('NOT_CONNECTED', `cannot connect to the ${name}: ${String(error)}`, {
       cause: error,

@@ -259,3 +259,31 @@ export function describeTarget(target: Target): string {
       return `device ${target.deviceId ?? '(default)'} on NATS ${[target.nats.servers].flat().join(',')}`;
   }
 }
+
+/**
+ * The options that name `target` again on a command line, for hints (`--udp 127.0.0.1:4210`);
+ * secrets are shown as placeholders, never echoed. Undefined for the embedded simulator, which
+ * lives only as long as its command.
+ */
+export function targetArgs(target: Target): string | undefined {
+  switch (target.kind) {
+    case 'sim':
+      return undefined;
+    case 'udp':
+    case 'serial': {
+      const where =
+        target.kind === 'udp'
+          ? `--udp ${target.host}:${target.port}`
+          : `--serial ${target.path}${target.baudRate === undefined ? '' : ` --baud ${target.baudRate}`}`;
+      const key = target.key === undefined ? '' : ' --key <hex>';
+      const scale = target.timeScale === 1 ? '' : ` --time-scale ${target.timeScale}`;
+      return `${where}${key}${scale}`;
+    }
+    case 'ws':
+      return `--ws ${target.url}`;
+    case 'nats': {
+      const device = target.deviceId === undefined ? '' : `--device ${target.deviceId} `;
+      return `${device}--nats ${[target.nats.servers].flat().join(',')}`;
+    }
+  }
+}

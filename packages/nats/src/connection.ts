@@ -1,3 +1,4 @@
+import { HalError } from '@hal/types';
 import { connect } from '@nats-io/transport-node';
 import type { ConnectionOptions, NatsConnection } from '@nats-io/transport-node';
 
@@ -21,7 +22,11 @@ export interface NatsConnectOptions {
 /** Either an open connection (shared, not closed by us) or how to open one. */
 export type NatsConnectionSource = { connection: NatsConnection } | NatsConnectOptions;
 
-/** Opens a connection that reconnects for ever (the owner closes it). */
+/**
+ * Opens a connection that reconnects for ever (the owner closes it). A first connection that
+ * fails is a HalError naming the servers and the cause: NOT_CONNECTED (nothing there, refused,
+ * timed out), or AUTH_FAILED when the server refused the credentials.
+ */
 export async function openConnection(options: NatsConnectOptions): Promise<NatsConnection> {
   const config: ConnectionOptions = {
     servers: options.servers,
@@ -36,7 +41,28 @@ export async function openConnection(options: NatsConnectOptions): Promise<NatsC
   if (options.token !== undefined) config.token = options.token;
   if (options.tls !== undefined) config.tls = options.tls;
   if (options.name !== undefined) config.name = options.name;
-  return connect(config);
+  try {
+    return await connect(config);
+  } catch (cause) {
+    throw unreachable(options.servers, cause);
+  }
+}
+
+/** The one error every command gives for a NATS server it could not connect to. */
+function unreachable(servers: string | string[], cause: unknown): HalError {
+  const where = [servers].flat().join(',');
+  const why = cause instanceof Error ? cause.message : String(cause);
+  if (/authori[sz]ation|authentication/i.test(why)) {
+    return new HalError('AUTH_FAILED', `NATS at ${where} refused the credentials: ${why}`, {
+      cause,
+      details: { servers: where },
+    });
+  }
+  return new HalError(
+    'NOT_CONNECTED',
+    `cannot reach NATS at ${where}: ${why} (is nats-server running there? see --nats or $NATS_URL)`,
+    { cause, details: { servers: where } },
+  );
 }
 
 /** The connection to use and whether we own (and must close) it. */

@@ -47,6 +47,8 @@ export function errorFromPayload(payload: HalErrorPayload): HalError {
  * device sends. Every wait is bounded by `callTimeoutMs`.
  */
 export class DeviceLink {
+  /** The `device_id` of the last reply: who answered (the served id of the default device). */
+  sender: string | undefined;
   #lastSeen = 0;
   #connected = true;
   readonly #subs: Subscription[] = [];
@@ -130,7 +132,9 @@ export class DeviceLink {
           headers,
         });
         this.seen();
-        const body = decodeMessage(msg.data, ErrorReplySchema.or(reply)).payload as unknown;
+        const envelope = decodeMessage(msg.data, ErrorReplySchema.or(reply));
+        this.sender = envelope.device_id;
+        const body = envelope.payload as unknown;
         const failed = ErrorReplySchema.safeParse(body);
         if (failed.success) throw errorFromPayload(failed.data.error);
         return body as z.output<S>;

@@ -7,6 +7,7 @@ import { ControllerWatchdog } from './controller-watchdog.js';
 import { CpuMeter } from './cpu-meter.js';
 import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
+import { refuseServedTwice } from './served-probe.js';
 import { wheelPowersFor } from './drive-mapping.js';
 import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
 import { HAL_CALLS } from './hal-calls.js';
@@ -70,6 +71,15 @@ export async function serveHalOnNats(
   options: GatewayOptions,
 ): Promise<HalGateway> {
   const { nc, owned } = await resolveConnection(options);
+  try {
+    await refuseServedTwice(nc, {
+      deviceId: options.deviceId,
+      defaultDevice: options.defaultDevice ?? true,
+    });
+  } catch (error) {
+    if (owned) await nc.close();
+    throw error;
+  }
   const gateway = new Gateway(nc, owned, hal, options);
   gateway.start();
   await nc.flush(); // the server has every subscription: the first request finds a responder
@@ -218,7 +228,16 @@ class Gateway implements HalGateway {
     priority: boolean,
   ): Promise<Omit<HalCallReply, 'request_id'>> {
     const spec = HAL_CALLS[name];
-    const safety = () => ({ emergency_stopped: this.hal.safety.isEmergencyStopped() });
+    // every reply carries the latch, and its reason while latched, so a client's status has both
+    const safety = () => {
+      const emergency_stopped = this.hal.safety.isEmergencyStopped();
+      const reason = emergency_stopped
+        ? this.hal.safety.getSafetyStatus().emergencyStopReason
+        : undefined;
+      return reason === undefined
+        ? { emergency_stopped }
+        : { emergency_stopped, emergency_stop_reason: reason };
+    };
     if (spec === undefined) {
       return {
         error: { code: 'UNKNOWN_COMMAND', message: `"call" is not a HAL call: "${name}"` },

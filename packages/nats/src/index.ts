@@ -1,4 +1,6 @@
 export { serveHalOnNats, errorPayload } from './gateway.js';
+export { refuseServedTwice } from './served-probe.js';
+export type { ServedProbe } from './served-probe.js';
 export type { GatewayOptions, HalGateway } from './gateway.js';
 export { NatsHAL } from './nats-hal.js';
 export type { NatsHALOptions } from './nats-hal.js';

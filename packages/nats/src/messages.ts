@@ -173,6 +173,8 @@ export const HalCallReplySchema = z.looseObject({
   value: z.unknown().optional(),
   error: HalErrorPayloadSchema.optional(),
   emergency_stopped: z.boolean(),
+  /** Why the served HAL is latched (as it stored the reason), while it is. */
+  emergency_stop_reason: z.string().optional(),
 });
 export type HalCallReply = z.infer<typeof HalCallReplySchema>;
 

@@ -178,7 +178,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
         CapabilityAnnouncementSchema,
         { timeoutMs: Math.min(this.#options.callTimeoutMs ?? 5000, 5000) },
       );
-      this.#learn(announcement);
+      this.#learn(announcement, link.sender);
     } catch (error) {
       link.close();
       throw error instanceof HalError && error.code === 'TIMEOUT'
@@ -243,10 +243,11 @@ export class NatsHAL implements HardwareAbstractionLayer {
     }
   }
 
-  #learn(announcement: CapabilityAnnouncement): void {
+  /** What the device said about itself; `sender` (the reply's `device_id`) names the default one. */
+  #learn(announcement: CapabilityAnnouncement, sender?: string): void {
     this.mode = announcement.mode as HALMode;
     this.#info = {
-      id: this.#options.deviceId ?? this.#info.id,
+      id: this.#options.deviceId ?? sender ?? this.#info.id,
       type: announcement.device_type,
       mode: this.mode,
       capabilities: announcement.caps,
@@ -265,9 +266,10 @@ export class NatsHAL implements HardwareAbstractionLayer {
   }
 
   /** The device's latch as a reply or its state reports it. */
-  #deviceLatch(estopped: boolean): void {
+  #deviceLatch(estopped: boolean, reason?: string): void {
     this.#deviceEstopped = estopped;
     if (!estopped) this.#deviceReason = undefined;
+    else if (reason !== undefined) this.#deviceReason = reason;
   }
 
   async #emergencyStop(reason: unknown): Promise<HALToolResult> {
@@ -333,7 +335,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
         ...(timeoutMs === undefined ? {} : { timeoutMs }),
       },
     );
-    this.#deviceLatch(reply.emergency_stopped);
+    this.#deviceLatch(reply.emergency_stopped, reply.emergency_stop_reason);
     if (reply.error !== undefined) throw errorFromPayload(reply.error);
     return reply;
   }

@@ -2,7 +2,7 @@ import { HalError, isHalError } from '@hal/types';
 import { scoped } from './logger.js';
 import type { ScopedLogger } from './logger.js';
 import type { WireReply } from './protocol/codec.js';
-import { randomNonce, robotError } from './session-errors.js';
+import { helloUnanswered, randomNonce, robotError } from './session-errors.js';
 import type { SessionOptions, SessionState } from './session-options.js';
 import { fastReply } from './protocol/reply-fast.js';
 import { HelloReplySchema, REPLY_SCHEMAS } from './protocol/schemas.js';
@@ -15,6 +15,7 @@ import {
   StopSignal,
 } from './safety-lane.js';
 import type { SafetyCommand, SafetyInterrupt, SafetyLaneTiming } from './safety-lane.js';
+import { DEFAULT_ATTEMPTS } from './transport/transport.js';
 import type { RequestOptions } from './transport/transport.js';
 
 export type { SessionOptions, SessionState } from './session-options.js';
@@ -79,9 +80,14 @@ export class Session {
     return this.#hello;
   }
 
-  /** Opens the session (`hello`) and starts the heartbeat. Throws NOT_CONNECTED on failure. */
-  async open(): Promise<HelloReply> {
-    const hello = await this.#exclusive(() => this.#sayHello(this.#options.request?.()));
+  /**
+   * Opens the session (`hello`) and starts the heartbeat. Throws NOT_CONNECTED when nothing
+   * answers, AUTH_FAILED when the robot answers but not with our key. `options` overrides the
+   * hello's timeout and attempts (how long connecting may take).
+   */
+  async open(options?: RequestOptions): Promise<HelloReply> {
+    const request = { ...this.#options.request?.(), ...options };
+    const hello = await this.#exclusive(() => this.#sayHello(request));
     this.#setState('connected', 'hello answered');
     this.#scheduleBeat();
     await this.#options.onConnected?.(hello, false);
@@ -283,12 +289,26 @@ export class Session {
       client: this.#options.client ?? '@hal/physical',
       nonce,
     };
-    const bytes = this.#options.codec.encode({ cmd: 'hello', seq, ...params });
-    let reply: WireReply;
-    try {
-      reply = await this.#options.transport.request(seq, bytes, options);
-    } catch (cause) {
-      throw new HalError('NOT_CONNECTED', 'the robot did not answer "hello"', { cause });
+    // a copy: the codec's pool reuses its bytes, and these are resent one attempt at a time
+    const bytes = this.#options.codec.encode({ cmd: 'hello', seq, ...params }).slice();
+    const codec = this.#options.codec;
+    const rejected = { ...codec.macRejections };
+    const attempts = options?.attempts ?? DEFAULT_ATTEMPTS;
+    let reply: WireReply | undefined;
+    // One attempt at a time (the same bytes and seq, so still one hello to the robot): a reply
+    // that fails our MAC check means a wrong key, said at once rather than after every attempt.
+    for (let sent = 1; reply === undefined; sent++) {
+      try {
+        reply = await this.#options.transport.request(seq, bytes, { ...options, attempts: 1 });
+      } catch (cause) {
+        const timedOut = isHalError(cause) && cause.code === 'TIMEOUT';
+        const refusedMac =
+          codec.macRejections.mismatched > rejected.mismatched ||
+          codec.macRejections.unsigned > rejected.unsigned;
+        if (!timedOut || refusedMac || sent >= attempts) {
+          throw helloUnanswered(cause, options, rejected, codec);
+        }
+      }
     }
     if (!reply.ok) throw robotError('hello', reply);
     const parsed = HelloReplySchema.safeParse(reply);

@@ -123,6 +123,8 @@ export class World {
   #timer: ReturnType<typeof setInterval> | undefined;
   #speed = 0;
   readonly #queue = new EventQueue<SimRobot>();
+  /** Robot id -> the id of the device that drives it (see {@link nameDevice}). */
+  readonly #deviceNames = new Map<string, string>();
   #index: RobotIndex | undefined;
 
   constructor(options: WorldOptions = {}) {
@@ -156,6 +158,19 @@ export class World {
   /** The real-time ticker's speed (simulated s per wall s), 0 when it is not running. */
   get realtimeSpeed(): number {
     return this.#speed;
+  }
+
+  /**
+   * Names robot `robotId` by the device that drives it (a SimulationHAL's device id), for the
+   * messages that speak of it: another robot's collision names `sim-b`, not `robot-2`.
+   */
+  nameDevice(robotId: string, deviceId: string): void {
+    this.#deviceNames.set(robotId, deviceId);
+  }
+
+  /** The device id that drives robot `robotId`, else the robot's own id. */
+  deviceName(robotId: string): string {
+    return this.#deviceNames.get(robotId) ?? robotId;
   }
 
   /** The robot with this id; throws INVALID_PARAMETER if there is none. */

@@ -60,9 +60,18 @@ describe('hal discover', () => {
     try {
       const io = captureIO();
       expect(await runHal(['--json', 'discover', '--timeout', '2500'], io)).toBe(0);
-      expect(io.stderr()).toMatch(
-        new RegExp(`hal discover: skipped "${id}": "auth" must be one of`),
-      );
+      // with --json the warning is a JSON log line like every command's, nothing else
+      const warnings = io
+        .stderr()
+        .trim()
+        .split('\n')
+        .map((line) => JSON.parse(line) as { log: { level: string; message: string } });
+      expect(warnings).toContainEqual({
+        log: expect.objectContaining({
+          level: 'warn',
+          message: expect.stringMatching(new RegExp(`^skipped "${id}": "auth" must be one of`)),
+        }),
+      });
       const ids = (io.jsonLines() as Record<string, unknown>[]).map((r) => r['deviceId']);
       expect(ids).not.toContain(id);
     } finally {

@@ -5,6 +5,7 @@ import type { DiscoverOptions } from '@hal/discovery';
 import { formatRobots } from '../discover/format.js';
 import { intInRange, ipv4Arg } from '../discover/options.js';
 import { emit, progress } from '../io.js';
+import { cliLogger } from '../logger.js';
 import type { RegisterCommand } from './index.js';
 
 interface DiscoverCliOptions {
@@ -29,10 +30,13 @@ export const registerDiscover: RegisterCommand = (program, { io, global }) => {
     )
     .action(async (options: DiscoverCliOptions) => {
       const g = global();
-      // a skipped (malformed) announcement is a warning: stderr, also with --json
+      // a skipped (malformed) announcement is a warning on stderr: a JSON log line with --json,
+      // as every command writes its warnings
+      const json = cliLogger(io, true);
       const logger: NonNullable<DiscoverOptions['logger']> = {
-        log: (level, _namespace, message) => {
-          if (level === 'warn' || level === 'error') io.err(`hal discover: ${message}\n`);
+        log: (level, namespace, message) => {
+          if (g.json) json.log(level, namespace, message);
+          else if (level === 'warn' || level === 'error') io.err(`hal discover: ${message}\n`);
         },
       };
       progress(io, g, `listening for robots for ${options.timeout} ms...`);

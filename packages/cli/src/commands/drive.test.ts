@@ -63,12 +63,14 @@ describe('hal drive on the embedded simulator', () => {
     [['forward', 'NaN'], /metres must be a finite number, got "NaN"/],
     [['forward', '12abc'], /metres must be a finite number/],
     [['forward', '0'], /forward: the distance must not be 0/],
-    [['forward', '5'], /forward \(sent in cm\): distanceCm Too big/],
+    [['forward', '5'], /forward: distance 5 m is above the limit 1\.884 m$/m],
+    [['forward', '-5'], /forward: distance -5 m is below the limit -1\.884 m$/m],
+    [['turn', '-3000'], /turn: angle -3000° is below the limit -2159\.9°$/m],
     [['turn', 'Infinity'], /degrees must be a finite number/],
     [['move-to', '1', 'x'], /y must be a finite number/],
-    [['move-to', '100', '0'], /move-to: x Too big/],
-    [['wheels', '300', '0'], /wheels: left Too big/],
-    [['wheels', '100', '100', '--duration', '-5'], /wheels: durationMs Too small/],
+    [['move-to', '100', '0'], /move-to: x 100 m is above the limit 50 m$/m],
+    [['wheels', '300', '0'], /wheels: left power 300 is above the limit 255$/m],
+    [['wheels', '100', '100', '--duration', '-5'], /wheels: duration -5 ms must be above 0 ms$/m],
     [['estop', 'a', 'b'], /too many arguments/],
   ])('refuses %j as a usage error before connecting to anything', async (argv, message) => {
     const io = captureIO();

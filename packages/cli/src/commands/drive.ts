@@ -1,6 +1,7 @@
 // `hal drive <action>`: one motion or safety call on one robot, its result printed (and live
 // pose on stderr while a motion runs). Numbers are checked before connecting.
 import { Command, Option } from 'commander';
+import { HalError, isHalError } from '@hal/types';
 import { actionText, checkAction, numberArg } from '../drive/actions.js';
 import type { DriveAction } from '../drive/actions.js';
 import { runDrive } from '../drive/run-drive.js';
@@ -8,8 +9,8 @@ import type { DriveOutcome } from '../drive/run-drive.js';
 import { emit } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
-import { addTargetOptions, resolveTarget } from '../target.js';
-import type { TargetCliOptions } from '../target.js';
+import { addTargetOptions, resolveTarget, targetArgs } from '../target.js';
+import type { Target, TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import type { RegisterCommand } from './index.js';
 
@@ -18,6 +19,23 @@ function outcomeText(action: DriveAction, { result, pose, stoppedByUser }: Drive
     result.executionTime === undefined ? '' : ` in ${(result.executionTime / 1000).toFixed(2)} s`;
   const stopped = stoppedByUser ? ', stopped on Ctrl-C' : '';
   return `${actionText(action)}: ok${time} (${result.mode}${stopped})\npose ${poseText(pose)}`;
+}
+
+/**
+ * An EMERGENCY_STOPPED error in the terms of the command line: the action as typed (not the HAL
+ * method), and the command that resets the latch in place of the library's
+ * `safety.resetEmergencyStop()`.
+ */
+function latchedError(error: HalError, action: DriveAction, target: Target): HalError {
+  const message = error.message
+    .replace(/^[a-zA-Z]+: /, '')
+    .replace(/;? *call safety\.resetEmergencyStop\(\) first/, '');
+  const args = targetArgs(target);
+  const hint = args === undefined ? '' : `; reset it with: hal drive reset-estop ${args}`;
+  return new HalError('EMERGENCY_STOPPED', `${actionText(action)}: ${message}${hint}`, {
+    cause: error,
+    ...(error.details === undefined ? {} : { details: error.details }),
+  });
 }
 
 /** Calls any client may make (a WebSocket watcher too): they never wait for control. */
@@ -39,7 +57,12 @@ async function drive(
     io,
     { ...connect, json: global.json, role: SAFETY_ONLY.has(action.kind) ? 'safety' : 'control' },
     ({ hal }) => runDrive(hal, action, io, global),
-  );
+  ).catch((error: unknown) => {
+    if (isHalError(error) && error.code === 'EMERGENCY_STOPPED') {
+      throw latchedError(error, action, target);
+    }
+    throw error;
+  });
   emit(io, global, { action, ...outcome }, () => outcomeText(action, outcome));
 }
 

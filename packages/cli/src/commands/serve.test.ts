@@ -43,7 +43,9 @@ describe('hal serve on WebSocket', () => {
     const { ws } = io.jsonLines()[0] as { ws: { url: string } };
     const refused = captureIO();
     expect(await runHal(['status', '--ws', ws.url], refused)).toBe(1);
-    expect(refused.stderr()).toContain('NOT_CONNECTED');
+    expect(refused.stderr()).toContain(
+      `AUTH_FAILED: ${ws.url} refused the connection (HTTP 401): no token was given`,
+    );
     const admitted = captureIO(env);
     expect(await runHal(['status', '--ws', ws.url], admitted), admitted.stderr()).toBe(0);
     const byOption = captureIO();
@@ -72,6 +74,11 @@ describe('hal serve on WebSocket', () => {
       ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--host', '0.0.0.0'],
       2,
       /"--host" needs --ws-port/,
+    ],
+    [
+      ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--token', 'a-token-of-16-chars'],
+      2,
+      /"--token" needs --ws-port/,
     ],
     [
       ['serve', '--sim', '--nats', 'nats://127.0.0.1:1', '--state-rate', '5'],

@@ -4,26 +4,28 @@
 import { Command, Option } from 'commander';
 import { TAFY_NODE_TYPE } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
-import { serveHalOnNats } from '@hal/nats';
+import { openConnection, refuseServedTwice, serveHalOnNats } from '@hal/nats';
 import type { HalGateway } from '@hal/nats';
 import { checkBinding, integerArg } from '@hal/remote/cli';
 import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
-import { HalError, isHalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import { announceGateway } from '../serve/announce-node.js';
 import { servePlan, servedSubjects } from '../serve/where.js';
-import type { ServeCliOptions } from '../serve/where.js';
+import type { ServeCliOptions, ServePlan } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
-import type { TargetCliOptions } from '../target.js';
+import type { Target, TargetCliOptions } from '../target.js';
 import { cliLogger } from '../logger.js';
 import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
-import type { RegisterCommand } from './index.js';
+import type { CommandContext, RegisterCommand } from './index.js';
 
 const SERVED_KINDS = ['sim', 'udp', 'serial'] as const;
+
+/** The NATS connection `hal serve` opens (and closes) itself. */
+type NatsConnection = Awaited<ReturnType<typeof openConnection>>;
 
 export const registerServe: RegisterCommand = (program, { io, global }) => {
   const command = new Command('serve')
@@ -83,97 +85,116 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
     // the robot options only (--device here names the served id, not a NATS robot to reach)
     const target = resolveTarget(options, io.env, SERVED_KINDS);
     if (plan.ws !== undefined) checkBinding(plan.ws.host, plan.ws.token); // before touching the robot
-    const opened = await openTarget(target, io, {
-      json: global().json,
-      ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
-      ...(options.device === undefined ? {} : { deviceId: options.device }),
-    });
-    const { hal } = opened;
-    let gateway: HalGateway | undefined;
-    let server: HalServer | undefined;
-    let announcer: TafyNodeAnnouncer | undefined;
+    // NATS first: a device already served is refused before the robot is opened (which would
+    // take a physical robot's session from the gateway serving it)
+    const nc = plan.nats === undefined ? undefined : await openConnection(plan.nats.connect);
     try {
-      const deviceId = options.device ?? opened.deviceId;
-      if (plan.nats !== undefined) {
-        try {
-          deviceIdArg(deviceId);
-        } catch {
-          throw new CliError(
-            'USAGE',
-            `the robot's id "${deviceId}" is not a NATS subject token: give --device <id>`,
-          );
-        }
-        gateway = await serveHalOnNats(hal, {
-          ...plan.nats.connect,
-          deviceId,
+      if (nc !== undefined && plan.nats !== undefined) {
+        await refuseServedTwice(nc, {
+          ...(options.device === undefined ? {} : { deviceId: options.device }),
           defaultDevice: plan.nats.defaultDevice,
-          stateRateHz: plan.nats.stateRateHz,
-        }).catch((error: unknown) => {
-          if (isHalError(error)) throw error;
-          throw new HalError('NOT_CONNECTED', `cannot reach NATS: ${String(error)}`, {
-            cause: error,
-          });
         });
       }
-      if (plan.ws !== undefined) {
-        server = await serveHal(hal, {
-          ...plan.ws,
-          deviceId,
-          logger: cliLogger(io, global().json),
-        });
-      }
-      let mdns: { service: string; name: string } | { error: string } | undefined;
-      if (plan.nats !== undefined && options.mdns !== false) {
-        const announced = await announceGateway({
-          deviceId,
-          caps: hal.getDeviceInfo().capabilities,
-          servers: [plan.nats.connect.servers].flat(),
-        });
-        if (typeof announced === 'string') mdns = { error: announced };
-        else {
-          announcer = announced;
-          mdns = { service: TAFY_NODE_TYPE, name: announced.name };
-        }
-      }
-      const serving = {
-        event: 'serving',
-        device: deviceId,
-        mode: hal.mode,
-        ...(plan.nats === undefined
-          ? {}
-          : {
-              nats: {
-                servers: [plan.nats.connect.servers].flat(),
-                subjects: servedSubjects(deviceId, plan.nats.defaultDevice),
-              },
-            }),
-        ...(server === undefined ? {} : { ws: { url: server.url } }),
-        ...(mdns === undefined ? {} : { mdns }),
-      };
-      emit(io, global(), serving, () =>
-        [
-          `serving ${deviceId} (${hal.mode})`,
-          ...(serving.nats === undefined
-            ? []
-            : [`  nats ${serving.nats.servers.join(',')}: ${serving.nats.subjects.join(', ')}`]),
-          ...(server === undefined ? [] : [`  listening ${server.url}`]),
-          ...(mdns === undefined
-            ? []
-            : 'error' in mdns
-              ? [`  not announced by mDNS: ${mdns.error}`]
-              : [`  announced by mDNS as ${mdns.name}.${mdns.service}.local`]),
-        ].join('\n'),
-      );
-      progress(io, global(), 'Ctrl-C stops serving (and stops the robot)');
-      await aborted(io.signal);
-      progress(io, global(), 'stopping');
+      await serveTarget({ io, global }, options, plan, target, nc);
     } finally {
-      await announcer?.stop().catch(() => undefined);
-      await server?.close().catch(() => undefined);
-      await gateway?.close().catch(() => undefined);
-      await opened.close();
+      await nc?.close().catch(() => undefined);
     }
-    emit(io, global(), { event: 'stopped' }, () => 'stopped');
   });
   program.addCommand(command);
 };
+
+/** Opens the robot, serves it until Ctrl-C, then stops serving and lets it go. */
+async function serveTarget(
+  { io, global }: CommandContext,
+  options: ServeCliOptions & TargetCliOptions,
+  plan: ServePlan,
+  target: Target,
+  nc: NatsConnection | undefined,
+): Promise<void> {
+  const opened = await openTarget(target, io, {
+    json: global().json,
+    ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
+    ...(options.device === undefined ? {} : { deviceId: options.device }),
+  });
+  const { hal } = opened;
+  let gateway: HalGateway | undefined;
+  let server: HalServer | undefined;
+  let announcer: TafyNodeAnnouncer | undefined;
+  try {
+    const deviceId = options.device ?? opened.deviceId;
+    if (plan.nats !== undefined && nc !== undefined) {
+      try {
+        deviceIdArg(deviceId);
+      } catch {
+        throw new CliError(
+          'USAGE',
+          `the robot's id "${deviceId}" is not a NATS subject token: give --device <id>`,
+        );
+      }
+      gateway = await serveHalOnNats(hal, {
+        connection: nc,
+        deviceId,
+        defaultDevice: plan.nats.defaultDevice,
+        stateRateHz: plan.nats.stateRateHz,
+      });
+    }
+    if (plan.ws !== undefined) {
+      server = await serveHal(hal, {
+        ...plan.ws,
+        deviceId,
+        logger: cliLogger(io, global().json),
+      });
+    }
+    let mdns: { service: string; name: string } | { error: string } | undefined;
+    if (plan.nats !== undefined && options.mdns !== false) {
+      const announced = await announceGateway({
+        deviceId,
+        caps: hal.getDeviceInfo().capabilities,
+        servers: [plan.nats.connect.servers].flat(),
+      });
+      if (typeof announced === 'string') mdns = { error: announced };
+      else {
+        announcer = announced;
+        mdns = { service: TAFY_NODE_TYPE, name: announced.name };
+      }
+    }
+    const serving = {
+      event: 'serving',
+      device: deviceId,
+      mode: hal.mode,
+      ...(plan.nats === undefined
+        ? {}
+        : {
+            nats: {
+              servers: [plan.nats.connect.servers].flat(),
+              subjects: servedSubjects(deviceId, plan.nats.defaultDevice),
+            },
+          }),
+      ...(server === undefined ? {} : { ws: { url: server.url } }),
+      ...(mdns === undefined ? {} : { mdns }),
+    };
+    emit(io, global(), serving, () =>
+      [
+        `serving ${deviceId} (${hal.mode})`,
+        ...(serving.nats === undefined
+          ? []
+          : [`  nats ${serving.nats.servers.join(',')}: ${serving.nats.subjects.join(', ')}`]),
+        ...(server === undefined ? [] : [`  listening ${server.url}`]),
+        ...(mdns === undefined
+          ? []
+          : 'error' in mdns
+            ? [`  not announced by mDNS: ${mdns.error}`]
+            : [`  announced by mDNS as ${mdns.name}.${mdns.service}.local`]),
+      ].join('\n'),
+    );
+    progress(io, global(), 'Ctrl-C stops serving (and stops the robot)');
+    await aborted(io.signal);
+    progress(io, global(), 'stopping');
+  } finally {
+    await announcer?.stop().catch(() => undefined);
+    await server?.close().catch(() => undefined);
+    await gateway?.close().catch(() => undefined);
+    await opened.close();
+  }
+  emit(io, global(), { event: 'stopped' }, () => 'stopped');
+}

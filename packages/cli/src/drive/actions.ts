@@ -25,23 +25,92 @@ export function numberArg(name: string) {
   };
 }
 
-/** The part of a zod schema used here (so this package needs no zod of its own). */
-interface Checker {
-  safeParse(
-    value: unknown,
-  ):
-    | { success: true }
-    | { success: false; error: { issues: { path: PropertyKey[]; message: string }[] } };
+/** One issue of a zod schema, as far as this file reads it. */
+interface Issue {
+  path: PropertyKey[];
+  message: string;
+  code?: string;
+  minimum?: unknown;
+  maximum?: unknown;
+  inclusive?: boolean;
 }
 
-function check(schema: Checker, params: unknown, what: string): void {
+/** The part of a zod schema used here (so this package needs no zod of its own). */
+interface Checker {
+  safeParse(value: unknown): { success: true } | { success: false; error: { issues: Issue[] } };
+}
+
+/**
+ * How a call's parameter reads on the command line: its name there, the unit the user typed, and
+ * the factor from the call's unit to that one (`distanceCm` is typed in metres: 0.01).
+ */
+interface Typed {
+  name: string;
+  unit: string;
+  factor: number;
+}
+
+const TYPED: Readonly<Record<string, Typed>> = {
+  distanceCm: { name: 'distance', unit: ' m', factor: 0.01 },
+  degrees: { name: 'angle', unit: '°', factor: 1 },
+  x: { name: 'x', unit: ' m', factor: 1 },
+  y: { name: 'y', unit: ' m', factor: 1 },
+  speed: { name: 'speed', unit: ' m/s', factor: 1 },
+  left: { name: 'left power', unit: '', factor: 1 },
+  right: { name: 'right power', unit: '', factor: 1 },
+  durationMs: { name: 'duration', unit: ' ms', factor: 1 },
+  reason: { name: 'reason', unit: '', factor: 1 },
+};
+
+/** A number as people read it: at most 3 decimals, no trailing zeros (1.884, not 1.8840000). */
+function figure(n: number): string {
+  return String(Number(n.toFixed(3)));
+}
+
+/**
+ * The issue in the user's terms: "distance 5 m is above the limit 1.884 m" for a range limit
+ * (the value as typed, the limit converted to its unit); zod's own text for anything else.
+ */
+function issueText(issue: Issue, typedValue: number | undefined, signed: boolean): string {
+  const field = issue.path.map(String).join('.');
+  const typed = TYPED[field];
+  const limit = issue.code === 'too_big' ? issue.maximum : issue.minimum;
+  const isRange = issue.code === 'too_big' || issue.code === 'too_small';
+  if (typed === undefined || !isRange || typeof limit !== 'number' || typedValue === undefined) {
+    return `${field === '' ? '' : `${field} `}${issue.message}`;
+  }
+  // forward and turn check the size of a signed value: a refused -5 m is below -1.884 m
+  const mirrored = signed && typedValue < 0;
+  const above = (issue.code === 'too_big') !== mirrored;
+  const bound = figure((mirrored ? -limit : limit) * typed.factor);
+  const relation =
+    issue.inclusive === false
+      ? above
+        ? 'must be below'
+        : 'must be above'
+      : above
+        ? 'is above the limit'
+        : 'is below the limit';
+  return `${typed.name} ${figure(typedValue)}${typed.unit} ${relation} ${bound}${typed.unit}`;
+}
+
+function check(
+  schema: Checker,
+  params: Record<string, unknown>,
+  what: string,
+  /** The values as typed where the call is sent their size (`forward -5`: distanceCm 500). */
+  typedValues: Readonly<Record<string, number | undefined>> = {},
+): void {
   const parsed = schema.safeParse(params);
   if (!parsed.success) {
     const issue = parsed.error.issues[0];
-    const field = issue?.path.map(String).join('.') ?? '';
+    if (issue === undefined) throw new CliError('USAGE', `${what}: invalid`);
+    const field = issue.path.map(String).join('.');
+    const signed = typedValues[field] !== undefined;
+    const value = typedValues[field] ?? params[field];
     throw new CliError(
       'USAGE',
-      `${what}: ${field === '' ? '' : `${field} `}${issue?.message ?? 'invalid'}`,
+      `${what}: ${issueText(issue, typeof value === 'number' ? value : undefined, signed)}`,
     );
   }
 }
@@ -50,13 +119,19 @@ function check(schema: Checker, params: unknown, what: string): void {
 export function checkAction(action: DriveAction): void {
   const s = V1_CALL_SCHEMAS;
   switch (action.kind) {
-    case 'forward':
+    case 'forward': {
       if (action.metres === 0) throw new CliError('USAGE', 'forward: the distance must not be 0');
-      check(s.moveForward, { distanceCm: Math.abs(action.metres) * 100 }, 'forward (sent in cm)');
+      // the call takes centimetres; the message speaks of the metres that were typed
+      check(s.moveForward, { distanceCm: Math.abs(action.metres) * 100 }, 'forward', {
+        distanceCm: action.metres,
+      });
       return;
+    }
     case 'turn':
       if (action.degrees === 0) throw new CliError('USAGE', 'turn: the angle must not be 0');
-      check(s.rotate, { direction: 'left', degrees: Math.abs(action.degrees) }, 'turn');
+      check(s.rotate, { direction: 'left', degrees: Math.abs(action.degrees) }, 'turn', {
+        degrees: action.degrees,
+      });
       return;
     case 'move-to':
       check(s.moveTo, { x: action.x, y: action.y, z: 0, speed: action.speed }, 'move-to');

@@ -4,13 +4,25 @@ import type { DeviceHealth } from '@hal/fleet/node';
 
 const pad = (text: string, width: number): string => text.padEnd(width);
 
+/** The library's reset hints (`resetEmergencyStop()`), as the command to type. */
+const LIBRARY_RESET_HINT =
+  /;? *(?:call safety\.resetEmergencyStop\(\) first|reset it with resetEmergencyStop\(\))/;
+
+/** A member's error message, its reset hint naming `hal fleet reset`. */
+export function fleetErrorText(message: string | undefined): string {
+  if (message === undefined) return '';
+  return LIBRARY_RESET_HINT.test(message)
+    ? message.replace(LIBRARY_RESET_HINT, '; reset it with: hal fleet reset (and the same devices)')
+    : message;
+}
+
 /** One line per device: its own result, or its code and message. */
 export function formatReport(title: string, report: FleetReport): string {
   const width = Math.max(6, ...report.results.map((r) => r.device.length)) + 2;
   const lines = report.results.map((r) =>
     r.result.success
       ? `${pad(r.device, width)}ok    ${r.result.executionTime ?? 0} ms`
-      : `${pad(r.device, width)}FAIL  ${r.result.code}: ${r.result.error}`,
+      : `${pad(r.device, width)}FAIL  ${r.result.code}: ${fleetErrorText(r.result.error)}`,
   );
   const summary = `${title}: ${report.succeeded.length} ok, ${report.failed.length} failed, ${report.executionTime} ms`;
   return [...lines, summary].join('\n');

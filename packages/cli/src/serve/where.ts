@@ -61,8 +61,10 @@ export function servePlan(
     );
   }
   if (!wsNamed) {
+    // $HAL_SERVE_TOKEN may be set for other commands; only an explicit --token is refused
     for (const [value, name] of [
       [o.host, '--host'],
+      [o.token, '--token'],
       [o.heartbeatTimeout, '--heartbeat-timeout'],
     ] as const) {
       if (value !== undefined) throw new CliError('USAGE', `"${name}" needs --ws-port`);

@@ -80,12 +80,7 @@ export async function runTestHal(
   }
   const output = global();
   const connect = natsConnectOptions(options, io.env, 'hal-test');
-  const nc = await openConnection(connect).catch((cause: unknown) => {
-    const why = cause instanceof Error ? cause.message : String(cause);
-    throw new HalError('NOT_CONNECTED', `cannot reach NATS at ${String(connect.servers)}: ${why}`, {
-      cause,
-    });
-  });
+  const nc = await openConnection(connect);
   try {
     if (options.all !== true) {
       const report = await checkOne(ctx, nc, options.device, options);

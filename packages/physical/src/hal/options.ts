@@ -40,6 +40,11 @@ export interface PhysicalHALOptions {
    * `attempts`: 6000 ms by default).
    */
   safetyLane?: SafetyLaneTiming;
+  /**
+   * How long `initialize()` says `hello` before it gives up, real ms (resent every
+   * `requestTimeoutMs`). Default one request's budget, `requestTimeoutMs` x `attempts` (6000 ms).
+   */
+  connectTimeoutMs?: number;
   /** Extra time a motion may take beyond its planned duration, real ms. Default 2000. */
   motionTimeoutMarginMs?: number;
   /** Names the host software in `hello`. */

@@ -1,6 +1,7 @@
 import { describeHalContract } from '@hal/types/testing';
 import { describe, expect, it } from 'vitest';
 import { MockRobot } from '../mock/mock-robot.js';
+import { createAuthenticator } from '../protocol/auth.js';
 import { PhysicalHAL } from './physical-hal.js';
 import type { PhysicalHALOptions } from './options.js';
 
@@ -20,6 +21,43 @@ describeHalContract('PhysicalHAL over the mock robot', {
 });
 
 describe('PhysicalHAL', () => {
+  describe('#initialize', () => {
+    it('fails AUTH_FAILED, not NOT_CONNECTED, when the robot answers with another key', async () => {
+      const robot = new MockRobot({ auth: await createAuthenticator('c0ffee') });
+      const wrong = new PhysicalHAL(
+        {
+          mode: 'physical',
+          deviceId: 'cube-1',
+          connection: { type: 'wifi', host: 'x', key: 'beef' },
+        },
+        { transport: robot.transport(), requestTimeoutMs: 50, attempts: 20 },
+      );
+      const error: unknown = await wrong.initialize().catch((e: unknown) => e);
+      expect(error).toMatchObject({
+        code: 'AUTH_FAILED',
+        message: expect.stringContaining('the key is wrong'),
+      });
+      // and the robot opened no session: nothing it was sent was executed
+      expect(robot.requests.filter((r) => r['cmd'] === 'hello')).toHaveLength(0);
+      await wrong.cleanup();
+    });
+
+    it('fails NOT_CONNECTED, naming the wait, when nothing answers for connectTimeoutMs', async () => {
+      const robot = new MockRobot();
+      robot.unresponsive = true;
+      const hal = new PhysicalHAL(
+        { mode: 'physical', deviceId: 'cube-1' },
+        { transport: robot.transport(), requestTimeoutMs: 50, connectTimeoutMs: 400 },
+      );
+      await expect(hal.initialize()).rejects.toMatchObject({
+        code: 'NOT_CONNECTED',
+        message: 'the robot did not answer "hello" within 400 ms (8 attempts)',
+        details: { command: 'hello', attempts: 8, waitedMs: 400 },
+      });
+      await hal.cleanup();
+    });
+  });
+
   describe('#moveForward', () => {
     it('sends one move_cm and resolves once the robot reports the move done', async () => {
       const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });

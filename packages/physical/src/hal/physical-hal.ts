@@ -27,7 +27,12 @@ import { DEFAULT_SAFETY_LANE } from '../safety-lane.js';
 import type { SafetyInterrupt, SafetyLaneTiming } from '../safety-lane.js';
 import { Session } from '../session.js';
 import type { SessionState } from '../session.js';
-import type { SerialLinkStats, Transport, TransportStats } from '../transport/transport.js';
+import type {
+  RequestOptions,
+  SerialLinkStats,
+  Transport,
+  TransportStats,
+} from '../transport/transport.js';
 import { sendCalibration } from './calibration.js';
 import type { WheelCalibration } from './calibration.js';
 import { createCommunication } from './communication.js';
@@ -165,7 +170,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     this.#transport = transport;
     this.#session = session;
     try {
-      const hello = await session.open();
+      const hello = await session.open(this.#helloOptions());
       this.#learn(hello);
       const status = await session.command('get_status', {});
       this.#tracker.anchor(status);
@@ -193,6 +198,14 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       this.#transport = undefined;
       throw error;
     }
+  }
+
+  /** The first hello's timing: resent as any request is, for `connectTimeoutMs` if given. */
+  #helloOptions(): RequestOptions | undefined {
+    const connectMs = this.#options.connectTimeoutMs;
+    if (connectMs === undefined) return undefined;
+    const timeoutMs = Math.min(this.#timing.request().timeoutMs ?? 500, connectMs);
+    return { timeoutMs, attempts: Math.max(1, Math.floor(connectMs / timeoutMs)) };
   }
 
   /** Stops the motors, closes the session and the link. Safe to call twice. */

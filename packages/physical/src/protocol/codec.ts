@@ -30,6 +30,12 @@ export class MessageCodec {
   readonly #auth: MessageAuthenticator | undefined;
   /** Where requests are written: a view each, not an ArrayBuffer each (see BytePool). */
   readonly #pool = new BytePool();
+  /**
+   * Inbound messages refused for their MAC, by why: `unsigned` carried none (the device has no
+   * key), `mismatched` carried one that is not ours (the device has another key). They say a
+   * device answered, even though what it said cannot be trusted.
+   */
+  readonly macRejections = { unsigned: 0, mismatched: 0 };
 
   constructor(auth?: MessageAuthenticator) {
     this.#auth = auth;
@@ -104,10 +110,12 @@ export class MessageCodec {
       if (signed !== undefined) json = signed.json;
     } else {
       if (signed === undefined) {
+        this.macRejections.unsigned += 1;
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply has no MAC suffix') };
       }
       json = signed.json;
       if (!this.#auth.verify(json, signed.mac)) {
+        this.macRejections.mismatched += 1;
         return { ok: false, error: new HalError('AUTH_FAILED', 'reply MAC does not match') };
       }
     }

@@ -32,6 +32,15 @@ export interface ConnectionOptions {
   onConnected: (hello: HelloPayload) => void;
 }
 
+/** The text of a WebSocket error event (`ws` gives a message; a browser gives nothing). */
+function errorText(event: unknown): string | undefined {
+  if (typeof event !== 'object' || event === null) return undefined;
+  const { message, error } = event as { message?: unknown; error?: unknown };
+  if (typeof message === 'string' && message !== '') return message;
+  if (error instanceof Error) return error.message;
+  return undefined;
+}
+
 export class Connection {
   hello: HelloPayload | undefined;
   role: Role = 'watcher';
@@ -154,17 +163,11 @@ export class Connection {
         if (this.#socket === socket) this.#socket = undefined;
         reject(error);
       };
-      socket.onerror = () => undefined;
-      socket.onclose = (event) =>
-        fail(
-          new HalError(
-            'NOT_CONNECTED',
-            `cannot connect to ${this.#options.url} (closed ${event.code}${event.reason ? `: ${event.reason}` : ''})`,
-            {
-              details: { closeCode: event.code },
-            },
-          ),
-        );
+      let refusal: string | undefined;
+      socket.onerror = (event) => {
+        refusal = errorText(event);
+      };
+      socket.onclose = (event) => fail(this.#closedBeforeHello(event, refusal));
       socket.onmessage = (event) => {
         this.#onMessage(event.data);
         if (this.hello === undefined) return;
@@ -180,6 +183,37 @@ export class Connection {
     clearInterval(this.#heartbeat);
     this.#heartbeat = setInterval(() => this.send(MESSAGE_SCHEMAS.heartbeat, {}), every);
     this.#options.onConnected(hello);
+  }
+
+  /**
+   * Why the socket closed before the server's hello. `ws` reports the HTTP status of a refused
+   * upgrade ("Unexpected server response: 401"): a refused token is AUTH_FAILED, not a dead server.
+   * A browser's WebSocket hides the status, so there the message names both causes.
+   */
+  #closedBeforeHello(event: { code: number; reason: string }, refusal: string | undefined) {
+    const url = this.#options.url;
+    const status = /Unexpected server response: (\d{3})/.exec(refusal ?? '')?.[1];
+    if (status === '401' || status === '403') {
+      const given = this.#options.token === undefined ? 'no token was given' : 'the token is wrong';
+      return new HalError(
+        'AUTH_FAILED',
+        `${url} refused the connection (HTTP ${status}): ${given} (the server's --token or $HAL_SERVE_TOKEN)`,
+        { details: { httpStatus: Number(status) } },
+      );
+    }
+    if (status !== undefined) {
+      return new HalError(
+        'NOT_CONNECTED',
+        `${url} answered HTTP ${status}, not a WebSocket upgrade: is it a HAL server?`,
+        { details: { httpStatus: Number(status) } },
+      );
+    }
+    const why = refusal === undefined ? '' : `: ${refusal}`;
+    return new HalError(
+      'NOT_CONNECTED',
+      `cannot connect to ${url} (closed ${event.code}${event.reason ? `: ${event.reason}` : ''}${why})`,
+      { details: { closeCode: event.code } },
+    );
   }
 
   #onMessage(data: unknown): void {

@@ -13,7 +13,7 @@ export interface RemoteHALOptions {
    * connecting (the previous controller is told); 'watch': never control (reads, state, e-stop; connects with `?role=watch`).
    */
   control?: 'auto' | 'take' | 'watch';
-  /** WebSocket constructor. Default `globalThis.WebSocket`, else the `ws` package. */
+  /** WebSocket constructor. Default the `ws` package in Node, `globalThis.WebSocket` elsewhere. */
   WebSocket?: WebSocketConstructor;
   /** `device_id` of this client's messages. Default `remote-client`. */
   clientId?: string;

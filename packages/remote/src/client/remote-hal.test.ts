@@ -257,12 +257,17 @@ describe('RemoteHAL', () => {
     expect(Date.now() - started).toBeLessThan(3000);
   });
 
-  it('presents the token and is refused without it', async () => {
+  it('presents the token, and is refused without it or with a wrong one as AUTH_FAILED (HTTP 401)', async () => {
     const token = 'a-long-enough-secret-token';
     const { server } = await served({ token });
     const without = remote({ url: server.url, reconnect: false });
     const error: unknown = await without.initialize().catch((e: unknown) => e);
-    expect(isHalError(error) && error.code).toBe('NOT_CONNECTED');
+    expect(isHalError(error) && error.code).toBe('AUTH_FAILED');
+    expect(String(error)).toMatch(/refused the connection \(HTTP 401\): no token was given/);
+    const wrong = remote({ url: server.url, token: 'not-the-right-token', reconnect: false });
+    const wrongError: unknown = await wrong.initialize().catch((e: unknown) => e);
+    expect(isHalError(wrongError) && wrongError.code).toBe('AUTH_FAILED');
+    expect(String(wrongError)).toMatch(/\(HTTP 401\): the token is wrong/);
     const withToken = remote({ url: server.url, token });
     await withToken.initialize();
     expect(withToken.isReady()).toBe(true);

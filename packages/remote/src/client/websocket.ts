@@ -23,16 +23,29 @@ export type WebSocketConstructor = new (
 export const OPEN = 1;
 
 /**
- * The constructor to use: the one given, else the global WebSocket (browsers, Node 22+), else
- * `ws`, loaded only then, so a browser bundle never pulls it in.
+ * The constructor to use: the one given; in Node `ws` (it sends the token as a header and reports
+ * the HTTP status of a refused upgrade, which Node's global WebSocket hides); else the global
+ * WebSocket (browsers). `ws` is loaded only in Node, so a browser bundle never pulls it in.
  */
 export async function resolveWebSocket(
   given: WebSocketConstructor | undefined,
 ): Promise<{ ctor: WebSocketConstructor; headers: boolean }> {
   if (given !== undefined) return { ctor: given, headers: false };
   const global = (globalThis as { WebSocket?: unknown }).WebSocket;
-  if (typeof global === 'function') return { ctor: global as WebSocketConstructor, headers: false };
+  const inNode =
+    typeof (globalThis as { process?: { versions?: { node?: string } } }).process?.versions
+      ?.node === 'string';
+  if (!inNode && typeof global === 'function') {
+    return { ctor: global as WebSocketConstructor, headers: false };
+  }
   const module = 'ws';
-  const ws = (await import(/* @vite-ignore */ module)) as { WebSocket: unknown };
-  return { ctor: ws.WebSocket as WebSocketConstructor, headers: true };
+  try {
+    const ws = (await import(/* @vite-ignore */ module)) as { WebSocket: unknown };
+    return { ctor: ws.WebSocket as WebSocketConstructor, headers: true };
+  } catch (error) {
+    if (typeof global === 'function') {
+      return { ctor: global as WebSocketConstructor, headers: false };
+    }
+    throw error;
+  }
 }

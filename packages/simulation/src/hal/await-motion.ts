@@ -1,4 +1,5 @@
 import { HalError } from '@hal/types';
+import type { Contact } from '../robot/contact.js';
 import type { MotionHandle, MotionReport } from '../robot/motion-report.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { HalContext } from './context.js';
@@ -6,6 +7,21 @@ import type { HalContext } from './context.js';
 /** The robot's pose as results carry it: metres and radians, world frame. */
 export function poseData(robot: SimRobot): Record<string, number> {
   return { x: robot.x, y: robot.y, yaw: robot.yaw };
+}
+
+/** What a contact touched, in words: "the arena's edge", "a wall", "an obstacle", "sim-b". */
+function touchedText(ctx: HalContext, contact: Contact): string {
+  if (contact.robotId !== undefined) return `robot ${ctx.world.deviceName(contact.robotId)}`;
+  switch (contact.role) {
+    case 'arena':
+      return "the arena's edge";
+    case 'wall':
+      return 'a wall';
+    case 'obstacle':
+      return 'an obstacle';
+    case 'robot':
+      return 'another robot';
+  }
 }
 
 /**
@@ -37,9 +53,10 @@ export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promis
   if (report.outcome === 'done') return report;
   if (report.outcome === 'collision' && report.contact !== undefined) {
     const c = report.contact;
+    const self = ctx.world.deviceName(robot.id);
     throw new HalError(
       'COLLISION',
-      `the robot touched ${c.robotId === undefined ? `a ${c.role}` : `robot "${c.robotId}"`} at (${c.point.x.toFixed(3)}, ${c.point.y.toFixed(3)}) m and stopped`,
+      `${self} touched ${touchedText(ctx, c)} at (${c.point.x.toFixed(3)}, ${c.point.y.toFixed(3)}) m and stopped`,
       { details: { contact: c, pose: poseData(ctx.robot()), moveId: report.moveId } },
     );
   }

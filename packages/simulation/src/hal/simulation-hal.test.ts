@@ -68,6 +68,23 @@ describe('SimulationHAL', () => {
       expect(pose.velocity.linear).toBe(0);
     });
 
+    it('names the device and what it touched in words in the COLLISION message', async () => {
+      const world = new World({
+        map: {
+          name: 'wall ahead',
+          arena: { width: 1, height: 1 },
+          obstacles: [{ kind: 'box', x: 0.3, y: 0, width: 0.1, depth: 1 }],
+        },
+      });
+      const hal = await ready(new SimulationHAL({ world, deviceId: 'cube-7' }));
+      const obstacle = await hal.locomotion.moveForward(50);
+      expect(obstacle.error).toMatch(/^cube-7 touched an obstacle at \(0\.250, 0\.000\) m/);
+      const boxed = new World({ map: { name: 'small', arena: { width: 1, height: 1 } } });
+      const alone = await ready(new SimulationHAL({ world: boxed, deviceId: 'cube-7' }));
+      const edge = await alone.locomotion.moveForward(100);
+      expect(edge.error).toMatch(/^cube-7 touched the arena's edge at /);
+    });
+
     it('stamps results with the simulated clock: a 10 cm move takes its planned 4121 ms', async () => {
       const hal = await ready(new SimulationHAL());
       const result = await hal.locomotion.moveForward(10);
@@ -274,6 +291,10 @@ describe('SimulationHAL', () => {
       const result = await a.locomotion.moveForward(40);
       expect(result.code).toBe('COLLISION');
       expect(result.details?.['contact']).toMatchObject({ role: 'robot', robotId: b.robot.id });
+      expect(result.error).toMatch(
+        new RegExp(`^${a.getDeviceInfo().id} touched robot ${b.getDeviceInfo().id} at `),
+      );
+      expect(b.getDeviceInfo().id).not.toBe(b.robot.id);
     });
   });
 });

@@ -57,6 +57,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       });
       this.#robotId = added.id;
     }
+    this.world.nameDevice(this.#robotId, this.getDeviceInfo().id);
     const boundary = new HalBoundary({
       mode: this.mode,
       config: () => this.robot.config,
