@@ -38,7 +38,10 @@ const outcome = await runAgent({
   },
   caps: { maxSteps: Number(env['AGENT_MAX_STEPS'] ?? 20), maxMs: 5 * 60_000 },
   signal: controller.signal,
-  onEvent: (event) => console.log(describeEvent(event)),
+  onEvent: (event) => {
+    const line = describeEvent(event);
+    if (line !== undefined) console.log(line);
+  },
 });
 
 const pose = await hal.locomotion.getPose();

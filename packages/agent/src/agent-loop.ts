@@ -1,5 +1,4 @@
 import type { ToolResult } from '@hal/tools';
-import { requestCompletion } from './chat-client.js';
 import type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
 import { AgentError, errorMessage } from './errors.js';
 import type { AgentDoneReason, AgentEvent, AgentEventListener } from './events.js';
@@ -119,13 +118,17 @@ export async function agentLoop(settings: AgentSettings, parts: LoopParts): Prom
     step += 1;
     emit({ type: 'step_started', step, elapsedMs: elapsed() });
     let reply;
+    const requested = Date.now();
     try {
-      reply = await requestCompletion(
-        settings,
+      reply = await settings.provider.complete(
         { messages, tools: chatTools },
-        step,
-        run,
-        (retry) => emit({ type: 'retry', step, ...retry }),
+        {
+          step,
+          signal: run,
+          onRetry: (retry) => emit({ type: 'retry', step, ...retry }),
+          onToken: (piece) => emit({ type: 'token', step, text: piece }),
+          onContextTrimmed: (info) => emit({ type: 'context_trimmed', step, ...info }),
+        },
       );
     } catch (cause) {
       if (run.aborted) return finish(stoppedReason());
@@ -137,6 +140,7 @@ export async function agentLoop(settings: AgentSettings, parts: LoopParts): Prom
       emit({ type: 'error', step, error });
       return finish('error', error);
     }
+    emit(usageEvent(step, Date.now() - requested, reply.usage));
     if (reply.text !== '') {
       text = reply.text;
       emit({ type: 'assistant_text', step, text: reply.text });
@@ -196,5 +200,21 @@ function resultEvent(
     text: resultText(result),
     image: result.content.some((part) => part.type === 'image'),
     durationMs,
+  };
+}
+
+function usageEvent(
+  step: number,
+  durationMs: number,
+  usage: { promptTokens: number; completionTokens: number } | undefined,
+): AgentEvent {
+  if (usage === undefined) return { type: 'usage', step, durationMs };
+  return {
+    type: 'usage',
+    step,
+    durationMs,
+    promptTokens: usage.promptTokens,
+    completionTokens: usage.completionTokens,
+    ...(durationMs > 0 ? { tokensPerSecond: (usage.completionTokens * 1000) / durationMs } : {}),
   };
 }

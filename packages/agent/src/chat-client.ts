@@ -1,4 +1,5 @@
 import { AgentError, errorMessage } from './errors.js';
+import type { ChatProvider } from './chat-provider.js';
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import { parseReply } from './reply.js';
 import type { AssistantReply } from './reply.js';
@@ -135,4 +136,13 @@ async function attemptOnce(
 
 function failed(error: AgentError): AttemptFailure {
   return { error, retryable: true, retryAfterMs: undefined };
+}
+
+/** The OpenAI-compatible chat-completions endpoint as a {@link ChatProvider}. */
+export function openAIProvider(settings: ChatClientSettings): ChatProvider {
+  return {
+    name: `openai:${settings.model}`,
+    complete: (request, turn) =>
+      requestCompletion(settings, request, turn.step, turn.signal, turn.onRetry),
+  };
 }
