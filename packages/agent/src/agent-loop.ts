@@ -133,9 +133,7 @@ export async function agentLoop(settings: AgentSettings, parts: LoopParts): Prom
     } catch (cause) {
       if (run.aborted) return finish(stoppedReason());
       const error =
-        cause instanceof AgentError
-          ? cause
-          : new AgentError('NETWORK', errorMessage(cause), { cause });
+        cause instanceof AgentError ? cause : providerError(settings.provider.name, cause);
       settings.logger.warn('agent request failed', { step, error: error.message });
       emit({ type: 'error', step, error });
       return finish('error', error);
@@ -217,4 +215,13 @@ function usageEvent(
     completionTokens: usage.completionTokens,
     ...(durationMs > 0 ? { tokensPerSecond: (usage.completionTokens * 1000) / durationMs } : {}),
   };
+}
+
+/** A provider's own error as an AgentError PROVIDER, keeping its code in `details`. */
+function providerError(provider: string, cause: unknown): AgentError {
+  const code = (cause as { code?: unknown } | null)?.code;
+  return new AgentError('PROVIDER', `${provider}: ${errorMessage(cause)}`, {
+    ...(typeof code === 'string' ? { details: { code } } : {}),
+    cause,
+  });
 }
