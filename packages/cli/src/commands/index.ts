@@ -10,6 +10,7 @@ import { registerDiscover } from './discover.js';
 import { registerEmulate } from './emulate.js';
 import { registerTest } from './test.js';
 import { registerFleet } from './fleet.js';
+import { registerAgent } from './agent.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -26,6 +27,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerStatus,
   registerDrive,
   registerTeleop,
+  registerAgent,
   registerServe,
   registerEmulate,
   registerDiscover,
