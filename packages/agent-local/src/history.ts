@@ -12,8 +12,9 @@ export const IMAGE_PLACEHOLDER = '[camera frame not shown: this model takes no i
 const RESULT_MAX_CHARS = 800;
 
 /** Follows the results of a turn, then the goal. */
-const NEXT =
-  'If the goal is done, reply {"answer": what you did}; otherwise call the next tool. The goal: ';
+const NEXT = 'The goal was: ';
+
+const AFTER = 'If it is done now, reply {"answer": what you did}; if not, call the next tool.';
 
 /** Rough per-message cost of the chat template's markers, tokens. */
 const TEMPLATE_TOKENS = 8;
@@ -112,7 +113,7 @@ export function fitHistory(
   for (const item of items.slice(start)) push(item.type, item.text);
   // after results, remind the model of the goal and how to finish (small models repeat a call)
   if (history[history.length - 1]?.type === 'user' && items.length > start)
-    push('user', `${NEXT}${JSON.stringify(goalText)}`);
+    push('user', `${NEXT}${JSON.stringify(goalText)}. ${AFTER}`);
   history.push({ type: 'model', response: [] });
   return { history, droppedMessages: start, promptTokens: total };
 }

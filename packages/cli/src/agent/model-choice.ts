@@ -27,9 +27,13 @@ export type ModelChoice =
     }
   | { kind: 'endpoint'; endpoint: AgentEndpoint; tools?: readonly string[] };
 
-/** Steps a run may take when --max-steps is not given: a small local model rarely says it is done. */
-export const DEFAULT_LOCAL_STEPS = 3;
-export const DEFAULT_ENDPOINT_STEPS = 20;
+/**
+ * Model requests a run may make when --max-steps is not given. The default SmolLM2-135M does one
+ * simple thing right but, measured, never answers that it is done: given more requests it
+ * repeats or wanders (a turn after "drive forward 10 cm"). So it gets one; any other model 20.
+ */
+export const DEFAULT_SMALL_MODEL_STEPS = 1;
+export const DEFAULT_STEPS = 20;
 
 function toolList(text: string | undefined): readonly string[] | 'all' | undefined {
   if (text === undefined) return undefined;

@@ -12,7 +12,7 @@ import type { LeashCliOptions } from '@hal/mcp/leash-options';
 import { integerArg, positiveArg } from '@hal/remote/cli';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Pose } from '@hal/types';
-import { DEFAULT_ENDPOINT_STEPS, DEFAULT_LOCAL_STEPS, modelChoice } from '../agent/model-choice.js';
+import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
 import type { ModelChoice, ModelCliOptions } from '../agent/model-choice.js';
 import { eventPrinter } from '../agent/print.js';
 import { CliError } from '../cli-error.js';
@@ -88,7 +88,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     .addOption(
       new Option(
         '--max-steps <n>',
-        `most model requests (default ${DEFAULT_LOCAL_STEPS} local, ${DEFAULT_ENDPOINT_STEPS} endpoint)`,
+        `most model requests (default ${DEFAULT_SMALL_MODEL_STEPS} with the default model, else ${DEFAULT_STEPS})`,
       ).argParser(integerArg('--max-steps', 1, 200)),
     )
     .addOption(
@@ -176,7 +176,9 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
             caps: {
               maxSteps:
                 options.maxSteps ??
-                (choice.kind === 'local' ? DEFAULT_LOCAL_STEPS : DEFAULT_ENDPOINT_STEPS),
+                (choice.kind === 'local' && choice.modelFile === undefined
+                  ? DEFAULT_SMALL_MODEL_STEPS
+                  : DEFAULT_STEPS),
               ...(options.maxTime === undefined ? {} : { maxMs: options.maxTime * 1000 }),
             },
             signal: io.signal,
