@@ -3,7 +3,7 @@ export type { LocalChatProvider, LocalChatProviderOptions } from './local-provid
 export { checkModelFile, DEFAULT_MODEL_NAME, defaultModelFile } from './model-file.js';
 export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
 export { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
-export { FRACTION_DIGITS } from './grammar.js';
+export { FRACTION_DIGITS, replyGrammar } from './grammar.js';
 export { IMAGE_PLACEHOLDER } from './history.js';
 export { LocalModelError } from './errors.js';
 export type { LocalModelErrorCode } from './errors.js';
