@@ -3,6 +3,7 @@ import type { HardwareAbstractionLayer } from '@hal/types';
 import { AgentError, SILENT_LOGGER } from './errors.js';
 import type { AgentLogger } from './errors.js';
 import { openAIProvider } from './chat-client.js';
+import type { ChatClientSettings } from './chat-client.js';
 import type { ChatProvider } from './chat-provider.js';
 import type { AgentEventListener } from './events.js';
 import { DEFAULT_RETRY } from './retry.js';
@@ -107,7 +108,7 @@ export function resolveSettings(options: RunAgentOptions): AgentSettings {
 }
 
 /** The OpenAI-compatible client's settings, checked. */
-function endpointSettings(options: RunAgentOptions) {
+function endpointSettings(options: RunAgentOptions): ChatClientSettings {
   const { endpoint } = options;
   if (endpoint === undefined)
     throw new AgentError('CONFIG', 'give "endpoint" or "provider": the agent needs a model');
@@ -147,7 +148,6 @@ function endpointSettings(options: RunAgentOptions) {
     maxTokens:
       options.maxTokens === undefined ? undefined : positive('maxTokens', options.maxTokens, true),
     // Bound to globalThis: a browser's fetch throws "Illegal invocation" when called as a method.
-    fetch:
-      options.fetch ?? ((input: RequestInfo | URL, init?: RequestInit) => fetchImpl(input, init)),
+    fetch: options.fetch ?? ((input, init) => fetchImpl(input, init)),
   };
 }
