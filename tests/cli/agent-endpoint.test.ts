@@ -1,10 +1,14 @@
 // `hal agent --base-url`: the same command on an OpenAI-compatible endpoint (the fake one, over
 // real HTTP on 127.0.0.1), driving the embedded simulator; no local model is loaded.
 import { runHal } from '@hal/cli';
-import { afterEach, describe, expect, it } from 'vitest';
+import { distanceToSteps } from '@hal/kinematics';
+import { afterAll, afterEach, describe, expect, it } from 'vitest';
+import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import { startFakeOpenAIServer } from '../helpers/fake-openai-server.js';
 import type { FakeOpenAIServer, ScriptedReply } from '../helpers/fake-openai-server.js';
 import { captureIO } from './capture-io.js';
+
+afterAll(stopAllEmulators);
 
 let server: FakeOpenAIServer | undefined;
 afterEach(async () => {
@@ -78,5 +82,41 @@ describe('hal agent --base-url', () => {
     );
     expect(code).toBe(1);
     expect(io.stderr()).toMatch(/hal: FAILED: HTTP: HTTP 401/);
+  });
+
+  it('drives the emulated robot over UDP (--udp), which reports one finished 10 cm move', async () => {
+    const emulator = await startEmulator({ pty: false });
+    try {
+      const s = await serve([
+        {
+          content: null,
+          toolCalls: [{ name: 'move_forward', arguments: JSON.stringify({ distanceCm: 10 }) }],
+        },
+        { content: 'Moved.' },
+      ]);
+      const io = captureIO({});
+      const code = await runHal(
+        [
+          '--json',
+          'agent',
+          '--udp',
+          `127.0.0.1:${emulator.udpPort}`,
+          '--base-url',
+          s.baseUrl,
+          '--model',
+          'fake',
+          'drive 10 cm',
+        ],
+        io,
+      );
+      expect(code, io.stderr()).toBe(0);
+      expect((io.jsonLines() as Line[]).at(-1)).toMatchObject({ reason: 'completed' });
+      const moves = emulator.events.filter((e) => e.event === 'move_finished');
+      expect(moves).toHaveLength(1);
+      const steps = distanceToSteps(10);
+      expect(moves[0]).toMatchObject({ left_steps: steps, right_steps: steps });
+    } finally {
+      await emulator.stop();
+    }
   });
 });
