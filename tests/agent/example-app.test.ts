@@ -64,10 +64,23 @@ describe('examples/llm-agent', () => {
     expect(s.requests[0]?.body.messages?.[1]).toMatchObject({ content: 'Drive 25 cm forward.' });
   });
 
-  it('refuses to start without a model, saying which variable to set', async () => {
-    const run = await runApp({}, 'Anything.');
-    expect(run.code).toBe(2);
-    expect(run.stderr).toContain('OPENAI_MODEL');
+  it('runs the local model when no endpoint is set, and moves or reports what it chose', async () => {
+    // HOME (or XDG_CACHE_HOME) locates the model bash scripts/setup.sh cached
+    const cache = {
+      HOME: process.env['HOME'] ?? '',
+      ...(process.env['XDG_CACHE_HOME'] ? { XDG_CACHE_HOME: process.env['XDG_CACHE_HOME'] } : {}),
+    };
+    const run = await runApp(cache, 'drive forward 10 cm', 120_000);
+    expect(run.code, run.stderr).toBe(0);
+    expect(run.stdout).toMatch(/model: .*SmolLM2-135M-Instruct\.Q4_1\.gguf \(in this process\)/);
+    expect(run.stdout).toMatch(/done: (completed|max_steps) after 1 steps/);
+    expect(run.stdout).toMatch(/pose: x -?\d/);
+  });
+
+  it('refuses a missing model file at once, naming it', async () => {
+    const run = await runApp({ HAL_MODEL_FILE: '/nonexistent/model.gguf' }, 'Anything.');
+    expect(run.code).not.toBe(0);
+    expect(run.stderr).toContain('model file /nonexistent/model.gguf not found');
   });
 
   it('refuses the hosted default endpoint without a key, naming the URL and both variables', async () => {

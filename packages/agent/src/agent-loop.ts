@@ -1,5 +1,4 @@
 import type { ToolResult } from '@hal/tools';
-import { requestCompletion } from './chat-client.js';
 import type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
 import { AgentError, errorMessage } from './errors.js';
 import type { AgentDoneReason, AgentEvent, AgentEventListener } from './events.js';
@@ -119,24 +118,27 @@ export async function agentLoop(settings: AgentSettings, parts: LoopParts): Prom
     step += 1;
     emit({ type: 'step_started', step, elapsedMs: elapsed() });
     let reply;
+    const requested = Date.now();
     try {
-      reply = await requestCompletion(
-        settings,
+      reply = await settings.provider.complete(
         { messages, tools: chatTools },
-        step,
-        run,
-        (retry) => emit({ type: 'retry', step, ...retry }),
+        {
+          step,
+          signal: run,
+          onRetry: (retry) => emit({ type: 'retry', step, ...retry }),
+          onToken: (piece) => emit({ type: 'token', step, text: piece }),
+          onContextTrimmed: (info) => emit({ type: 'context_trimmed', step, ...info }),
+        },
       );
     } catch (cause) {
       if (run.aborted) return finish(stoppedReason());
       const error =
-        cause instanceof AgentError
-          ? cause
-          : new AgentError('NETWORK', errorMessage(cause), { cause });
+        cause instanceof AgentError ? cause : providerError(settings.provider.name, cause);
       settings.logger.warn('agent request failed', { step, error: error.message });
       emit({ type: 'error', step, error });
       return finish('error', error);
     }
+    emit(usageEvent(step, Date.now() - requested, reply.usage));
     if (reply.text !== '') {
       text = reply.text;
       emit({ type: 'assistant_text', step, text: reply.text });
@@ -197,4 +199,29 @@ function resultEvent(
     image: result.content.some((part) => part.type === 'image'),
     durationMs,
   };
+}
+
+function usageEvent(
+  step: number,
+  durationMs: number,
+  usage: { promptTokens: number; completionTokens: number } | undefined,
+): AgentEvent {
+  if (usage === undefined) return { type: 'usage', step, durationMs };
+  return {
+    type: 'usage',
+    step,
+    durationMs,
+    promptTokens: usage.promptTokens,
+    completionTokens: usage.completionTokens,
+    ...(durationMs > 0 ? { tokensPerSecond: (usage.completionTokens * 1000) / durationMs } : {}),
+  };
+}
+
+/** A provider's own error as an AgentError PROVIDER, keeping its code in `details`. */
+function providerError(provider: string, cause: unknown): AgentError {
+  const code = (cause as { code?: unknown } | null)?.code;
+  return new AgentError('PROVIDER', `${provider}: ${errorMessage(cause)}`, {
+    ...(typeof code === 'string' ? { details: { code } } : {}),
+    cause,
+  });
 }

@@ -1,4 +1,5 @@
 import { AgentError, errorWithCauses } from './errors.js';
+import type { ChatProvider } from './chat-provider.js';
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import { parseReply } from './reply.js';
 import type { AssistantReply } from './reply.js';
@@ -148,4 +149,13 @@ function httpErrorText(settings: ChatClientSettings, status: number, text: strin
 
 function failed(error: AgentError): AttemptFailure {
   return { error, retryable: true, retryAfterMs: undefined };
+}
+
+/** The OpenAI-compatible chat-completions endpoint as a {@link ChatProvider}. */
+export function openAIProvider(settings: ChatClientSettings): ChatProvider {
+  return {
+    name: `openai:${settings.model}`,
+    complete: (request, turn) =>
+      requestCompletion(settings, request, turn.step, turn.signal, turn.onRetry),
+  };
 }

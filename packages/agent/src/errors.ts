@@ -9,7 +9,9 @@ export type AgentErrorCode =
   /** The endpoint gave no answer within the request timeout. */
   | 'TIMEOUT'
   /** The endpoint answered with something that is not a chat completion. */
-  | 'BAD_REPLY';
+  | 'BAD_REPLY'
+  /** A chat provider other than the endpoint's client failed; its own error is the `cause`. */
+  | 'PROVIDER';
 
 /** The error class of the agent package: a literal `code`, `details`, and a `cause`. */
 export class AgentError extends Error {

@@ -19,6 +19,26 @@ export type AgentDoneReason =
 export type AgentEvent =
   | { type: 'step_started'; step: number; elapsedMs: number }
   | { type: 'assistant_text'; step: number; text: string }
+  /** A piece of the model's reply as it is generated (providers that stream). */
+  | { type: 'token'; step: number; text: string }
+  /** One model request finished: how long it took and, when known, its token counts. */
+  | {
+      type: 'usage';
+      step: number;
+      durationMs: number;
+      promptTokens?: number;
+      completionTokens?: number;
+      /** completionTokens over durationMs, per second. */
+      tokensPerSecond?: number;
+    }
+  /** Older turns were left out of the request to fit the model's context window. */
+  | {
+      type: 'context_trimmed';
+      step: number;
+      droppedMessages: number;
+      promptTokens: number;
+      contextTokens: number;
+    }
   | { type: 'tool_call'; step: number; id: string; name: string; arguments: string }
   | {
       type: 'tool_result';

@@ -9,3 +9,12 @@ export { DEFAULT_RETRY } from './retry.js';
 export type { RetryPolicy } from './retry.js';
 export { AGENT_SYSTEM_PROMPT } from './prompt.js';
 export type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
+export type {
+  ChatProvider,
+  ChatReply,
+  ChatRequest,
+  ChatTurn,
+  ChatUsage,
+  ContextTrimmed,
+} from './chat-provider.js';
+export type { RetryListener } from './chat-client.js';

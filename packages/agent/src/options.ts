@@ -2,6 +2,9 @@ import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { AgentError, SILENT_LOGGER } from './errors.js';
 import type { AgentLogger } from './errors.js';
+import { openAIProvider } from './chat-client.js';
+import type { ChatClientSettings } from './chat-client.js';
+import type { ChatProvider } from './chat-provider.js';
 import type { AgentEventListener } from './events.js';
 import { DEFAULT_RETRY } from './retry.js';
 import type { RetryPolicy } from './retry.js';
@@ -43,23 +46,26 @@ export interface RunAgentOptions {
   leash?: Leash;
   /** With `hal`: the time allowed for one tool call, ms (the executor's default otherwise). */
   toolTimeoutMs?: number;
-  endpoint: AgentEndpoint;
+  /** An OpenAI-compatible endpoint. Give `endpoint` or `provider`. */
+  endpoint?: AgentEndpoint;
+  /** Any other model, e.g. a local one (`createLocalChatProvider` of `@hal/agent-local`). */
+  provider?: ChatProvider;
   caps?: Partial<AgentCaps>;
   /** Stops the run (and the robot, when a motion is under way). */
   signal?: AbortSignal;
   /** Receives the run's events as they happen. */
   onEvent?: AgentEventListener;
-  /** Time allowed for one HTTP request, ms. Default 60000. */
+  /** With `endpoint`: time allowed for one HTTP request, ms. Default 60000. */
   requestTimeoutMs?: number;
-  /** Retries of HTTP 408/429/5xx, network errors and timeouts. */
+  /** With `endpoint`: retries of HTTP 408/429/5xx, network errors and timeouts. */
   retry?: Partial<RetryPolicy>;
   /** Replaces the built-in system prompt. */
   systemPrompt?: string;
-  /** Sampling temperature; the server's default when absent. */
+  /** With `endpoint`: sampling temperature; the server's default when absent. */
   temperature?: number;
-  /** Most tokens in one reply (`max_tokens`); the server's default when absent. */
+  /** With `endpoint`: most tokens in one reply (`max_tokens`); the server's default when absent. */
   maxTokens?: number;
-  /** The fetch to use. Default the global one. */
+  /** With `endpoint`: the fetch to use. Default the global one. */
   fetch?: typeof fetch;
   logger?: AgentLogger;
 }
@@ -69,15 +75,9 @@ export const DEFAULT_CAPS: AgentCaps = Object.freeze({ maxSteps: 20, maxMs: 300_
 /** The options checked, with the defaults filled in. */
 export interface AgentSettings {
   goal: string;
-  url: string;
-  model: string;
-  apiKey: string | undefined;
+  /** The model: the endpoint's client, or the caller's provider. */
+  provider: ChatProvider;
   caps: AgentCaps;
-  requestTimeoutMs: number;
-  retry: RetryPolicy;
-  temperature: number | undefined;
-  maxTokens: number | undefined;
-  fetch: typeof fetch;
   logger: AgentLogger;
 }
 
@@ -95,8 +95,24 @@ function positive(name: string, value: number, integer = false): number {
 export function resolveSettings(options: RunAgentOptions): AgentSettings {
   if (typeof options.goal !== 'string' || options.goal.trim() === '')
     throw new AgentError('CONFIG', '"goal" must be a non-empty string');
+  if (options.endpoint !== undefined && options.provider !== undefined)
+    throw new AgentError('CONFIG', 'give "endpoint" or "provider", not both');
+  const caps = { ...DEFAULT_CAPS, ...options.caps };
+  positive('caps.maxSteps', caps.maxSteps, true);
+  positive('caps.maxMs', caps.maxMs);
+  let provider = options.provider;
+  if (provider !== undefined && typeof provider.complete !== 'function')
+    throw new AgentError('CONFIG', '"provider" must have a complete() method');
+  provider ??= openAIProvider(endpointSettings(options));
+  return { goal: options.goal, provider, caps, logger: options.logger ?? SILENT_LOGGER };
+}
+
+/** The OpenAI-compatible client's settings, checked. */
+function endpointSettings(options: RunAgentOptions): ChatClientSettings {
   const { endpoint } = options;
-  if (typeof endpoint?.model !== 'string' || endpoint.model.trim() === '')
+  if (endpoint === undefined)
+    throw new AgentError('CONFIG', 'give "endpoint" or "provider": the agent needs a model');
+  if (typeof endpoint.model !== 'string' || endpoint.model.trim() === '')
     throw new AgentError('CONFIG', '"endpoint.model" must be a non-empty string');
   const baseUrl = String(endpoint.baseUrl ?? '').replace(/\/+$/, '');
   let parsed: URL;
@@ -119,18 +135,13 @@ export function resolveSettings(options: RunAgentOptions): AgentSettings {
     );
   positive('retry.baseDelayMs', retry.baseDelayMs);
   positive('retry.maxDelayMs', retry.maxDelayMs);
-  const caps = { ...DEFAULT_CAPS, ...options.caps };
-  positive('caps.maxSteps', caps.maxSteps, true);
-  positive('caps.maxMs', caps.maxMs);
   const fetchImpl = options.fetch ?? globalThis.fetch;
   if (typeof fetchImpl !== 'function')
     throw new AgentError('CONFIG', 'no fetch available: pass "fetch"');
   return {
-    goal: options.goal,
     url: `${baseUrl}/chat/completions`,
     model: endpoint.model,
     apiKey: endpoint.apiKey,
-    caps,
     requestTimeoutMs: positive('requestTimeoutMs', options.requestTimeoutMs ?? 60_000),
     retry,
     temperature: options.temperature,
@@ -138,6 +149,5 @@ export function resolveSettings(options: RunAgentOptions): AgentSettings {
       options.maxTokens === undefined ? undefined : positive('maxTokens', options.maxTokens, true),
     // Bound to globalThis: a browser's fetch throws "Illegal invocation" when called as a method.
     fetch: options.fetch ?? ((input, init) => fetchImpl(input, init)),
-    logger: options.logger ?? SILENT_LOGGER,
   };
 }

@@ -68,4 +68,18 @@ describe('parseReply', () => {
       }
     }
   });
+
+  it('reads the token counts a server reports in usage, and leaves them out when it sends none', () => {
+    const message = { content: 'Done.' };
+    const withUsage = parseReply(
+      {
+        choices: [{ message }],
+        usage: { prompt_tokens: 120, completion_tokens: 7, total_tokens: 127 },
+      },
+      1,
+    );
+    expect(withUsage.usage).toEqual({ promptTokens: 120, completionTokens: 7 });
+    expect('usage' in parseReply({ choices: [{ message }] }, 1)).toBe(false);
+    expect('usage' in parseReply({ choices: [{ message }], usage: null }, 1)).toBe(false);
+  });
 });

@@ -29,6 +29,7 @@ const ReplySchema = z.object({
       }),
     )
     .min(1),
+  usage: z.object({ prompt_tokens: z.number(), completion_tokens: z.number() }).loose().nullish(),
 });
 
 /** The model's answer to one request. */
@@ -39,6 +40,8 @@ export interface AssistantReply {
   refusal: string | undefined;
   /** The tool calls, each with an id (made up when the server gave none). */
   toolCalls: ChatToolCall[];
+  /** The token counts the server reported, when it did. */
+  usage?: { promptTokens: number; completionTokens: number };
 }
 
 /** Reads the first choice of a chat completion; throws an AgentError BAD_REPLY when it has none. */
@@ -65,5 +68,15 @@ export function parseReply(payload: unknown, step: number): AssistantReply {
       },
     };
   });
-  return { text, refusal: message.refusal ?? undefined, toolCalls };
+  const usage = parsed.data.usage;
+  return {
+    text,
+    refusal: message.refusal ?? undefined,
+    toolCalls,
+    ...(usage == null
+      ? {}
+      : {
+          usage: { promptTokens: usage.prompt_tokens, completionTokens: usage.completion_tokens },
+        }),
+  };
 }

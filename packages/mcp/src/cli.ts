@@ -3,7 +3,9 @@ import { createToolExecutor, halTools } from '@hal/tools';
 import type { Leash } from '@hal/tools';
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
-import { Command, InvalidArgumentError, Option } from 'commander';
+import { Command, Option } from 'commander';
+import { addLeashOptions, leashFromOptions, numberOption } from './leash-options.js';
+import type { LeashCliOptions } from './leash-options.js';
 import { serveHttp } from './http.js';
 import { createRobot } from './robot.js';
 import type { RobotTarget } from './robot.js';
@@ -20,36 +22,8 @@ export interface CliOptions extends RobotTarget {
   leash: Leash;
 }
 
-function number(what: string) {
-  return (text: string): number => {
-    const value = Number(text);
-    if (text.trim() === '' || !Number.isFinite(value)) {
-      throw new InvalidArgumentError(`${what} must be a number`);
-    }
-    return value;
-  };
-}
-
-function geofence(text: string): NonNullable<Leash['geofence']> {
-  const parts = text.split(',').map(Number);
-  const [minX, maxX, minY, maxY] = parts;
-  if (
-    parts.length !== 4 ||
-    parts.some((p) => !Number.isFinite(p)) ||
-    minX === undefined ||
-    maxX === undefined ||
-    minY === undefined ||
-    maxY === undefined ||
-    minX >= maxX ||
-    minY >= maxY
-  ) {
-    throw new InvalidArgumentError('the geofence is minX,maxX,minY,maxY in metres, min < max');
-  }
-  return { minX, maxX, minY, maxY };
-}
-
 function command(): Command {
-  return new Command('hal-mcp')
+  const program = new Command('hal-mcp')
     .description(
       'MCP server for the robot: the HAL tools, its state, capabilities and map as resources. ' +
         'Drives the embedded simulator unless --udp or --serial names a robot.',
@@ -60,21 +34,19 @@ function command(): Command {
     .addOption(new Option('--map <name>', "the simulator's map").choices(Object.keys(BUILTIN_MAPS)))
     .option('--http', 'serve streamable HTTP instead of stdio', false)
     .option('--host <address>', 'HTTP address; any but loopback needs --token', '127.0.0.1')
-    .option('--port <port>', 'HTTP port', number('--port'), 3333)
+    .option('--port <port>', 'HTTP port', numberOption('--port'), 3333)
     .option('--token <token>', 'bearer token HTTP clients must send (default $HAL_MCP_TOKEN)')
-    .option('--timeout <ms>', 'time one tool call may take (motions get more)', number('--timeout'))
     .option(
-      '--max-distance <m>',
-      'leash: longest path of one motion, metres',
-      number('--max-distance'),
+      '--timeout <ms>',
+      'time one tool call may take (motions get more)',
+      numberOption('--timeout'),
     )
-    .option('--max-speed <m/s>', 'leash: fastest wheel speed of one call', number('--max-speed'))
-    .option('--geofence <minX,maxX,minY,maxY>', 'leash: a motion must end inside, metres', geofence)
     .exitOverride()
     .configureOutput({
       writeOut: (s) => process.stderr.write(s),
       writeErr: (s) => process.stderr.write(s),
     });
+  return addLeashOptions(program);
 }
 
 /**
@@ -90,10 +62,7 @@ export function parseCli(
   const o = command().parse(args, { from: 'user' }).opts<Record<string, unknown>>();
   const key = (o['key'] as string | undefined) ?? env['HAL_KEY'];
   const token = (o['token'] as string | undefined) ?? env['HAL_MCP_TOKEN'];
-  const leash: Leash = {};
-  if (o['maxDistance'] !== undefined) leash.maxDistanceM = o['maxDistance'] as number;
-  if (o['maxSpeed'] !== undefined) leash.maxSpeedMPerS = o['maxSpeed'] as number;
-  if (o['geofence'] !== undefined) leash.geofence = o['geofence'] as NonNullable<Leash['geofence']>;
+  const leash = leashFromOptions(o as LeashCliOptions);
   return {
     ...(o['udp'] === undefined ? {} : { udp: o['udp'] as string }),
     ...(o['serial'] === undefined ? {} : { serial: o['serial'] as string }),

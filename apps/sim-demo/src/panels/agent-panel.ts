@@ -9,9 +9,17 @@ const KEPT = 200;
 
 const clip = (text: string, n = 240) => (text.length > n ? `${text.slice(0, n)}…` : text);
 
-/** One event as a line of the panel's log, with its class. */
-function eventLine(e: AgentEvent): { text: string; className: string } {
+/** One event as a line of the panel's log, with its class (none for streamed tokens). */
+function eventLine(e: AgentEvent): { text: string; className: string } | undefined {
   switch (e.type) {
+    case 'token':
+    case 'usage':
+      return undefined;
+    case 'context_trimmed':
+      return {
+        text: `Context full: ${e.droppedMessages} older messages left out`,
+        className: 'event',
+      };
     case 'step_started':
       return { text: `Step ${e.step}`, className: 'step' };
     case 'assistant_text':
@@ -144,7 +152,8 @@ export class AgentPanel {
   }
 
   #show(event: AgentEvent): void {
-    this.#add(eventLine(event));
+    const line = eventLine(event);
+    if (line !== undefined) this.#add(line);
     if (event.type === 'step_started') this.#state(`Step ${event.step}…`);
   }
 

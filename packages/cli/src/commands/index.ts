@@ -11,6 +11,7 @@ import { registerEmulate } from './emulate.js';
 import { registerTest } from './test.js';
 import { registerFleet } from './fleet.js';
 import { registerCalibrate } from './calibrate.js';
+import { registerAgent } from './agent.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -28,6 +29,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerDrive,
   registerTeleop,
   registerCalibrate,
+  registerAgent,
   registerServe,
   registerEmulate,
   registerDiscover,

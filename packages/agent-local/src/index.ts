@@ -1,0 +1,9 @@
+export { createLocalChatProvider } from './local-provider.js';
+export type { LocalChatProvider, LocalChatProviderOptions } from './local-provider.js';
+export { checkModelFile, DEFAULT_MODEL_NAME, defaultModelFile } from './model-file.js';
+export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
+export { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
+export { FRACTION_DIGITS, replyGrammar } from './grammar.js';
+export { IMAGE_PLACEHOLDER } from './history.js';
+export { LocalModelError } from './errors.js';
+export type { LocalModelErrorCode } from './errors.js';

@@ -1,0 +1,85 @@
+// `hal agent` in-process with the real local model (SmolLM2-135M from bash scripts/setup.sh) on
+// the embedded simulator: one short generation per run, two threads.
+import { describe, expect, it } from 'vitest';
+import { captureIO } from '../capture-io.fixture.js';
+import type { CapturedIO } from '../capture-io.fixture.js';
+import { runHal } from '../program.js';
+
+const MODEL_MS = 120_000; // a busy shared CPU can be slow; a quiet one takes seconds
+const fast = ['--sim', '--time-scale', '20', '--threads', '2'];
+
+type Line = { type: string; [key: string]: unknown };
+
+describe('hal agent with the local model', () => {
+  it(
+    'runs the model on the simulator and prints every event as JSON, then the outcome and pose',
+    async () => {
+      const io = captureIO();
+      const code = await runHal(
+        ['--json', 'agent', ...fast, '--max-steps', '1', 'drive forward 10 cm'],
+        io,
+      );
+      expect(code, io.stderr()).toBe(0);
+      const lines = io.jsonLines() as Line[];
+      const types = lines.map((l) => l.type);
+      expect(types[0]).toBe('step_started');
+      expect(types).toContain('token');
+      expect(types).toContain('usage');
+      expect(types.at(-2)).toBe('done');
+      const outcome = lines.at(-1)!;
+      expect(outcome).toMatchObject({ type: 'outcome', steps: 1 });
+      expect(['completed', 'max_steps']).toContain(outcome['reason']);
+      expect(outcome['pose']).toMatchObject({ position: { x: expect.any(Number) } });
+      const call = lines.find((l) => l.type === 'tool_call' && l['step'] === 1);
+      if (call !== undefined) {
+        expect(lines.some((l) => l.type === 'tool_result' && l['id'] === call['id'])).toBe(true);
+      }
+    },
+    MODEL_MS,
+  );
+
+  it(
+    'stops the generation and the robot on Ctrl-C',
+    async () => {
+      const base = captureIO();
+      const io: CapturedIO = {
+        ...base,
+        // Ctrl-C as soon as the model starts to answer
+        out: (text) => {
+          base.out(text);
+          if (text.includes('"type":"token"')) base.abort();
+        },
+      };
+      const code = await runHal(['--json', 'agent', ...fast, 'drive backward 20 cm'], io);
+      expect(code, base.stderr()).toBe(0);
+      const lines = base.jsonLines() as Line[];
+      expect(lines.at(-1)).toMatchObject({ type: 'outcome', reason: 'aborted' });
+      const calls = lines.filter((l) => l.type === 'tool_call').map((l) => l['name']);
+      expect(calls).toEqual(['stop']);
+      expect(lines.find((l) => l.type === 'tool_result')).toMatchObject({
+        name: 'stop',
+        isError: false,
+      });
+    },
+    MODEL_MS,
+  );
+
+  it('fails at once for a model file that is not there, saying so', async () => {
+    const io = captureIO();
+    const code = await runHal(['agent', '--model-file', '/nonexistent/m.gguf', 'go'], io);
+    expect(code).toBe(1);
+    expect(io.stderr()).toMatch(/MODEL_MISSING: model file \/nonexistent\/m\.gguf not found/);
+    expect(io.stdout()).toBe('');
+  });
+
+  it.each([
+    [['--model', 'm', 'go'], /--base-url/],
+    [['--base-url', 'http://127.0.0.1:1/v1', '--model-file', 'x.gguf', 'go'], /not both/],
+    [['--base-url', 'http://127.0.0.1:1/v1', 'go'], /--model <name>/],
+    [['--tools', ',', 'go'], /--tools/],
+  ])('refuses %j before loading anything', async (args, message) => {
+    const io = captureIO();
+    expect(await runHal(['agent', ...args], io)).toBe(2);
+    expect(io.stderr()).toMatch(message);
+  });
+});

@@ -1,0 +1,233 @@
+// `hal agent "<goal>"`: a model drives one robot through the HAL tools until it says it is done
+// or a cap is reached. The local GGUF model by default (no key, no server), or an
+// OpenAI-compatible endpoint with --base-url. Tool calls and results are printed as they happen
+// and the model's reply streams as it is generated; Ctrl-C stops the generation and the robot.
+import { Command, Option } from 'commander';
+import { runAgent } from '@hal/agent';
+import type { AgentOutcome, ChatProvider, RunAgentOptions } from '@hal/agent';
+import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@hal/agent-local';
+import type { LocalChatProvider } from '@hal/agent-local';
+import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
+import type { LeashCliOptions } from '@hal/mcp/leash-options';
+import { integerArg, positiveArg } from '@hal/remote/cli';
+import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
+import type { Pose } from '@hal/types';
+import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
+import type { ModelChoice, ModelCliOptions } from '../agent/model-choice.js';
+import { eventPrinter } from '../agent/print.js';
+import { CliError } from '../cli-error.js';
+import { emit, progress } from '../io.js';
+import { cliLogger } from '../logger.js';
+import { poseText } from '../pose-text.js';
+import { addTargetOptions, resolveTarget } from '../target.js';
+import type { TargetCliOptions } from '../target.js';
+import { withTarget } from '../target-hal.js';
+import type { RegisterCommand } from './index.js';
+
+interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
+  maxTime?: number;
+  timeout?: number;
+}
+
+const TARGET_FLAGS = ['sim', 'udp', 'serial', 'ws', 'device', 'nats'] as const;
+
+/** Loads the local model, its errors as the CLI reports them. */
+async function loadLocal(
+  choice: Extract<ModelChoice, { kind: 'local' }>,
+  log: (level: 'warn' | 'error', message: string) => void,
+): Promise<LocalChatProvider> {
+  try {
+    return await createLocalChatProvider({
+      ...(choice.modelFile === undefined ? {} : { modelFile: choice.modelFile }),
+      ...(choice.offerTools === undefined ? {} : { offerTools: choice.offerTools }),
+      ...(choice.threads === undefined ? {} : { threads: choice.threads }),
+      ...(choice.contextSize === undefined ? {} : { contextSize: choice.contextSize }),
+      logger: {
+        debug: () => undefined,
+        info: () => undefined,
+        warn: (message) => log('warn', message),
+        error: (message) => log('error', message),
+      },
+    });
+  } catch (error) {
+    throw asCliError(error);
+  }
+}
+
+function asCliError(error: unknown): unknown {
+  return error instanceof LocalModelError
+    ? new CliError('FAILED', `${error.code}: ${error.message}`)
+    : error;
+}
+
+export const registerAgent: RegisterCommand = (program, { io, global }) => {
+  const command = new Command('agent')
+    .description(
+      'let a model drive a robot toward a goal in words: a local GGUF model by default, or an OpenAI-compatible endpoint (--base-url)',
+    )
+    .argument('<goal...>', 'what the robot should do, e.g. "drive forward 10 cm"')
+    .addOption(
+      new Option(
+        '--model-file <path>',
+        'a GGUF model to run in this process (default: SmolLM2-135M from bash scripts/setup.sh)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--base-url <url>',
+        'an OpenAI-compatible endpoint instead, up to /v1 (key from $OPENAI_API_KEY)',
+      ),
+    )
+    .addOption(new Option('--model <name>', "the endpoint's model (default $OPENAI_MODEL)"))
+    .addOption(
+      new Option(
+        '--tools <names>',
+        'tools the model is offered, comma-separated, or "all" (default: a few for the default model, else all)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--max-steps <n>',
+        `most model requests (default ${DEFAULT_SMALL_MODEL_STEPS} with the default model, else ${DEFAULT_STEPS})`,
+      ).argParser(integerArg('--max-steps', 1, 200)),
+    )
+    .addOption(
+      new Option('--max-time <s>', 'most time for the whole run, seconds (default 300)').argParser(
+        positiveArg('--max-time'),
+      ),
+    )
+    .addOption(
+      new Option('--timeout <ms>', 'time one tool call may take (motions get more)').argParser(
+        integerArg('--timeout', 100, 600_000),
+      ),
+    )
+    .addOption(
+      new Option(
+        '--threads <n>',
+        'CPU threads of the local model (default: cores, at most 4)',
+      ).argParser(integerArg('--threads', 1, 256)),
+    )
+    .addOption(
+      new Option(
+        '--context <tokens>',
+        'context window of the local model (default 2048)',
+      ).argParser(integerArg('--context', 256, 131_072)),
+    );
+  addLeashOptions(command);
+  addTargetOptions(command).action(async (words: string[], options: AgentCliOptions) => {
+    const json = global().json;
+    const goal = words.join(' ').trim();
+    if (goal === '') throw new CliError('USAGE', 'the goal must not be empty');
+    const choice = modelChoice(options, io.env);
+    if (!TARGET_FLAGS.some((flag) => options[flag] !== undefined)) options.sim = true;
+    const target = resolveTarget(options, io.env);
+    const leash = leashFromOptions(options);
+    const logger = cliLogger(io, json);
+    const log = (level: 'warn' | 'error', message: string) =>
+      logger.log(level, 'hal:agent', message);
+
+    // the model first: a bad model file is an error before any robot is touched
+    let local: LocalChatProvider | undefined;
+    if (choice.kind === 'local') {
+      progress(io, global(), 'loading the model...');
+      local = await loadLocal(choice, log);
+      progress(
+        io,
+        global(),
+        `model ${local.modelFile} (${local.gpu === false ? 'CPU' : local.gpu})`,
+      );
+    }
+    try {
+      const connect =
+        options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+      const { outcome, pose } = await withTarget(
+        target,
+        io,
+        { ...connect, json, role: 'control' },
+        async ({ hal }) => {
+          const tools =
+            choice.kind === 'endpoint' && choice.tools !== undefined
+              ? // the loop stops the robot with `stop` at the end of a run: always keep it
+                halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
+              : halTools(hal);
+          const executor = createToolExecutor(hal, {
+            tools,
+            leash,
+            ...(options.timeout === undefined ? {} : { timeoutMs: options.timeout }),
+          });
+          if (local !== undefined)
+            await local.prepare(toOpenAITools(tools)).catch((e) => {
+              throw asCliError(e);
+            });
+          const model: Pick<RunAgentOptions, 'provider' | 'endpoint' | 'systemPrompt'> =
+            local !== undefined
+              ? {
+                  provider: local satisfies ChatProvider,
+                  ...(choice.kind === 'local' && choice.modelFile === undefined
+                    ? { systemPrompt: LOCAL_SYSTEM_PROMPT }
+                    : {}),
+                }
+              : { endpoint: (choice as Extract<ModelChoice, { kind: 'endpoint' }>).endpoint };
+          const print = eventPrinter((text) => io.out(text));
+          const run: AgentOutcome = await runAgent({
+            goal,
+            executor,
+            ...model,
+            caps: {
+              maxSteps:
+                options.maxSteps ??
+                (choice.kind === 'local' && choice.modelFile === undefined
+                  ? DEFAULT_SMALL_MODEL_STEPS
+                  : DEFAULT_STEPS),
+              ...(options.maxTime === undefined ? {} : { maxMs: options.maxTime * 1000 }),
+            },
+            signal: io.signal,
+            onEvent: (event) => (json ? io.out(`${JSON.stringify(event)}\n`) : print(event)),
+            logger: {
+              debug: () => undefined,
+              info: () => undefined,
+              warn: (message) => log('warn', message),
+              error: (message) => log('error', message),
+            },
+          });
+          let pose: Pose | undefined;
+          try {
+            pose = await hal.locomotion.getPose();
+          } catch {
+            pose = undefined;
+          }
+          return { outcome: run, pose };
+        },
+      );
+      const summary = {
+        type: 'outcome',
+        reason: outcome.reason,
+        steps: outcome.steps,
+        elapsedMs: outcome.elapsedMs,
+        text: outcome.text,
+        ...(pose === undefined ? {} : { pose }),
+        ...(outcome.error === undefined
+          ? {}
+          : { error: { code: outcome.error.code, message: outcome.error.message } }),
+      };
+      emit(io, global(), summary, () =>
+        [
+          ...(pose === undefined ? [] : [`pose ${poseText(pose)}`]),
+          ...(outcome.text === '' ? [] : [`model: ${outcome.text}`]),
+        ].join('\n'),
+      );
+      if (outcome.reason === 'error' && outcome.error !== undefined) {
+        const cause = outcome.error.cause;
+        throw new CliError(
+          'FAILED',
+          cause instanceof LocalModelError
+            ? `${cause.code}: ${cause.message}`
+            : `${outcome.error.code}: ${outcome.error.message}`,
+        );
+      }
+    } finally {
+      await local?.dispose().catch(() => undefined);
+    }
+  });
+  program.addCommand(command);
+};
