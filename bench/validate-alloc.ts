@@ -1,6 +1,6 @@
 // Bytes allocated and nanoseconds per call of the HAL boundary's parameter validation,
 // `HalBoundary.validate('setLED' | 'drive', ...)`, against the call's zod schema run directly
-// (`safeParse`, what the boundary did before its fast path), interleaved in rounds in one process.
+// (`safeParse`, what the boundary did before it compiled its schemas with `z.compile`), interleaved in rounds in one process.
 // Bytes are counted as udp-alloc.ts counts them: the young generation is made large enough that
 // no GC runs while it counts, so the heap's growth over the calls is what they allocated. A tool
 // beside udp-alloc.ts, not a benchmark of `pnpm bench`.

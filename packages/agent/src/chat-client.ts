@@ -1,5 +1,5 @@
 import { AgentError, errorWithCauses } from './errors.js';
-import type { ChatProvider } from './chat-provider.js';
+import type { ChatProvider, RetryListener } from './chat-provider.js';
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import { parseReply } from './reply.js';
 import type { AssistantReply } from './reply.js';
@@ -25,14 +25,6 @@ interface AttemptFailure {
   retryable: boolean;
   retryAfterMs: number | undefined;
 }
-
-/** Told before each wait between attempts. */
-export type RetryListener = (info: {
-  attempt: number;
-  delayMs: number;
-  reason: string;
-  status?: number;
-}) => void;
 
 /**
  * Sends one chat-completions request, retrying HTTP 408/429/5xx, network errors, timeouts and

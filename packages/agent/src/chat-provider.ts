@@ -1,6 +1,13 @@
 import type { ChatMessage, ChatTool } from './chat-types.js';
 import type { AssistantReply } from './reply.js';
-import type { RetryListener } from './chat-client.js';
+
+/** Told before each wait between attempts. */
+export type RetryListener = (info: {
+  attempt: number;
+  delayMs: number;
+  reason: string;
+  status?: number;
+}) => void;
 
 /** What the loop asks a model for: the conversation so far and the tools it may call. */
 export interface ChatRequest {

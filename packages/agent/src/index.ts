@@ -17,4 +17,4 @@ export type {
   ChatUsage,
   ContextTrimmed,
 } from './chat-provider.js';
-export type { RetryListener } from './chat-client.js';
+export type { RetryListener } from './chat-provider.js';

@@ -6,8 +6,7 @@ import type { HALToolResult } from './result.js';
 import type { RobotConfig } from './robot-config.js';
 import { createCallSchemas, MOTION_CALLS } from './schemas/calls.js';
 import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
-import { compileFastParsers } from './schemas/fast-parse.js';
-import type { FastParse } from './schemas/fast-parse.js';
+import { compileCallSchemas } from './schemas/compiled.js';
 
 function describeValue(value: unknown): string {
   if (typeof value === 'number' || typeof value === 'boolean') return String(value);
@@ -98,10 +97,10 @@ export interface HalBoundaryOptions {
   now?: () => number;
 }
 
-/** The call schemas of a configuration and their fast paths (schemas/fast-parse.ts). */
+/** The call schemas of a configuration, and the same compiled by zod (schemas/compiled.ts). */
 interface SharedSchemas {
   readonly schemas: CallSchemas;
-  readonly fast: { readonly [N in CallName]?: FastParse };
+  readonly compiled: CallSchemas;
 }
 
 /** Call schemas by configuration value, shared by every boundary (zod schemas are immutable). */
@@ -111,15 +110,15 @@ const SHARED_SCHEMAS_MAX = 32;
 /**
  * The call schemas of a configuration, built once per distinct value: building them costs
  * milliseconds, and each new set runs cold (zod compiles a parser per schema) for its first few
- * hundred calls, which a HAL made anew for the same robot should not pay again. Their fast paths
- * are built with them, once.
+ * hundred calls, which a HAL made anew for the same robot should not pay again. Their compiled
+ * clones are built with them, once.
  */
 function sharedCallSchemas(config: RobotConfig): SharedSchemas {
   const key = JSON.stringify(config);
   let shared = sharedSchemas.get(key);
   if (shared === undefined) {
     const schemas = createCallSchemas(config);
-    shared = { schemas, fast: compileFastParsers(schemas) };
+    shared = { schemas, compiled: compileCallSchemas(schemas) };
     if (sharedSchemas.size >= SHARED_SCHEMAS_MAX) {
       const oldest = sharedSchemas.keys().next().value;
       if (oldest !== undefined) sharedSchemas.delete(oldest);
@@ -170,16 +169,15 @@ export class HalBoundary {
 
   /**
    * Validates a call's parameters; throws a HalError that names the parameter and the limit.
-   * The common case takes the call's fast path (schemas/fast-parse.ts), which only ever accepts
-   * and gives zod's output; anything it is unsure of, every refusal among them, goes to zod.
+   * The call's schema runs compiled by zod (schemas/compiled.ts): the common case takes its
+   * generated fast path, and anything that path does not accept, every refusal among them, goes
+   * to zod's ordinary parser, which gives the issues.
    */
   validate<N extends CallName>(call: N, args: unknown): CallParams<N> {
     const shared = this.#current();
-    const fast = shared.fast[call]?.(args);
-    if (fast !== undefined) return fast as CallParams<N>;
-    const schema = shared.schemas[call] as z.ZodType;
-    const parsed = schema.safeParse(args);
+    const parsed = (shared.compiled[call] as z.ZodType).safeParse(args);
     if (!parsed.success) {
+      const schema = shared.schemas[call] as z.ZodType;
       const issue = parsed.error.issues[0];
       if (issue === undefined)
         throw new HalError('INVALID_PARAMETER', `${call}: invalid arguments`);

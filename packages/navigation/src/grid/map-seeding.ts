@@ -1,7 +1,7 @@
 import type { GridExtent } from './geometry.js';
 import { mapSolids } from './known-map.js';
 import type { KnownMap, MapSolid } from './known-map.js';
-import type { OccupancyGrid } from './occupancy-grid.js';
+import type { LogOddsGrid } from './log-odds-grid.js';
 
 /** Log-odds of a cell a known map shows free: free, but one range hit makes it occupied. */
 const SEEDED_FREE = -0.2;
@@ -21,11 +21,7 @@ export interface SeedOptions {
  * confidence, cells outside the arena too, and (unless `freeSpace` is false) every other cell
  * inside the arena free with low confidence (one range hit marks an obstacle the map did not show).
  */
-export function seedGridFromMap(
-  grid: OccupancyGrid,
-  map: KnownMap,
-  options: SeedOptions = {},
-): void {
+export function seedGridFromMap(grid: LogOddsGrid, map: KnownMap, options: SeedOptions = {}): void {
   const freeValue = options.freeLogOdds ?? SEEDED_FREE;
   const occupiedValue = options.occupiedLogOdds ?? grid.model.max;
   const { width, height, resolutionM: res, originX, originY } = grid.spec;

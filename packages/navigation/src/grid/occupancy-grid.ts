@@ -6,6 +6,7 @@ import type { GridSpec, Point, Pose2D } from './geometry.js';
 import type { KnownMap } from './known-map.js';
 import { classifyLogOdds, clampLogOdds, DEFAULT_LOG_ODDS } from './log-odds.js';
 import type { CellState, LogOddsModel } from './log-odds.js';
+import type { LogOddsGrid } from './log-odds-grid.js';
 import { seedGridFromMap } from './map-seeding.js';
 import type { SeedOptions } from './map-seeding.js';
 import { integrateRayIntoGrid, integrateReadingsIntoGrid } from './range-sensor-update.js';
@@ -46,7 +47,7 @@ export interface CellCounts {
  *
  * Unknown cells are planned through (optimistically): the robot finds out on the way.
  */
-export class OccupancyGrid {
+export class OccupancyGrid implements LogOddsGrid {
   readonly spec: GridSpec;
   /** Log-odds per cell (index `cy * width + cx`); 0 is unknown. Change it through the methods. */
   readonly logOdds: Float32Array;

@@ -1,6 +1,6 @@
 import { cellCentre, gridExtent, worldToCell } from './geometry.js';
 import type { Pose2D } from './geometry.js';
-import type { OccupancyGrid } from './occupancy-grid.js';
+import type { LogOddsGrid } from './log-odds-grid.js';
 import { traverseCells } from './raycast.js';
 
 /** How the robot's range sensors look at the world. */
@@ -41,7 +41,7 @@ export interface RangeReadings {
  * ends in) or, when `hit` is false, nothing within `rangeM` (free evidence only).
  */
 export function integrateRayIntoGrid(
-  grid: OccupancyGrid,
+  grid: LogOddsGrid,
   x: number,
   y: number,
   angle: number,
@@ -71,7 +71,7 @@ export function integrateRayIntoGrid(
  * cells only. Non-finite readings are ignored.
  */
 export function integrateReadingsIntoGrid(
-  grid: OccupancyGrid,
+  grid: LogOddsGrid,
   pose: Pose2D,
   readings: RangeReadings,
   sensors: Partial<RangeSensorModel> = {},
@@ -133,7 +133,7 @@ export function integrateReadingsIntoGrid(
  * of the grid counts as a wall (as it does for planning): the arena's walls usually lie there.
  */
 function nearestOccupied(
-  grid: OccupancyGrid,
+  grid: LogOddsGrid,
   pose: Pose2D,
   angles: readonly number[],
   limit: number,
