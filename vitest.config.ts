@@ -1,5 +1,5 @@
 import { readdirSync } from 'node:fs';
-import { defineConfig } from 'vitest/config';
+import { configDefaults, defineConfig } from 'vitest/config';
 
 const packageNames = readdirSync(new URL('./packages', import.meta.url));
 
@@ -10,6 +10,10 @@ export default defineConfig({
   ssr: { resolve: { conditions: ['@hal/source'] } },
   test: {
     setupFiles: ['./vitest.setup.ts'],
+    // Three files at a time: most cross-process files spend their time waiting on the emulator,
+    // nats-server, Chromium or a child `hal`, so a third worker beside two cores keeps the cores
+    // busy (vitest's default on two cores is one worker).
+    maxWorkers: 3,
     projects: [
       ...packageNames.map((name) => ({
         extends: true as const,
@@ -28,7 +32,7 @@ export default defineConfig({
         test: {
           name: 'tests',
           include: ['tests/**/*.test.ts'],
-          exclude: ['tests/e2e/**'],
+          exclude: [...configDefaults.exclude, 'tests/e2e/**'],
           testTimeout: 60_000,
           hookTimeout: 60_000,
         },
