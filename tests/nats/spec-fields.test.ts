@@ -204,6 +204,32 @@ describe('bare spec payloads on command subjects', () => {
     expect(sanitizeEstopReason(42)).toBe('42');
   });
 
+  it('e-stops on a message it cannot read at all, naming why in the reason', async () => {
+    const unreadable = [
+      new TextEncoder().encode('STOP!'), // not JSON
+      json({
+        hal_major: 9,
+        hal_minor: 0,
+        schema: 's',
+        device_id: 'c',
+        caps: [],
+        ts: 0,
+        payload: {},
+      }),
+    ];
+    for (const data of unreadable) {
+      const ack = parse(
+        (await nc.request('hal.v1.safety.estop.cmd', data, { timeout: 5000 })).data,
+      );
+      expect(ack.payload).toMatchObject({ ok: true, emergency_stopped: true });
+      expect(hal.safety.isEmergencyStopped()).toBe(true);
+      expect(hal.safety.getSafetyStatus().emergencyStopReason).toMatch(
+        /^unreadable e-stop message \([A-Z_]+\)$/,
+      );
+      expect((await ask('hal.v1.safety.estop.reset', {})).payload).toMatchObject({ ok: true });
+    }
+  });
+
   it('refuses what is neither an envelope nor a valid bare payload with MALFORMED, moving nothing', async () => {
     const before = await hal.locomotion.getPose();
     for (const body of [

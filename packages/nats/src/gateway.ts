@@ -290,9 +290,21 @@ class Gateway implements HalGateway {
   }
 
   async #onEstop(msg: Msg): Promise<void> {
-    // never refused for its reason: any value becomes a stored reason (sanitizeEstopReason)
-    const body = decodeSpecMessage(msg.data, z.looseObject({ reason: z.unknown() })).payload;
-    const reason = body.reason === undefined ? undefined : sanitizeEstopReason(body.reason);
+    // Never refused: any reason becomes a stored text (sanitizeEstopReason), and a message that
+    // cannot be read at all (not JSON, another major version) still stops the robot, with a
+    // reason that says so: whoever publishes on this subject wants the robot stopped.
+    let reason: string | undefined;
+    try {
+      const body = decodeSpecMessage(msg.data, z.looseObject({ reason: z.unknown() })).payload;
+      reason = body.reason === undefined ? undefined : sanitizeEstopReason(body.reason);
+    } catch (error) {
+      const unread = toHalError(error);
+      reason = sanitizeEstopReason(`unreadable e-stop message (${unread.code})`);
+      this.#log.warn('an unreadable e-stop message: stopping all the same', {
+        code: unread.code,
+        error: unread.message,
+      });
+    }
     const result = await this.hal.safety.emergencyStop(reason);
     await this.#reply(msg, SCHEMAS.ack, { ok: result.success, emergency_stopped: true });
   }
