@@ -1,7 +1,8 @@
 // The `hal` program as a child process: its help, a refusal without a terminal, and a robot that
 // is not there, each with the exit code a script sees.
+import { spawnSync } from 'node:child_process';
 import { describe, expect, it } from 'vitest';
-import { runHalProcess } from '../helpers/hal-process.js';
+import { HAL_MAIN, runHalProcess } from '../helpers/hal-process.js';
 
 describe('the hal program', () => {
   it('lists status, drive, teleop and serve in its help', async () => {
@@ -34,5 +35,20 @@ describe('the hal program', () => {
       'hal: NOT_CONNECTED: no answer from the robot at udp 127.0.0.1:9 within 1000 ms: nothing came back. Is it powered, on this network, at this address and port? (A wrong --key is answered with AUTH_FAILED: silence is not a key problem.)\n',
     );
     expect(Date.now() - started).toBeLessThan(15_000); // process start-up included: it did not hang
+  });
+
+  it('stops cleanly when the program reading its output goes away (hal status --watch | head)', () => {
+    const hal = `"${process.execPath}" --conditions=@hal/source --import tsx "${HAL_MAIN}"`;
+    const run = spawnSync(
+      'bash',
+      [
+        '-c',
+        `${hal} status --sim --watch --rate 20 | head -n 2 >/dev/null; echo "exit=\${PIPESTATUS[0]}"`,
+      ],
+      { encoding: 'utf8', timeout: 30_000 },
+    );
+    expect(run.status).toBe(0);
+    expect(run.stdout).toBe('exit=0\n');
+    expect(run.stderr).not.toMatch(/EPIPE|Unhandled|throw/);
   });
 });

@@ -8,7 +8,9 @@ import { fileURLToPath } from 'node:url';
 import { readEventLines } from '../physical/event-lines.js';
 import type { EventLines } from '../physical/event-lines.js';
 
-const MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
+/** The CLI's entry, run from source. */
+export const HAL_MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
+const MAIN = HAL_MAIN;
 type Child = ChildProcessByStdio<Writable, Readable, Readable>;
 const running = new Set<Child>();
 process.on('exit', () => {

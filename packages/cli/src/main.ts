@@ -11,8 +11,19 @@ const onSignal = (): void => {
 process.on('SIGINT', onSignal);
 process.on('SIGTERM', onSignal);
 
+// A reader that went away (`hal status --watch | head`): the command stops as on Ctrl-C (a robot
+// in motion is stopped) and writes nothing more, instead of dying on an unhandled EPIPE.
+let outClosed = false;
+process.stdout.on('error', (error: NodeJS.ErrnoException) => {
+  if (error.code !== 'EPIPE') throw error;
+  outClosed = true;
+  abort.abort();
+});
+
 const code = await runHal(process.argv.slice(2), {
-  out: (text) => process.stdout.write(text),
+  out: (text) => {
+    if (!outClosed) process.stdout.write(text);
+  },
   err: (text) => process.stderr.write(text),
   signal: abort.signal,
   stdin: process.stdin,
