@@ -40,3 +40,8 @@ export { REPORT_VERSION, runEval } from './run-eval.js';
 export type { AgentScores, EvalOptions, EvalReport } from './run-eval.js';
 export { EvalError } from './errors.js';
 export type { EvalErrorCode } from './errors.js';
+export { chatAgent } from './agents/chat.js';
+export type { ChatAgentOptions } from './agents/chat.js';
+export { alignColumns, summaryTable } from './report/table.js';
+export { markdownReport } from './report/markdown.js';
+export { successSvg } from './report/svg.js';
