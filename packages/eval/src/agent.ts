@@ -1,4 +1,5 @@
 import type { HalTool, ToolCall, ToolResult } from '@hal/tools';
+import type { HardwareAbstractionLayer } from '@hal/types';
 import type { TaskVariant } from './variant.js';
 
 /** What an agent gets for one trial. */
@@ -19,6 +20,11 @@ export interface AgentTrial {
   truth?: TaskVariant;
   /** With `truth`: the robot's true pose now (metres, radians), read without a tool call. */
   truePose?: () => { x: number; y: number; yaw: number };
+  /**
+   * For agents that declare `needsHal` (the navigation bridge): the robot as a HAL whose motion
+   * and sensor calls go through `execute`, so they are counted, leashed and faulted the same way.
+   */
+  hal?: HardwareAbstractionLayer;
 }
 
 /** What an agent says at the end of a trial. */
@@ -39,5 +45,7 @@ export interface EvalAgent {
   readonly name: string;
   /** Gets the ground truth (the oracle). Default false. */
   readonly usesGroundTruth?: boolean;
+  /** Drives a HAL rather than tools (given `hal`, see {@link AgentTrial.hal}). Default false. */
+  readonly needsHal?: boolean;
   run(trial: AgentTrial): Promise<AgentAnswer>;
 }

@@ -45,3 +45,6 @@ export type { ChatAgentOptions } from './agents/chat.js';
 export { alignColumns, summaryTable } from './report/table.js';
 export { markdownReport } from './report/markdown.js';
 export { successSvg } from './report/svg.js';
+export { navigationAgent } from './agents/navigation.js';
+export type { NavigationAgentOptions } from './agents/navigation.js';
+export { toolBackedHal } from './tool-hal.js';

@@ -5,6 +5,7 @@ import { judge, targetOf } from './checks.js';
 import type { CheckVerdict } from './checks.js';
 import { optimalPathM } from './route.js';
 import type { Task, TaskGroup } from './task-schema.js';
+import { toolBackedHal } from './tool-hal.js';
 import { createTrialExecutor } from './trial-executor.js';
 import { wrapAngle } from './truth.js';
 import { realiseTask } from './variant.js';
@@ -90,6 +91,9 @@ export async function runTrial(
       execute: (call) => executor.execute(call),
       signal: controller.signal,
       maxToolCalls: task.budget.toolCalls,
+      ...(agent.needsHal === true
+        ? { hal: toolBackedHal(hal, (call) => executor.execute(call)) }
+        : {}),
       ...(agent.usesGroundTruth === true
         ? {
             truth: variant,

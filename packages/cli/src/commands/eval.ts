@@ -89,12 +89,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
     new Command('eval')
       .description(
-        'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, the local model, openai:MODEL)',
+        'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, nav, the local model, openai:MODEL)',
       )
       .addOption(
         new Option(
           '--agent <names>',
-          'agents, comma-separated: oracle, naive, claimer, local, openai:MODEL',
+          'agents, comma-separated: oracle, naive, claimer, nav, local, openai:MODEL',
         ).default('oracle,naive'),
       )
       .addOption(

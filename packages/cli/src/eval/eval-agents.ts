@@ -8,7 +8,7 @@ import {
   SMALL_MODEL_TOOLS,
 } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
-import { chatAgent, claimerAgent, naiveAgent, oracleAgent } from '@hal/eval';
+import { chatAgent, claimerAgent, naiveAgent, navigationAgent, oracleAgent } from '@hal/eval';
 import type { EvalAgent } from '@hal/eval';
 import { toOpenAITools } from '@hal/tools';
 import { DEFAULT_SMALL_MODEL_STEPS } from '../agent/model-choice.js';
@@ -36,6 +36,7 @@ const FIXED: Record<string, () => EvalAgent> = {
   oracle: oracleAgent,
   naive: naiveAgent,
   claimer: claimerAgent,
+  nav: () => navigationAgent({ name: 'nav:goal-seeking' }),
 };
 
 /** Parses `--agent oracle,naive,local,openai:gpt-4o-mini` (names checked before anything loads). */
@@ -50,7 +51,7 @@ export function agentNames(text: string): string[] {
     if (/^openai:[^\s]+$/.test(name)) continue;
     throw new CliError(
       'USAGE',
-      `"--agent": unknown agent "${name}" (oracle, naive, claimer, local, openai:MODEL)`,
+      `"--agent": unknown agent "${name}" (oracle, naive, claimer, nav, local, openai:MODEL)`,
     );
   }
   if (new Set(names).size !== names.length)
