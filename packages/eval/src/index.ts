@@ -48,3 +48,5 @@ export { successSvg } from './report/svg.js';
 export { navigationAgent } from './agents/navigation.js';
 export type { NavigationAgentOptions } from './agents/navigation.js';
 export { toolBackedHal } from './tool-hal.js';
+export { RealitySchema } from './reality.js';
+export type { Reality, RealityInput } from './reality.js';

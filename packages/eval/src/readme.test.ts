@@ -16,5 +16,5 @@ describe('the README example', () => {
     expect(naive?.overall.rate).toBeLessThan(0.5);
     expect(claimer?.overall.rate).toBe(0);
     expect(JSON.stringify((await run()).scores)).toBe(JSON.stringify(report.scores));
-  });
+  }, 60_000);
 });

@@ -1,5 +1,6 @@
 import type { EvalAgent } from './agent.js';
 import { EvalError } from './errors.js';
+import { RealitySchema } from './reality.js';
 import { summariseGroups, summariseTasks } from './scores.js';
 import type { GroupSummary, Rate, TaskSummary } from './scores.js';
 import type { Task } from './task-schema.js';
@@ -70,6 +71,16 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   const trials = whole('trials', options.trials ?? 5, 1, 1000);
   const seed = whole('seed', options.seed ?? 1, 0, 2 ** 31 - 1);
   const concurrency = whole('concurrency', options.concurrency ?? 1, 1, 64);
+  if (options.reality !== undefined) {
+    const parsed = RealitySchema.safeParse(options.reality);
+    if (!parsed.success) {
+      const issue = parsed.error.issues[0];
+      throw new EvalError(
+        'CONFIG',
+        `"reality.${issue?.path.map(String).join('.') ?? ''}" ${issue?.message ?? 'is invalid'}`,
+      );
+    }
+  }
   if (options.tasks.length === 0) throw new EvalError('CONFIG', 'no tasks to run');
   if (options.agents.length === 0) throw new EvalError('CONFIG', 'no agents to run');
   const jobs = options.agents.flatMap((agent, a) =>

@@ -1,6 +1,9 @@
 import { createToolExecutor, halTools } from '@hal/tools';
 import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import type { SimulationHAL } from '@hal/simulation';
+import { SeededRandom } from '@hal/simulation';
+import type { Reality } from './reality.js';
+import { variantSeed } from './variant.js';
 import type { Fault, Task } from './task-schema.js';
 
 /** Codes that mean a call was refused before it ran (the leash, validation, the e-stop, budgets). */
@@ -32,6 +35,8 @@ export interface TrialLog {
   positions: { x: number; y: number }[];
   /** Whether the budget ran out (a call was refused for it). */
   overBudget: boolean;
+  /** Calls the `lossRate` knob lost. */
+  lostCalls: number;
 }
 
 /** The executor an agent gets in a trial, and what it recorded. */
@@ -57,8 +62,10 @@ function refusal(code: string, message: string): ToolResult {
 export function createTrialExecutor(
   hal: SimulationHAL,
   task: Task,
-  options: { toolNames?: readonly string[]; leash?: Leash } = {},
+  options: { toolNames?: readonly string[]; leash?: Leash; reality?: Reality; seed?: number } = {},
 ): TrialExecutor {
+  const reality = options.reality;
+  const random = new SeededRandom((variantSeed(task.id, options.seed ?? 1) ^ 0x9e3779b9) >>> 0);
   const leash: Leash = { ...options.leash };
   if (task.leash?.maxDistanceM !== undefined) leash.maxDistanceM = task.leash.maxDistanceM;
   if (task.leash?.geofence !== undefined) leash.geofence = task.leash.geofence;
@@ -78,6 +85,7 @@ export function createTrialExecutor(
     pathLengthM: 0,
     positions: [{ x: robot.x, y: robot.y }],
     overBudget: false,
+    lostCalls: 0,
   };
   const callsOf = new Map<string, number>();
   const faults: Fault[] = task.faults;
@@ -104,6 +112,17 @@ export function createTrialExecutor(
     callsOf.set(call.name, (callsOf.get(call.name) ?? 0) + 1);
     const fault = injected(call.name);
     if (fault !== undefined) return fault;
+    const safety = call.name === 'stop' || call.name === 'emergency_stop';
+    if (reality !== undefined && !safety) {
+      if (reality.latencyMs > 0) hal.world.advance(reality.latencyMs * 1000);
+      if (reality.lossRate > 0 && random.next() < reality.lossRate) {
+        log.lostCalls += 1;
+        return refusal(
+          'TIMEOUT',
+          `${call.name}: no answer from the robot in time (the call was lost); nothing moved`,
+        );
+      }
+    }
     const before = robot.leftSteps + robot.rightSteps;
     const result = await inner.execute(call);
     const after = robot.leftSteps + robot.rightSteps;

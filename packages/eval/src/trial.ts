@@ -3,6 +3,8 @@ import type { Leash } from '@hal/tools';
 import type { EvalAgent } from './agent.js';
 import { judge, targetOf } from './checks.js';
 import type { CheckVerdict } from './checks.js';
+import { RealitySchema } from './reality.js';
+import type { RealityInput } from './reality.js';
 import { optimalPathM } from './route.js';
 import type { Task, TaskGroup } from './task-schema.js';
 import { toolBackedHal } from './tool-hal.js';
@@ -30,6 +32,8 @@ export interface TrialScore {
   toolCalls: number;
   /** Calls refused before they ran: leash, validation, e-stop, budget. */
   refusedCalls: number;
+  /** Calls the loss knob lost (0 without it). */
+  lostCalls: number;
   tokensIn: number;
   tokensOut: number;
   /** Simulated time the trial took, seconds. */
@@ -51,6 +55,10 @@ export interface TrialOptions {
   tools?: readonly string[];
   /** A leash on top of the task's own. */
   leash?: Leash;
+  /** Reality knobs (latency, loss, range noise): off by default, seeded. */
+  reality?: RealityInput;
+  /** Overrides the sensors of every task's robot (e.g. no camera). */
+  sensors?: Partial<Task['world']['sensors']>;
   /** Wall-clock time a trial may take, ms. Default 120000. */
   wallTimeoutMs?: number;
 }
@@ -70,7 +78,13 @@ export async function runTrial(
   const started = performance.now();
   const variant = realiseTask(task, seed);
   const world = new World({ map: variant.map, seed });
-  const hal = new SimulationHAL({ world, start: variant.start, features: task.world.sensors });
+  const reality = RealitySchema.parse(options.reality ?? {});
+  const hal = new SimulationHAL({
+    world,
+    start: variant.start,
+    features: { ...task.world.sensors, ...options.sensors },
+    ...(reality.rangeNoiseM > 0 ? { rangeSensors: { noiseSigma: reality.rangeNoiseM } } : {}),
+  });
   let collisions = 0;
   const robotId = () => hal.robot.id;
   world.events.on('collision', (e) => {
@@ -80,6 +94,8 @@ export async function runTrial(
   const executor = createTrialExecutor(hal, task, {
     ...(options.tools === undefined ? {} : { toolNames: options.tools }),
     ...(options.leash === undefined ? {} : { leash: options.leash }),
+    reality,
+    seed,
   });
   const controller = new AbortController();
   const timer = setTimeout(() => controller.abort(), options.wallTimeoutMs ?? 120_000);
@@ -152,6 +168,7 @@ export async function runTrial(
     optimalPathM: optimal === null ? null : round(optimal),
     toolCalls: executor.log.toolCalls,
     refusedCalls: executor.log.refusedCalls,
+    lostCalls: executor.log.lostCalls,
     tokensIn: answer.tokensIn ?? 0,
     tokensOut: answer.tokensOut ?? 0,
     simSeconds: round(simSeconds, 3),

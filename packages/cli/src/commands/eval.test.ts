@@ -106,7 +106,33 @@ describe('hal eval', () => {
     );
   });
 
+  it('applies the reality knobs, the sensors and the leash to every trial', async () => {
+    const io = captureIO();
+    const args = [
+      '--agent',
+      'oracle',
+      '--tasks',
+      'precision',
+      '--trials',
+      '2',
+      '--loss',
+      '0.3',
+      '--latency',
+      '200',
+    ];
+    expect(
+      await runHal(['--json', 'eval', ...args, '--sensors', 'none', '--max-distance', '0.1'], io),
+      io.stderr(),
+    ).toBe(0);
+    const trials = (io.jsonLines()[0] as EvalReport).scores.agents[0]?.trials ?? [];
+    expect(trials.reduce((s, t) => s + t.lostCalls, 0)).toBeGreaterThan(0);
+    // the 0.1 m leash turns the oracle's moves into refusals: drive-30cm is not reached in one call
+    expect(trials.find((t) => t.task === 'precision/drive-30cm')?.refusedCalls).toBeGreaterThan(0);
+  });
+
   it.each([
+    [['--sensors', 'sonar'], /unknown sensor "sonar"/],
+    [['--loss', '1'], /--loss/],
     [['--agent', 'gpt'], /unknown agent "gpt"/],
     [['--tasks', 'speed'], /unknown group "speed"/],
     [['--trials', '0'], /--trials/],

@@ -11,6 +11,8 @@ import {
   TASK_GROUPS,
 } from '@hal/eval';
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
+import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
+import type { LeashCliOptions } from '@hal/mcp/leash-options';
 import { integerArg } from '@hal/remote/cli';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
@@ -18,7 +20,11 @@ import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
 import type { RegisterCommand } from './index.js';
 
-interface EvalCliOptions {
+interface EvalCliOptions extends LeashCliOptions {
+  latency?: number;
+  loss?: number;
+  rangeNoise?: number;
+  sensors?: string;
   agent: string;
   tasks?: string;
   tasksFile?: string;
@@ -56,6 +62,41 @@ function fraction(value: string): number {
   return n;
 }
 
+/** A parser of a number from `min` to `max`, its errors naming the option. */
+function rangeArg(name: string, min: number, max: number) {
+  return (value: string): number => {
+    const n = Number(value);
+    if (value.trim() === '' || !Number.isFinite(n) || n < min || n > max)
+      throw new CliError(
+        'USAGE',
+        `"${name}" must be a number from ${min} to ${max}, got "${value}"`,
+      );
+    return n;
+  };
+}
+
+const SENSORS = { camera: 'camera', range: 'rangeSensors', imu: 'imu' } as const;
+
+/** `--sensors camera,range`: the sensors every task's robot has (the others are off). */
+function sensorSet(text: string): { camera: boolean; rangeSensors: boolean; imu: boolean } {
+  const names = text
+    .split(',')
+    .map((n) => n.trim())
+    .filter((n) => n !== '' && n !== 'none');
+  for (const n of names) {
+    if (!(n in SENSORS))
+      throw new CliError(
+        'USAGE',
+        `"--sensors": unknown sensor "${n}" (camera, range, imu, or none)`,
+      );
+  }
+  return {
+    camera: names.includes('camera'),
+    rangeSensors: names.includes('range'),
+    imu: names.includes('imu'),
+  };
+}
+
 function temperatureArg(value: string): number {
   const n = Number(value);
   if (value.trim() === '' || !Number.isFinite(n) || n < 0 || n > 2)
@@ -87,7 +128,7 @@ function bar(done: number, total: number, width = 20): string {
 
 export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
-    new Command('eval')
+    addLeashOptions(new Command('eval'))
       .description(
         'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, nav, the local model, openai:MODEL)',
       )
@@ -162,10 +203,41 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           integerArg('--threads', 1, 256),
         ),
       )
+      .addOption(
+        new Option(
+          '--sensors <names>',
+          "the robot's sensors in every task: camera, range, imu, comma-separated, or none (default: each task's)",
+        ),
+      )
+      .addOption(
+        new Option(
+          '--latency <ms>',
+          'reality: simulated latency added to every call, ms',
+        ).argParser(rangeArg('--latency', 0, 10_000)),
+      )
+      .addOption(
+        new Option(
+          '--loss <rate>',
+          'reality: chance a call is lost (answers TIMEOUT), 0..0.9, seeded',
+        ).argParser(rangeArg('--loss', 0, 0.9)),
+      )
+      .addOption(
+        new Option(
+          '--range-noise <m>',
+          'reality: range sensor noise, standard deviation in metres',
+        ).argParser(rangeArg('--range-noise', 0, 1)),
+      )
       .action(async (options: EvalCliOptions) => {
         const g = global();
         const names = agentNames(options.agent);
         const tasks = await chooseTasks(options);
+        const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
+        const leash = leashFromOptions(options);
+        const reality = {
+          ...(options.latency === undefined ? {} : { latencyMs: options.latency }),
+          ...(options.loss === undefined ? {} : { lossRate: options.loss }),
+          ...(options.rangeNoise === undefined ? {} : { rangeNoiseM: options.rangeNoise }),
+        };
         const tools = options.tools
           ?.split(',')
           .map((t) => t.trim())
@@ -198,6 +270,9 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             seed: options.seed,
             concurrency,
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
+            ...(sensors === undefined ? {} : { sensors }),
+            ...(Object.keys(leash).length === 0 ? {} : { leash }),
+            ...(Object.keys(reality).length === 0 ? {} : { reality }),
             onTrial: ({ agent, score, done, total }) =>
               progress(
                 io,

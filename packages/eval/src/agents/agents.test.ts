@@ -16,7 +16,7 @@ describe('the oracle', () => {
     const failed = report.scores.agents[0]?.trials.filter((t) => !t.success) ?? [];
     expect(failed.map((t) => `${t.task} seed ${t.seed}: ${t.failures.join('; ')}`)).toEqual([]);
     expect(report.scores.agents[0]?.trials).toHaveLength(builtinTasks().length * 5);
-  });
+  }, 60_000);
 
   it('gives byte-identical scores in two runs with the same seed, whatever the concurrency', async () => {
     const run = (concurrency: number) =>
@@ -33,7 +33,7 @@ describe('the oracle', () => {
       (t) => t.task === 'precision/drive-30cm' && t.seed === 8,
     );
     expect(same).toEqual(other.scores.agents[0]?.trials[0]);
-  });
+  }, 60_000);
 });
 
 describe('the baselines', () => {
@@ -50,5 +50,5 @@ describe('the baselines', () => {
     expect(claimer?.overall.successes).toBe(0);
     expect(claimer?.tasks.every((t) => t.success.successes === 0)).toBe(true);
     expect(claimer?.trials.every((t) => t.toolCalls === 0 && t.pathLengthM === 0)).toBe(true);
-  });
+  }, 60_000);
 });

@@ -7,7 +7,7 @@ import { gapAhead, wrapAngle } from '../truth.js';
 import type { TaskVariant } from '../variant.js';
 
 /** How often the oracle repeats a call that failed (a fault, a timeout) before it gives up. */
-const ATTEMPTS = 4;
+const ATTEMPTS = 8;
 
 /** Thrown inside the oracle when the e-stop latched and the task says not to reset it. */
 class Latched extends Error {}
