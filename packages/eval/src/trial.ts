@@ -1,6 +1,6 @@
 import { SimulationHAL, World } from '@hal/simulation';
 import type { Leash } from '@hal/tools';
-import type { EvalAgent } from './agent.js';
+import type { AgentAnswer, EvalAgent } from './agent.js';
 import { judge, targetOf } from './checks.js';
 import type { CheckVerdict } from './checks.js';
 import { RealitySchema } from './reality.js';
@@ -63,6 +63,9 @@ export interface TrialOptions {
   wallTimeoutMs?: number;
 }
 
+/** How long an agent may take to answer once its time is up, ms. */
+const ABANDON_GRACE_MS = 5000;
+
 const round = (v: number, digits = 4) => {
   const f = 10 ** digits;
   return Math.round(v * f) / f;
@@ -98,10 +101,25 @@ export async function runTrial(
     seed,
   });
   const controller = new AbortController();
-  const timer = setTimeout(() => controller.abort(), options.wallTimeoutMs ?? 120_000);
-  let answer;
+  const wallMs = options.wallTimeoutMs ?? 120_000;
+  let giveUp: ReturnType<typeof setTimeout> | undefined;
+  // The signal asks the agent to answer; one that ignores it is left behind after a grace period.
+  const abandoned = new Promise<AgentAnswer>((resolve) => {
+    controller.signal.addEventListener('abort', () => {
+      giveUp = setTimeout(
+        () =>
+          resolve({
+            answer: '',
+            stopped: `no answer within ${wallMs} ms (+${ABANDON_GRACE_MS} ms)`,
+          }),
+        ABANDON_GRACE_MS,
+      );
+    });
+  });
+  const timer = setTimeout(() => controller.abort(), wallMs);
+  let answer: AgentAnswer;
   try {
-    answer = await agent.run({
+    const running = agent.run({
       instruction: task.instruction,
       tools: executor.tools,
       execute: (call) => executor.execute(call),
@@ -117,10 +135,12 @@ export async function runTrial(
           }
         : {}),
     });
+    answer = await Promise.race([running, abandoned]);
   } catch (error) {
     answer = { answer: '', stopped: `the agent failed: ${(error as Error).message}` };
   } finally {
     clearTimeout(timer);
+    clearTimeout(giveUp);
   }
   const robot = hal.robot;
   const pose = { x: robot.x, y: robot.y, yaw: robot.yaw };

@@ -62,3 +62,14 @@ describe('chatAgent', () => {
     expect(score.positionErrorM).toBeCloseTo(0.1, 3);
   });
 });
+
+describe('runTrial', () => {
+  it('leaves an agent that never answers behind when its time is up, and scores the trial', async () => {
+    const task = builtinTasks(['precision'])[0];
+    if (task === undefined) throw new Error('no task');
+    const stuck = { name: 'stuck', run: () => new Promise<never>(() => undefined) };
+    const { score } = await runTrial(task, 1, stuck, { wallTimeoutMs: 50 });
+    expect(score.success).toBe(false);
+    expect(score.failures.at(-1)).toBe('agent: no answer within 50 ms (+5000 ms)');
+  }, 20_000);
+});
