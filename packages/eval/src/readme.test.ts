@@ -11,10 +11,12 @@ describe('the README example', () => {
         seed: 1,
       });
     const report = await run();
-    const [oracle, naive, claimer] = report.scores.agents;
-    expect(oracle?.overall.rate).toBe(1);
-    expect(naive?.overall.rate).toBeLessThan(0.5);
-    expect(claimer?.overall.rate).toBe(0);
+    const rates = report.scores.agents.map((a) => [a.agent, a.overall.rate]);
+    expect(rates).toEqual([
+      ['oracle', 1],
+      ['naive', 0.2727],
+      ['claimer', 0],
+    ]);
     expect(JSON.stringify((await run()).scores)).toBe(JSON.stringify(report.scores));
   }, 60_000);
 });
