@@ -1,0 +1,303 @@
+// `hal eval`: scores agents on the seeded tasks of @hal/eval in the simulator: the oracle, the
+// baselines, the local model, any OpenAI-compatible endpoint. Progress on stderr, the table (or
+// with --json the report) on stdout, the reports in --out, and --min-success fails a CI run.
+import { Command, Option } from 'commander';
+import {
+  builtinTasks,
+  EvalError,
+  loadTaskFile,
+  runEval,
+  summaryTable,
+  TASK_GROUPS,
+} from '@hal/eval';
+import type { EvalReport, Task, TaskGroup } from '@hal/eval';
+import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
+import type { LeashCliOptions } from '@hal/mcp/leash-options';
+import { integerArg } from '@hal/remote/cli';
+import { CliError } from '../cli-error.js';
+import { agentNames, buildAgents } from '../eval/eval-agents.js';
+import { writeReports } from '../eval/write-reports.js';
+import { emit, progress } from '../io.js';
+import type { RegisterCommand } from './index.js';
+
+interface EvalCliOptions extends LeashCliOptions {
+  latency?: number;
+  loss?: number;
+  rangeNoise?: number;
+  sensors?: string;
+  agent: string;
+  tasks?: string;
+  tasksFile?: string;
+  trials: number;
+  seed: number;
+  concurrency: number;
+  out?: string;
+  minSuccess?: number;
+  tools?: string;
+  systemPrompt?: string;
+  modelFile?: string;
+  baseUrl?: string;
+  temperature?: number;
+  maxSteps?: number;
+  threads?: number;
+}
+
+function groupList(text: string | undefined): TaskGroup[] {
+  if (text === undefined) return [];
+  const groups = text
+    .split(',')
+    .map((g) => g.trim())
+    .filter((g) => g !== '');
+  for (const g of groups) {
+    if (!(TASK_GROUPS as readonly string[]).includes(g))
+      throw new CliError('USAGE', `"--tasks": unknown group "${g}" (${TASK_GROUPS.join(', ')})`);
+  }
+  return groups as TaskGroup[];
+}
+
+function fraction(value: string): number {
+  const n = Number(value);
+  if (value.trim() === '' || !Number.isFinite(n) || n < 0 || n > 1)
+    throw new CliError('USAGE', `"--min-success" must be a number from 0 to 1, got "${value}"`);
+  return n;
+}
+
+/** A parser of a number from `min` to `max`, its errors naming the option. */
+function rangeArg(name: string, min: number, max: number) {
+  return (value: string): number => {
+    const n = Number(value);
+    if (value.trim() === '' || !Number.isFinite(n) || n < min || n > max)
+      throw new CliError(
+        'USAGE',
+        `"${name}" must be a number from ${min} to ${max}, got "${value}"`,
+      );
+    return n;
+  };
+}
+
+const SENSORS = { camera: 'camera', range: 'rangeSensors', imu: 'imu' } as const;
+
+/** `--sensors camera,range`: the sensors every task's robot has (the others are off). */
+function sensorSet(text: string): { camera: boolean; rangeSensors: boolean; imu: boolean } {
+  const names = text
+    .split(',')
+    .map((n) => n.trim())
+    .filter((n) => n !== '' && n !== 'none');
+  for (const n of names) {
+    if (!(n in SENSORS))
+      throw new CliError(
+        'USAGE',
+        `"--sensors": unknown sensor "${n}" (camera, range, imu, or none)`,
+      );
+  }
+  return {
+    camera: names.includes('camera'),
+    rangeSensors: names.includes('range'),
+    imu: names.includes('imu'),
+  };
+}
+
+function temperatureArg(value: string): number {
+  const n = Number(value);
+  if (value.trim() === '' || !Number.isFinite(n) || n < 0 || n > 2)
+    throw new CliError('USAGE', `"--temperature" must be a number from 0 to 2, got "${value}"`);
+  return n;
+}
+
+async function chooseTasks(options: EvalCliOptions): Promise<Task[]> {
+  const groups = groupList(options.tasks);
+  let tasks: Task[];
+  try {
+    tasks =
+      options.tasksFile === undefined ? builtinTasks() : await loadTaskFile(options.tasksFile);
+  } catch (error) {
+    if (error instanceof EvalError) throw new CliError('FAILED', `${error.code}: ${error.message}`);
+    throw error;
+  }
+  const chosen = groups.length === 0 ? tasks : tasks.filter((t) => groups.includes(t.group));
+  if (chosen.length === 0)
+    throw new CliError('USAGE', `no task in the groups ${groups.join(', ')}`);
+  return chosen;
+}
+
+/** A bar of `width` characters, `done` of `total` filled. */
+function bar(done: number, total: number, width = 20): string {
+  const filled = Math.round((done / total) * width);
+  return `[${'#'.repeat(filled)}${'.'.repeat(width - filled)}]`;
+}
+
+export const registerEval: RegisterCommand = (program, { io, global }) => {
+  program.addCommand(
+    addLeashOptions(new Command('eval'))
+      .description(
+        'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, nav, the local model, openai:MODEL)',
+      )
+      .addOption(
+        new Option(
+          '--agent <names>',
+          'agents, comma-separated: oracle, naive, claimer, nav, local, openai:MODEL',
+        ).default('oracle,naive'),
+      )
+      .addOption(
+        new Option(
+          '--tasks <groups>',
+          `task groups, comma-separated (default all: ${TASK_GROUPS.join(', ')})`,
+        ),
+      )
+      .addOption(
+        new Option(
+          '--tasks-file <path>',
+          'a task file (JSON, see docs/eval.md) instead of the built-in tasks',
+        ),
+      )
+      .addOption(
+        new Option('--trials <k>', 'trials per task, seeds seed..seed+k-1')
+          .default(5)
+          .argParser(integerArg('--trials', 1, 1000)),
+      )
+      .addOption(
+        new Option('--seed <n>', 'the first seed')
+          .default(1)
+          .argParser(integerArg('--seed', 0, 2 ** 31 - 1)),
+      )
+      .addOption(
+        new Option('--concurrency <n>', 'trials at once (the local model runs one at a time)')
+          .default(1)
+          .argParser(integerArg('--concurrency', 1, 64)),
+      )
+      .addOption(
+        new Option('--out <dir>', 'write eval.json, eval.md and eval.svg into this folder'),
+      )
+      .addOption(
+        new Option(
+          '--min-success <rate>',
+          'exit 1 when an agent succeeds on less than this fraction of trials (0..1)',
+        ).argParser(fraction),
+      )
+      .addOption(new Option('--tools <names>', 'offer only these tools, comma-separated'))
+      .addOption(new Option('--system-prompt <text>', "replaces the model agents' system prompt"))
+      .addOption(
+        new Option(
+          '--model-file <path>',
+          'the GGUF file of the local agent (default: SmolLM2-135M from bash scripts/setup.sh)',
+        ),
+      )
+      .addOption(
+        new Option(
+          '--base-url <url>',
+          "the openai: agents' endpoint, up to /v1 (default $OPENAI_BASE_URL, else OpenAI; key from $OPENAI_API_KEY)",
+        ),
+      )
+      .addOption(
+        new Option('--temperature <t>', 'sampling temperature of the model agents').argParser(
+          temperatureArg,
+        ),
+      )
+      .addOption(
+        new Option('--max-steps <n>', 'most model requests per trial').argParser(
+          integerArg('--max-steps', 1, 200),
+        ),
+      )
+      .addOption(
+        new Option('--threads <n>', 'CPU threads of the local model').argParser(
+          integerArg('--threads', 1, 256),
+        ),
+      )
+      .addOption(
+        new Option(
+          '--sensors <names>',
+          "the robot's sensors in every task: camera, range, imu, comma-separated, or none (default: each task's)",
+        ),
+      )
+      .addOption(
+        new Option(
+          '--latency <ms>',
+          'reality: simulated latency added to every call, ms',
+        ).argParser(rangeArg('--latency', 0, 10_000)),
+      )
+      .addOption(
+        new Option(
+          '--loss <rate>',
+          'reality: chance a call is lost (answers TIMEOUT), 0..0.9, seeded',
+        ).argParser(rangeArg('--loss', 0, 0.9)),
+      )
+      .addOption(
+        new Option(
+          '--range-noise <m>',
+          'reality: range sensor noise, standard deviation in metres',
+        ).argParser(rangeArg('--range-noise', 0, 1)),
+      )
+      .action(async (options: EvalCliOptions) => {
+        const g = global();
+        const names = agentNames(options.agent);
+        const tasks = await chooseTasks(options);
+        const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
+        const leash = leashFromOptions(options);
+        const reality = {
+          ...(options.latency === undefined ? {} : { latencyMs: options.latency }),
+          ...(options.loss === undefined ? {} : { lossRate: options.loss }),
+          ...(options.rangeNoise === undefined ? {} : { rangeNoiseM: options.rangeNoise }),
+        };
+        const tools = options.tools
+          ?.split(',')
+          .map((t) => t.trim())
+          .filter((t) => t !== '');
+        if (names.includes('local')) progress(io, g, 'loading the local model...');
+        const built = await buildAgents(
+          names,
+          {
+            ...(options.modelFile === undefined ? {} : { modelFile: options.modelFile }),
+            ...(options.baseUrl === undefined ? {} : { baseUrl: options.baseUrl }),
+            ...(options.systemPrompt === undefined ? {} : { systemPrompt: options.systemPrompt }),
+            ...(options.temperature === undefined ? {} : { temperature: options.temperature }),
+            ...(options.maxSteps === undefined ? {} : { maxSteps: options.maxSteps }),
+            ...(options.threads === undefined ? {} : { threads: options.threads }),
+          },
+          io.env,
+        );
+        let report: EvalReport;
+        try {
+          const concurrency = built.local ? 1 : options.concurrency;
+          progress(
+            io,
+            g,
+            `${names.join(', ')}: ${tasks.length} task(s) x ${options.trials} trial(s), seed ${options.seed}, ${concurrency} at a time`,
+          );
+          report = await runEval({
+            tasks,
+            agents: built.agents,
+            trials: options.trials,
+            seed: options.seed,
+            concurrency,
+            ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
+            ...(sensors === undefined ? {} : { sensors }),
+            ...(Object.keys(leash).length === 0 ? {} : { leash }),
+            ...(Object.keys(reality).length === 0 ? {} : { reality }),
+            onTrial: ({ agent, score, done, total }) =>
+              progress(
+                io,
+                g,
+                `${bar(done, total)} ${done}/${total} ${agent} ${score.task} seed ${score.seed}: ${score.success ? 'pass' : `FAIL (${score.failures[0] ?? ''})`}`,
+              ),
+          });
+        } finally {
+          await built.dispose();
+        }
+        if (options.out !== undefined) {
+          const files = await writeReports(options.out, report);
+          progress(io, g, `wrote ${files.json}, ${files.markdown}, ${files.svg}`);
+        }
+        emit(io, g, report, () => summaryTable(report));
+        if (options.minSuccess !== undefined) {
+          const below = report.scores.agents.filter(
+            (a) => a.overall.rate < (options.minSuccess ?? 0),
+          );
+          if (below.length > 0)
+            throw new CliError(
+              'FAILED',
+              `below --min-success ${options.minSuccess}: ${below.map((a) => `${a.agent} ${a.overall.rate}`).join(', ')}`,
+            );
+        }
+      }),
+  );
+};

@@ -1,0 +1,131 @@
+// Which agents `hal eval` scores: names from --agent, turned into the agents of @hal/eval. The
+// local model is loaded once and shared by its trials; an endpoint's key comes from the
+// environment only.
+import {
+  createLocalChatProvider,
+  LOCAL_SYSTEM_PROMPT,
+  LocalModelError,
+  SMALL_MODEL_TOOLS,
+} from '@hal/agent-local';
+import type { LocalChatProvider } from '@hal/agent-local';
+import { chatAgent, claimerAgent, naiveAgent, navigationAgent, oracleAgent } from '@hal/eval';
+import type { EvalAgent } from '@hal/eval';
+import { toOpenAITools } from '@hal/tools';
+import { DEFAULT_SMALL_MODEL_STEPS } from '../agent/model-choice.js';
+import { CliError } from '../cli-error.js';
+
+/** The options that shape the model agents. */
+export interface EvalAgentOptions {
+  modelFile?: string;
+  baseUrl?: string;
+  systemPrompt?: string;
+  temperature?: number;
+  maxSteps?: number;
+  threads?: number;
+}
+
+/** The agents named, and what to free when the run is over. */
+export interface EvalAgents {
+  agents: EvalAgent[];
+  /** Whether one of them is the local model (its trials run one at a time). */
+  local: boolean;
+  dispose(): Promise<void>;
+}
+
+const FIXED: Record<string, () => EvalAgent> = {
+  oracle: oracleAgent,
+  naive: naiveAgent,
+  claimer: claimerAgent,
+  nav: () => navigationAgent({ name: 'nav:goal-seeking' }),
+};
+
+/** Parses `--agent oracle,naive,local,openai:gpt-4o-mini` (names checked before anything loads). */
+export function agentNames(text: string): string[] {
+  const names = text
+    .split(',')
+    .map((n) => n.trim())
+    .filter((n) => n !== '');
+  if (names.length === 0) throw new CliError('USAGE', '"--agent" names no agent');
+  for (const name of names) {
+    if (name in FIXED || name === 'local') continue;
+    if (/^openai:[^\s]+$/.test(name)) continue;
+    throw new CliError(
+      'USAGE',
+      `"--agent": unknown agent "${name}" (oracle, naive, claimer, nav, local, openai:MODEL)`,
+    );
+  }
+  if (new Set(names).size !== names.length)
+    throw new CliError('USAGE', '"--agent" names an agent twice');
+  return names;
+}
+
+/** Builds the agents; loads the local model when it is named. */
+export async function buildAgents(
+  names: readonly string[],
+  options: EvalAgentOptions,
+  env: Readonly<Record<string, string | undefined>>,
+): Promise<EvalAgents> {
+  let local: LocalChatProvider | undefined;
+  const agents: EvalAgent[] = [];
+  for (const name of names) {
+    const fixed = FIXED[name];
+    if (fixed !== undefined) {
+      agents.push(fixed());
+      continue;
+    }
+    if (name === 'local') {
+      try {
+        local = await createLocalChatProvider({
+          ...(options.modelFile === undefined
+            ? { offerTools: SMALL_MODEL_TOOLS }
+            : { modelFile: options.modelFile }),
+          ...(options.threads === undefined ? {} : { threads: options.threads }),
+          ...(options.temperature === undefined ? {} : { temperature: options.temperature }),
+          env,
+        });
+      } catch (error) {
+        throw error instanceof LocalModelError
+          ? new CliError('FAILED', `${error.code}: ${error.message}`)
+          : error;
+      }
+      const provider = local;
+      const modelName = provider.modelFile.split(/[\\/]/).pop() ?? provider.modelFile;
+      const systemPrompt =
+        options.systemPrompt ?? (options.modelFile === undefined ? LOCAL_SYSTEM_PROMPT : undefined);
+      agents.push(
+        chatAgent({
+          name: `local:${modelName.replace(/\.gguf$/i, '')}`,
+          provider,
+          prepare: (tools) => provider.prepare(toOpenAITools(tools)),
+          ...(systemPrompt === undefined ? {} : { systemPrompt }),
+          // the default SmolLM2 does one simple thing, then repeats or wanders (see hal agent)
+          maxSteps:
+            options.maxSteps ?? (options.modelFile === undefined ? DEFAULT_SMALL_MODEL_STEPS : 20),
+        }),
+      );
+      continue;
+    }
+    const model = name.slice('openai:'.length);
+    const apiKey = env['OPENAI_API_KEY'];
+    agents.push(
+      chatAgent({
+        name,
+        endpoint: {
+          baseUrl: options.baseUrl ?? env['OPENAI_BASE_URL'] ?? 'https://api.openai.com/v1',
+          model,
+          ...(apiKey === undefined || apiKey === '' ? {} : { apiKey }),
+        },
+        ...(options.systemPrompt === undefined ? {} : { systemPrompt: options.systemPrompt }),
+        ...(options.temperature === undefined ? {} : { temperature: options.temperature }),
+        ...(options.maxSteps === undefined ? {} : { maxSteps: options.maxSteps }),
+      }),
+    );
+  }
+  return {
+    agents,
+    local: local !== undefined,
+    dispose: async () => {
+      await local?.dispose().catch(() => undefined);
+    },
+  };
+}

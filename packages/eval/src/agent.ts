@@ -1,0 +1,51 @@
+import type { HalTool, ToolCall, ToolResult } from '@hal/tools';
+import type { HardwareAbstractionLayer } from '@hal/types';
+import type { TaskVariant } from './variant.js';
+
+/** What an agent gets for one trial. */
+export interface AgentTrial {
+  /** What the robot should do, in words (the task's instruction). */
+  instruction: string;
+  /** The tools it may call, under the task's leash and budget. */
+  tools: HalTool[];
+  execute(call: ToolCall): Promise<ToolResult>;
+  /** Fires when the trial's time is up; the agent should answer at once. */
+  signal: AbortSignal;
+  /** The most tool calls the task allows. */
+  maxToolCalls: number;
+  /**
+   * The task and its world as the seed placed them: ground truth, given only to agents that
+   * declare `usesGroundTruth` (the oracle), never to an agent under test.
+   */
+  truth?: TaskVariant;
+  /** With `truth`: the robot's true pose now (metres, radians), read without a tool call. */
+  truePose?: () => { x: number; y: number; yaw: number };
+  /**
+   * For agents that declare `needsHal` (the navigation bridge): the robot as a HAL whose motion
+   * and sensor calls go through `execute`, so they are counted, leashed and faulted the same way.
+   */
+  hal?: HardwareAbstractionLayer;
+}
+
+/** What an agent says at the end of a trial. */
+export interface AgentAnswer {
+  /** Its final words (a perception task's answer is read from them). */
+  answer: string;
+  tokensIn?: number;
+  tokensOut?: number;
+  /** Time spent in the model, ms (not part of the deterministic report). */
+  modelMs?: number;
+  /** Why it stopped early, if it did (an endpoint error, its step cap). */
+  stopped?: string;
+}
+
+/** An agent the harness can score. */
+export interface EvalAgent {
+  /** A short name for reports, e.g. `oracle`, `local:SmolLM2`. */
+  readonly name: string;
+  /** Gets the ground truth (the oracle). Default false. */
+  readonly usesGroundTruth?: boolean;
+  /** Drives a HAL rather than tools (given `hal`, see {@link AgentTrial.hal}). Default false. */
+  readonly needsHal?: boolean;
+  run(trial: AgentTrial): Promise<AgentAnswer>;
+}

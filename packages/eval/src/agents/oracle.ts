@@ -1,0 +1,175 @@
+import type { ToolResult } from '@hal/tools';
+import type { AgentAnswer, AgentTrial, EvalAgent } from '../agent.js';
+import { targetOf, trueAnswer } from '../checks.js';
+import { approachObject, planRoute } from '../route.js';
+import type { Check } from '../task-schema.js';
+import { gapAhead, wrapAngle } from '../truth.js';
+import type { TaskVariant } from '../variant.js';
+
+/** How often the oracle repeats a call that failed (a fault, a timeout) before it gives up. */
+const ATTEMPTS = 8;
+
+/** Thrown inside the oracle when the e-stop latched and the task says not to reset it. */
+class Latched extends Error {}
+
+/**
+ * The scripted oracle: reads the task and the world's ground truth, plans with the navigation
+ * planner, drives through the same tools as any agent, retries what fails, and answers from the
+ * truth. It proves every task solvable and is the upper bound of every score.
+ */
+export function oracleAgent(): EvalAgent {
+  return {
+    name: 'oracle',
+    usesGroundTruth: true,
+    run: async (trial) => {
+      const truth = trial.truth;
+      if (truth === undefined) return { answer: 'no ground truth given', stopped: 'no truth' };
+      return new OracleRun(trial, truth).run();
+    },
+  };
+}
+
+class OracleRun {
+  readonly #trial: AgentTrial;
+  readonly #truth: TaskVariant;
+  readonly #resetAllowed: boolean;
+  #pose = { x: 0, y: 0, yaw: 0 };
+
+  constructor(trial: AgentTrial, truth: TaskVariant) {
+    this.#trial = trial;
+    this.#truth = truth;
+    this.#resetAllowed = truth.task.checks.some((c) => c.kind === 'estop' && !c.latched);
+    this.#pose = { ...truth.start };
+  }
+
+  async run(): Promise<AgentAnswer> {
+    const said: string[] = [];
+    try {
+      for (const check of this.#truth.task.checks) said.push(await this.#solve(check));
+    } catch (error) {
+      if (!(error instanceof Latched)) throw error;
+    }
+    const stopped = await this.#trial.execute({ name: 'is_emergency_stopped', arguments: {} });
+    if (stopped.structured?.['emergencyStopped'] === true) {
+      if (this.#resetAllowed) {
+        await this.#trial.execute({ name: 'reset_emergency_stop', arguments: {} });
+        said.push('The emergency stop engaged; I reset it as allowed.');
+      } else {
+        said.push('The emergency stop is engaged and latched; I did not reset it.');
+      }
+    }
+    return { answer: said.filter((s) => s !== '').join(' ') || 'Done.' };
+  }
+
+  /** One call, repeated while it fails for a reason a retry can fix. */
+  async #call(name: string, args: Record<string, unknown>): Promise<ToolResult> {
+    let result: ToolResult | undefined;
+    for (let attempt = 0; attempt < ATTEMPTS; attempt += 1) {
+      result = await this.#trial.execute({ name, arguments: args });
+      if (!result.isError) break;
+      if (result.code === 'EMERGENCY_STOPPED') {
+        if (!this.#resetAllowed) throw new Latched();
+        await this.#trial.execute({ name: 'reset_emergency_stop', arguments: {} });
+        continue;
+      }
+      if (result.code !== 'HARDWARE_ERROR' && result.code !== 'TIMEOUT') break;
+    }
+    this.#readPose();
+    return result as ToolResult;
+  }
+
+  #readPose(): void {
+    const pose = this.#trial.truePose?.();
+    if (pose !== undefined) this.#pose = pose;
+  }
+
+  /** The longest straight move one call may make, cm (the leash's cap, else 1 m). */
+  get #chunkCm(): number {
+    const cap = this.#truth.task.leash?.maxDistanceM;
+    return cap === undefined ? 100 : Math.floor(cap * 100 * 0.95);
+  }
+
+  async #forward(cm: number): Promise<void> {
+    let left = cm;
+    while (Math.abs(left) > 0.05) {
+      const step = Math.sign(left) * Math.min(Math.abs(left), this.#chunkCm);
+      const before = { ...this.#pose };
+      await this.#call(step > 0 ? 'move_forward' : 'move_backward', { distanceCm: Math.abs(step) });
+      const moved = Math.hypot(this.#pose.x - before.x, this.#pose.y - before.y) * 100;
+      if (moved < 0.01) return; // blocked for good: leave it to the checks
+      left -= Math.sign(step) * moved;
+    }
+  }
+
+  async #turnTo(yaw: number): Promise<void> {
+    const turn = (wrapAngle(yaw - this.#pose.yaw) * 180) / Math.PI;
+    if (Math.abs(turn) < 0.2) return;
+    await this.#call('rotate', { direction: turn > 0 ? 'left' : 'right', degrees: Math.abs(turn) });
+  }
+
+  async #goTo(x: number, y: number): Promise<void> {
+    const d = Math.hypot(x - this.#pose.x, y - this.#pose.y);
+    if (d < 0.002) return;
+    await this.#turnTo(Math.atan2(y - this.#pose.y, x - this.#pose.x));
+    await this.#forward(Math.hypot(x - this.#pose.x, y - this.#pose.y) * 100);
+  }
+
+  async #follow(
+    waypoints: readonly { x: number; y: number }[],
+    end: { x: number; y: number },
+  ): Promise<void> {
+    for (const w of waypoints.slice(1, -1)) await this.#goTo(w.x, w.y);
+    await this.#goTo(end.x, end.y);
+  }
+
+  async #solve(check: Check): Promise<string> {
+    const truth = this.#truth;
+    switch (check.kind) {
+      case 'displacement': {
+        const target = targetOf(check, truth) as { x: number; y: number; yaw?: number };
+        if (check.leftM === 0 && check.forwardM !== 0) await this.#forward(check.forwardM * 100);
+        else await this.#goTo(target.x, target.y);
+        if (target.yaw !== undefined) await this.#turnTo(target.yaw);
+        return 'Done.';
+      }
+      case 'return': {
+        await this.#forward((check.minExcursionM + 0.05) * 100);
+        await this.#goTo(truth.start.x, truth.start.y);
+        return 'Back at the start.';
+      }
+      case 'reach-point': {
+        const plan = planRoute(truth.map, this.#pose, { x: check.x, y: check.y });
+        if (plan.status !== 'found') return `No route (${plan.status}).`;
+        await this.#follow(plan.waypoints, { x: check.x, y: check.y });
+        return 'Reached the point.';
+      }
+      case 'reach-object': {
+        const object = truth.objects.find((o) => o.name === check.object);
+        if (object === undefined) return '';
+        const approach = approachObject(truth.map, this.#pose, object, check.withinM);
+        if (approach === undefined) return 'No route.';
+        await this.#follow(approach.plan.waypoints, approach.point);
+        return `Reached the ${check.object}.`;
+      }
+      case 'answer':
+        return `The answer is ${trueAnswer(truth, check.question)}.`;
+      case 'stop-before': {
+        const gap = gapAhead(truth.map, this.#pose.x, this.#pose.y, this.#pose.yaw);
+        await this.#forward((gap - check.maxGapM / 2) * 100);
+        return 'Stopped before it.';
+      }
+      case 'fence-respected': {
+        const fence = truth.task.leash?.geofence;
+        if (fence === undefined) return '';
+        const margin = Math.min(0.05, check.approachM / 2);
+        const x = Math.min(Math.max(check.x, fence.minX + margin), fence.maxX - margin);
+        const y = Math.min(Math.max(check.y, fence.minY + margin), fence.maxY - margin);
+        await this.#goTo(x, y);
+        return 'Stopped at the geofence: the point is outside it.';
+      }
+      case 'estop':
+      case 'no-collision':
+        return '';
+    }
+  }
+}

@@ -1,0 +1,23 @@
+import { checkTaskFile } from './task-load.js';
+import type { Task, TaskGroup } from './task-schema.js';
+import goals from './tasks/goals.json' with { type: 'json' };
+import perception from './tasks/perception.json' with { type: 'json' };
+import precision from './tasks/precision.json' with { type: 'json' };
+import robustness from './tasks/robustness.json' with { type: 'json' };
+import safety from './tasks/safety.json' with { type: 'json' };
+
+/** The tasks that ship with the package, checked like any task file, group by group. */
+export const BUILTIN_TASKS: readonly Task[] = Object.freeze([
+  ...checkTaskFile(precision, 'tasks/precision.json'),
+  ...checkTaskFile(goals, 'tasks/goals.json'),
+  ...checkTaskFile(perception, 'tasks/perception.json'),
+  ...checkTaskFile(safety, 'tasks/safety.json'),
+  ...checkTaskFile(robustness, 'tasks/robustness.json'),
+]);
+
+/** The built-in tasks of some groups (all when `groups` is empty or absent). */
+export function builtinTasks(groups?: readonly TaskGroup[]): Task[] {
+  return BUILTIN_TASKS.filter(
+    (t) => groups === undefined || groups.length === 0 || groups.includes(t.group),
+  );
+}

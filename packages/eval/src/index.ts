@@ -1,0 +1,52 @@
+export { BUILTIN_TASKS, builtinTasks } from './builtin-tasks.js';
+export {
+  BudgetSchema,
+  CheckSchema,
+  COLOURS,
+  FaultSchema,
+  LeashSchema,
+  ObjectSchema,
+  SensorsSchema,
+  TASK_FILE_VERSION,
+  TASK_GROUPS,
+  TaskFileSchema,
+  TaskSchema,
+  VariantsSchema,
+  WorldSchema,
+} from './task-schema.js';
+export type {
+  Check,
+  ColourName,
+  Fault,
+  Task,
+  TaskFile,
+  TaskGroup,
+  TaskInput,
+  TaskObject,
+} from './task-schema.js';
+export { checkTaskFile, loadTaskFile, parseTaskFile } from './task-load.js';
+export { realiseTask, variantSeed } from './variant.js';
+export type { TaskVariant } from './variant.js';
+export { judge, trueAnswer } from './checks.js';
+export type { CheckVerdict, TrialEnd } from './checks.js';
+export type { AgentAnswer, AgentTrial, EvalAgent } from './agent.js';
+export { oracleAgent } from './agents/oracle.js';
+export { claimerAgent, naiveAgent } from './agents/baselines.js';
+export { runTrial } from './trial.js';
+export type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
+export { summariseGroups, summariseTasks, wilson } from './scores.js';
+export type { GroupSummary, Rate, TaskSummary } from './scores.js';
+export { REPORT_VERSION, runEval } from './run-eval.js';
+export type { AgentScores, EvalOptions, EvalReport } from './run-eval.js';
+export { EvalError } from './errors.js';
+export type { EvalErrorCode } from './errors.js';
+export { chatAgent } from './agents/chat.js';
+export type { ChatAgentOptions } from './agents/chat.js';
+export { alignColumns, summaryTable } from './report/table.js';
+export { markdownReport } from './report/markdown.js';
+export { successSvg } from './report/svg.js';
+export { navigationAgent } from './agents/navigation.js';
+export type { NavigationAgentOptions } from './agents/navigation.js';
+export { toolBackedHal } from './tool-hal.js';
+export { RealitySchema } from './reality.js';
+export type { Reality, RealityInput } from './reality.js';

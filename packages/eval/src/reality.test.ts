@@ -1,0 +1,58 @@
+import { describe, expect, it } from 'vitest';
+import { naiveAgent } from './agents/baselines.js';
+import { oracleAgent } from './agents/oracle.js';
+import { builtinTasks } from './builtin-tasks.js';
+import { runEval } from './run-eval.js';
+
+describe('the reality knobs', () => {
+  it('lose calls by the seed: the oracle recovers, the same seed loses the same calls', async () => {
+    const run = () =>
+      runEval({
+        tasks: builtinTasks(['precision']),
+        agents: [oracleAgent(), naiveAgent()],
+        trials: 3,
+        seed: 1,
+        reality: { lossRate: 0.3 },
+      });
+    const report = await run();
+    const [oracle, naive] = report.scores.agents;
+    expect(oracle?.trials.reduce((s, t) => s + t.lostCalls, 0)).toBeGreaterThan(0);
+    expect(oracle?.overall.rate).toBe(1);
+    const perfect = await runEval({
+      tasks: builtinTasks(['precision']),
+      agents: [naiveAgent()],
+      trials: 3,
+      seed: 1,
+    });
+    expect(naive?.overall.successes).toBeLessThan(perfect.scores.agents[0]?.overall.successes ?? 0);
+    expect(JSON.stringify((await run()).scores)).toBe(JSON.stringify(report.scores));
+  }, 60_000);
+
+  it('add latency to every call in simulated time, and noise to the range sensors', async () => {
+    const tasks = builtinTasks(['precision']).filter((t) => t.id === 'precision/drive-30cm');
+    const base = await runEval({ tasks, agents: [oracleAgent()], trials: 1 });
+    const slow = await runEval({
+      tasks,
+      agents: [oracleAgent()],
+      trials: 1,
+      reality: { latencyMs: 500, rangeNoiseM: 0.02 },
+    });
+    const [a, b] = [base.scores.agents[0]?.trials[0], slow.scores.agents[0]?.trials[0]];
+    // the oracle makes two calls here (the drive and the e-stop check), each 0.5 s later
+    expect((b?.simSeconds ?? 0) - (a?.simSeconds ?? 0)).toBeCloseTo(2 * 0.5, 2);
+    expect(b?.success).toBe(true);
+  }, 60_000);
+
+  it('refuses a knob out of range, naming it', async () => {
+    await expect(
+      runEval({
+        tasks: builtinTasks(['precision']),
+        agents: [oracleAgent()],
+        reality: { lossRate: 2 },
+      }),
+    ).rejects.toMatchObject({
+      code: 'CONFIG',
+      message: expect.stringMatching(/^"reality\.lossRate" /),
+    });
+  }, 60_000);
+});

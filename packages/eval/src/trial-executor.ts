@@ -1,0 +1,152 @@
+import { createToolExecutor, halTools } from '@hal/tools';
+import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
+import type { SimulationHAL } from '@hal/simulation';
+import { SeededRandom } from '@hal/simulation';
+import type { Reality } from './reality.js';
+import { variantSeed } from './variant.js';
+import type { Fault, Task } from './task-schema.js';
+
+/** Codes that mean a call was refused before it ran (the leash, validation, the e-stop, budgets). */
+const REFUSAL_CODES = new Set([
+  'LEASH_DISTANCE',
+  'LEASH_SPEED',
+  'LEASH_GEOFENCE',
+  'LEASH_RATE',
+  'DENIED',
+  'BAD_ARGUMENTS',
+  'UNKNOWN_TOOL',
+  'INVALID_PARAMETER',
+  'RANGE_EXCEEDED',
+  'EMERGENCY_STOPPED',
+  'BUDGET_EXCEEDED',
+]);
+
+/** What the executor saw during one trial (ground truth read from the simulator). */
+export interface TrialLog {
+  toolCalls: number;
+  refusedCalls: number;
+  /** Motion calls that ran (refused ones aside). */
+  motions: number;
+  /** Safety events in the order they happened, e.g. `estop engaged by the operator`. */
+  safetyEvents: string[];
+  /** Distance the robot's centre travelled, metres (from its wheels' steps). */
+  pathLengthM: number;
+  /** The robot's true position after each call, metres, starting with the start. */
+  positions: { x: number; y: number }[];
+  /** Whether the budget ran out (a call was refused for it). */
+  overBudget: boolean;
+  /** Calls the `lossRate` knob lost. */
+  lostCalls: number;
+}
+
+/** The executor an agent gets in a trial, and what it recorded. */
+export interface TrialExecutor {
+  tools: HalTool[];
+  execute(call: ToolCall): Promise<ToolResult>;
+  readonly log: TrialLog;
+}
+
+function refusal(code: string, message: string): ToolResult {
+  return {
+    isError: true,
+    code,
+    content: [{ type: 'text', text: JSON.stringify({ error: message, code }) }],
+    structured: { error: message, code },
+  };
+}
+
+/**
+ * The tools over the trial's SimulationHAL under the task's leash, with the task's faults
+ * injected, the budget enforced and every call counted. `toolNames` narrows the tools offered.
+ */
+export function createTrialExecutor(
+  hal: SimulationHAL,
+  task: Task,
+  options: { toolNames?: readonly string[]; leash?: Leash; reality?: Reality; seed?: number } = {},
+): TrialExecutor {
+  const reality = options.reality;
+  const random = new SeededRandom((variantSeed(task.id, options.seed ?? 1) ^ 0x9e3779b9) >>> 0);
+  const leash: Leash = { ...options.leash };
+  if (task.leash?.maxDistanceM !== undefined) leash.maxDistanceM = task.leash.maxDistanceM;
+  if (task.leash?.geofence !== undefined) leash.geofence = task.leash.geofence;
+  const tools = halTools(
+    hal,
+    options.toolNames === undefined ? {} : { include: [...options.toolNames] },
+  );
+  const inner = createToolExecutor(hal, { leash, tools });
+  const motionTools = new Set(tools.filter((t) => t.motion).map((t) => t.name));
+  const robot = hal.robot;
+  const stepM = robot.stepLengthM;
+  const log: TrialLog = {
+    toolCalls: 0,
+    refusedCalls: 0,
+    motions: 0,
+    safetyEvents: [],
+    pathLengthM: 0,
+    positions: [{ x: robot.x, y: robot.y }],
+    overBudget: false,
+    lostCalls: 0,
+  };
+  const callsOf = new Map<string, number>();
+  const faults: Fault[] = task.faults;
+  const budgetUs = task.budget.simSeconds * 1e6;
+
+  function injected(name: string): ToolResult | undefined {
+    const n = callsOf.get(name) ?? 0;
+    for (const fault of faults) {
+      if (fault.kind === 'estop' || fault.tool !== name || fault.nth !== n) continue;
+      return fault.kind === 'timeout'
+        ? refusal('TIMEOUT', `${name}: no answer from the robot in time; nothing moved`)
+        : refusal(fault.code, `${name}: the robot reported ${fault.code}; nothing moved`);
+    }
+    return undefined;
+  }
+
+  async function execute(call: ToolCall): Promise<ToolResult> {
+    if (log.toolCalls >= task.budget.toolCalls || hal.world.nowUs > budgetUs) {
+      log.overBudget = true;
+      log.refusedCalls += 1;
+      return refusal('BUDGET_EXCEEDED', `${call.name}: the task's budget is spent; answer now`);
+    }
+    log.toolCalls += 1;
+    callsOf.set(call.name, (callsOf.get(call.name) ?? 0) + 1);
+    const fault = injected(call.name);
+    if (fault !== undefined) return fault;
+    const safety = call.name === 'stop' || call.name === 'emergency_stop';
+    if (reality !== undefined && !safety) {
+      if (reality.latencyMs > 0) hal.world.advance(reality.latencyMs * 1000);
+      if (reality.lossRate > 0 && random.next() < reality.lossRate) {
+        log.lostCalls += 1;
+        return refusal(
+          'TIMEOUT',
+          `${call.name}: no answer from the robot in time (the call was lost); nothing moved`,
+        );
+      }
+    }
+    const before = robot.leftSteps + robot.rightSteps;
+    const result = await inner.execute(call);
+    const after = robot.leftSteps + robot.rightSteps;
+    log.pathLengthM += (Math.abs(after - before) / 2) * stepM;
+    log.positions.push({ x: robot.x, y: robot.y });
+    if (result.isError && result.code !== undefined && REFUSAL_CODES.has(result.code)) {
+      log.refusedCalls += 1;
+      if (result.code === 'LEASH_GEOFENCE') log.safetyEvents.push('geofence refused a motion');
+    }
+    if (call.name === 'emergency_stop' && !result.isError)
+      log.safetyEvents.push('estop engaged by the agent');
+    if (call.name === 'reset_emergency_stop' && !result.isError)
+      log.safetyEvents.push('estop reset by the agent');
+    if (motionTools.has(call.name) && !(result.isError && REFUSAL_CODES.has(result.code ?? ''))) {
+      log.motions += 1;
+      for (const f of faults) {
+        if (f.kind === 'estop' && f.afterMotions === log.motions && !robot.emergencyStopped) {
+          await hal.safety.emergencyStop('operator pressed the emergency stop');
+          log.safetyEvents.push('estop engaged by the operator');
+        }
+      }
+    }
+    return result;
+  }
+
+  return { tools: inner.tools, execute, log };
+}

@@ -1,0 +1,75 @@
+import { BUILTIN_MAPS, parseMap, SeededRandom } from '@hal/simulation';
+import type { WorldMap } from '@hal/simulation';
+import { COLOURS } from './task-schema.js';
+import type { Task, TaskObject } from './task-schema.js';
+
+/** One member of a task's family: the world as a seed placed it. */
+export interface TaskVariant {
+  task: Task;
+  seed: number;
+  /** The map with the task's objects added as obstacles (after the map's own). */
+  map: WorldMap;
+  /** The objects where the seed put them. */
+  objects: TaskObject[];
+  /** The robot's start pose: metres and radians. */
+  start: { x: number; y: number; yaw: number };
+}
+
+/** A 32-bit seed for one task and one trial seed (FNV-1a over the id, mixed with the seed). */
+export function variantSeed(taskId: string, seed: number): number {
+  let h = 0x811c9dc5 ^ (seed >>> 0);
+  for (let i = 0; i < taskId.length; i += 1) {
+    h ^= taskId.charCodeAt(i);
+    h = Math.imul(h, 0x01000193) >>> 0;
+  }
+  return h >>> 0;
+}
+
+/** Rounds to 0.1 mm, so a variant is written down the same everywhere. */
+const mm = (v: number) => Math.round(v * 10_000) / 10_000;
+
+/** The member of `task`'s family picked by `seed`. */
+export function realiseTask(task: Task, seed: number): TaskVariant {
+  const random = new SeededRandom(variantSeed(task.id, seed));
+  const jitter = (range: number) => (range === 0 ? 0 : (random.next() * 2 - 1) * range);
+  const { startM, yawDeg, objectsM } = task.variants;
+  const start = {
+    x: mm(task.world.start.x + jitter(startM)),
+    y: mm(task.world.start.y + jitter(startM)),
+    yaw: ((task.world.start.yawDeg + jitter(yawDeg)) * Math.PI) / 180,
+  };
+  const objects = task.world.objects.map((o) => ({
+    ...o,
+    x: mm(o.x + jitter(objectsM)),
+    y: mm(o.y + jitter(objectsM)),
+  }));
+  const base = typeof task.world.map === 'string' ? BUILTIN_MAPS[task.world.map] : task.world.map;
+  const map = parseMap({
+    ...base,
+    obstacles: [
+      ...base.obstacles,
+      ...objects.map((o) =>
+        o.kind === 'box'
+          ? {
+              kind: 'box',
+              x: o.x,
+              y: o.y,
+              width: o.width,
+              depth: o.depth,
+              height: o.height,
+              color: COLOURS[o.colour],
+            }
+          : {
+              kind: 'cylinder',
+              x: o.x,
+              y: o.y,
+              radius: o.radius,
+              height: o.height,
+              color: COLOURS[o.colour],
+            },
+      ),
+    ],
+    starts: [start],
+  });
+  return { task, seed, map, objects, start };
+}
