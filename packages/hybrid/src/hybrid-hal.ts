@@ -1,4 +1,12 @@
-import { failureResult, HalBoundary, HalError, toHalError, V1_ROBOT } from '@hal/types';
+import {
+  failureResult,
+  HalBoundary,
+  HalError,
+  scoped,
+  silentLogger,
+  toHalError,
+  V1_ROBOT,
+} from '@hal/types';
 import type {
   CallName,
   CallParams,
@@ -8,6 +16,8 @@ import type {
   HALToolResult,
   HardwareAbstractionLayer,
   LocomotionInterface,
+  LogLevel,
+  PlanarPose,
   Pose,
   RobotConfig,
   SafetyInterface,
@@ -21,8 +31,8 @@ import {
   planar,
   relativeTo,
 } from './divergence.js';
-import type { Divergence, DivergenceTolerance, PlanarPose } from './divergence.js';
-import type { HybridHALOptions, HybridLogLevel, HybridLogger } from './options.js';
+import type { Divergence, DivergenceTolerance } from './divergence.js';
+import type { HybridHALOptions } from './options.js';
 import { createSafety } from './safety.js';
 import { createCommunication, createLocomotion, createVision } from './subsystems.js';
 
@@ -367,12 +377,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
     return { ...divergence };
   }
 
-  #log(level: HybridLogLevel, message: string, fields?: Record<string, unknown>): void {
-    const logger: HybridLogger | undefined = this.#options.logger;
-    try {
-      logger?.log(level, 'hal:hybrid', message, fields);
-    } catch {
-      // a broken logger must not break a call
-    }
+  #log(level: LogLevel, message: string, fields?: Record<string, unknown>): void {
+    scoped(this.#options.logger ?? silentLogger, 'hal:hybrid')[level](message, fields);
   }
 }

@@ -1,5 +1,5 @@
 import { errorMessage, NavigationError } from '../errors.js';
-import type { NavigationLogger } from '../errors.js';
+import type { ScopedLogger } from '@hal/types';
 import { AttemptError } from './llm-attempt-error.js';
 import { ChatCompletionsClient } from './llm-http.js';
 import { resolveLlmSettings } from './llm-options.js';
@@ -39,7 +39,7 @@ export class OpenAICompatibleProvider implements DecisionProvider {
   readonly #settings: LlmSettings;
   readonly #client: ChatCompletionsClient;
   readonly #system: string;
-  readonly #logger: NavigationLogger;
+  readonly #logger: ScopedLogger;
 
   constructor(options: OpenAICompatibleOptions = {}) {
     this.#settings = resolveLlmSettings(options);

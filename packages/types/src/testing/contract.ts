@@ -7,6 +7,7 @@ import type { HardwareAbstractionLayer } from '../interfaces.js';
 import { DeviceInfoSchema, PoseSchema, SafetyStatusSchema } from '../pose.js';
 import type { Pose } from '../pose.js';
 import { HALToolResultSchema } from '../result.js';
+import { angleDifference } from '../vocabulary/angle.js';
 import type { HALToolResult } from '../result.js';
 import { describeBoundaryContract } from './contract-boundary.js';
 import { describeCapabilityContract } from './contract-capabilities.js';
@@ -38,9 +39,7 @@ function expectSuccess(result: HALToolResult): void {
   expect(result.success, JSON.stringify(result)).toBe(true);
 }
 
-function angleDiff(a: number, b: number): number {
-  return Math.atan2(Math.sin(a - b), Math.cos(a - b));
-}
+const angleDiff = angleDifference;
 
 /**
  * The behaviour every {@link HardwareAbstractionLayer} must show, as a vitest suite: lifecycle,
