@@ -47,8 +47,11 @@ describe('World', () => {
   });
 
   it('keeps stepping, calls the other listeners and logs the error when a listener throws', () => {
-    const entries: Array<{ level: string; namespace: string; fields?: Record<string, unknown> }> =
-      [];
+    const entries: Array<{
+      level: string;
+      namespace: string;
+      fields: Record<string, unknown> | undefined;
+    }> = [];
     const world = new World({
       logger: {
         log: (level, namespace, _message, fields) => entries.push({ level, namespace, fields }),
