@@ -5,6 +5,7 @@ import {
   scoped,
   silentLogger,
   toHalError,
+  TypedEmitter,
   V1_ROBOT,
 } from '@hal/types';
 import type {
@@ -102,7 +103,9 @@ export class HybridHAL implements HardwareAbstractionLayer {
   readonly #boundary: HalBoundary;
   readonly #config: () => RobotConfig;
   readonly #now: () => number;
-  readonly #listeners = new Set<(event: DivergenceEvent) => void>();
+  readonly #events = new TypedEmitter<{ divergence: DivergenceEvent }>((_event, thrown) =>
+    this.#log('error', 'a divergence listener threw', { error: toHalError(thrown).message }),
+  );
   #ready = false;
   #initializing: Promise<void> | undefined;
   #starts: { physical: PlanarPose; twin: PlanarPose } | undefined;
@@ -288,10 +291,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
    * Returns a function that removes it. A listener that throws is logged and ignored.
    */
   onDivergence(listener: (event: DivergenceEvent) => void): () => void {
-    this.#listeners.add(listener);
-    return () => {
-      this.#listeners.delete(listener);
-    };
+    return this.#events.on('divergence', listener);
   }
 
   async #run<N extends CallName>(
@@ -366,13 +366,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
     this.#latest = divergence;
     if (divergence.exceeded) {
       this.#log('warn', `${call}: the twin diverged`, { ...divergence });
-      for (const listener of [...this.#listeners]) {
-        try {
-          listener({ call, divergence: { ...divergence }, physical, twin });
-        } catch (thrown) {
-          this.#log('error', 'a divergence listener threw', { error: toHalError(thrown).message });
-        }
-      }
+      this.#events.emit('divergence', { call, divergence: { ...divergence }, physical, twin });
     }
     return { ...divergence };
   }

@@ -1,7 +1,7 @@
 import { openConnection } from '@hal/nats';
 import type { NatsConnectionSource } from '@hal/nats';
 import { World } from '@hal/simulation';
-import { HalError, scoped, silentLogger, toHalError } from '@hal/types';
+import { HalError, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import { Fleet } from '../fleet.js';
 import type { FleetOptions } from '../fleet.js';
@@ -49,7 +49,7 @@ export class DeviceManager {
   readonly fleet: Fleet;
   readonly #devices = new Map<string, Managed>();
   readonly #worlds = new Map<string, World>();
-  readonly #listeners = new Map<keyof DeviceManagerEvents, Set<(e: never) => void>>();
+  readonly #events: TypedEmitter<DeviceManagerEvents>;
   readonly #log: ScopedLogger;
   readonly #options: DeviceManagerOptions;
   #nats: { source: NatsConnectionSource; close?: () => Promise<void> } | undefined;
@@ -61,6 +61,9 @@ export class DeviceManager {
     this.#options = options;
     const logger = options.logger ?? silentLogger;
     this.#log = scoped(logger, 'hal:fleet:devices');
+    this.#events = new TypedEmitter<DeviceManagerEvents>((event, error) =>
+      this.#log.error('a device event listener threw', { event, error: toHalError(error).message }),
+    );
     this.fleet = new Fleet([], { ...options.fleet, logger });
     if (options.natsConnection !== undefined) this.#nats = { source: options.natsConnection };
     const onNats = this.config.devices.find((d) => d.type === 'nats');
@@ -150,15 +153,12 @@ export class DeviceManager {
     });
   }
 
-  /** Calls `listener` on every `event`; returns the function that unsubscribes it. */
+  /**
+   * Calls `listener` on every `event`; returns the function that unsubscribes it. A listener that
+   * throws is logged and stops neither the other listeners nor the manager.
+   */
   on<E extends keyof DeviceManagerEvents>(event: E, listener: Listener<E>): () => void {
-    let set = this.#listeners.get(event);
-    if (set === undefined) {
-      set = new Set();
-      this.#listeners.set(event, set);
-    }
-    set.add(listener as (e: never) => void);
-    return () => set.delete(listener as (e: never) => void);
+    return this.#events.on(event, listener);
   }
 
   /**
@@ -252,7 +252,7 @@ export class DeviceManager {
   }
 
   #emit<E extends keyof DeviceManagerEvents>(event: E, payload: DeviceManagerEvents[E]): void {
-    for (const listener of this.#listeners.get(event) ?? []) (listener as Listener<E>)(payload);
+    this.#events.emit(event, payload);
   }
 
   /** One round for one device: connect if needed, read, and update online/offline. */

@@ -39,8 +39,6 @@ function expectSuccess(result: HALToolResult): void {
   expect(result.success, JSON.stringify(result)).toBe(true);
 }
 
-const angleDiff = angleDifference;
-
 /**
  * The behaviour every {@link HardwareAbstractionLayer} must show, as a vitest suite: lifecycle,
  * result shape, validation, e-stop gating, honest capabilities, and the pose after known motions
@@ -253,7 +251,7 @@ export function describeHalContract(name: string, options: HalContractOptions): 
           await ready();
           expectSuccess(await hal.locomotion.rotate('left', 90));
           let now = await pose();
-          expect(Math.abs(angleDiff(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
+          expect(Math.abs(angleDifference(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
           expect(Math.hypot(now.position.x, now.position.y)).toBeLessThan(posTol);
           expectSuccess(await hal.locomotion.moveForward(5));
           now = await pose();
@@ -266,7 +264,7 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         await ready();
         expectSuccess(await hal.locomotion.rotate('right', 90));
         const now = await pose();
-        expect(Math.abs(angleDiff(now.rotation.yaw, -Math.PI / 2))).toBeLessThan(yawTol);
+        expect(Math.abs(angleDifference(now.rotation.yaw, -Math.PI / 2))).toBeLessThan(yawTol);
       });
 
       it('moveTo(x, y, 0) arrives at the point', { timeout }, async () => {
