@@ -8,11 +8,11 @@ import {
   StepAccumulator,
   V1_GEOMETRY,
 } from '@hal/kinematics';
-import type { PlanarPose } from '@hal/kinematics';
+import type { PlanarPoseCm } from '@hal/kinematics';
 
 const left = new StepAccumulator();
 const right = new StepAccumulator();
-let pose: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 };
+let pose: PlanarPoseCm = { xCm: 0, yCm: 0, headingRad: 0 };
 let clockUs = 0;
 
 function run(label: string, leftCm: number, rightCm: number): void {

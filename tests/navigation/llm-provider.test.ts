@@ -173,6 +173,35 @@ describe('OpenAICompatibleProvider', () => {
     expect(s.requests).toHaveLength(3);
   });
 
+  it('waits as long as a 429 asks (retry-after-ms) before asking again', async () => {
+    const s = await serve([
+      {
+        status: 429,
+        body: '{"error":{"message":"slow down"}}',
+        headers: { 'retry-after-ms': '700' },
+      },
+      { content: JSON.stringify(valid) },
+    ]);
+    expect(await provider(s.baseUrl).decide(context(), signal())).toEqual(valid);
+    expect(s.requests).toHaveLength(2);
+    const [first, second] = s.requests;
+    // the provider's own pause after a first failure is 250 ms: 700 comes from the header
+    expect((second?.at ?? 0) - (first?.at ?? 0)).toBeGreaterThanOrEqual(650);
+  });
+
+  it('gives up at once on a 429 that asks for a wait longer than 30 s', async () => {
+    const s = await serve([
+      { status: 429, body: '{"error":{"message":"slow down"}}', headers: { 'retry-after': '120' } },
+      { content: JSON.stringify(valid) },
+    ]);
+    const error = await provider(s.baseUrl)
+      .decide(context(), signal())
+      .catch((e: unknown) => e);
+    expect((error as NavigationError).code).toBe('PROVIDER_ERROR');
+    expect((error as Error).message).toContain('asks to wait 120000 ms');
+    expect(s.requests).toHaveLength(1);
+  });
+
   it('does not retry after HTTP 401, and reports the status', async () => {
     const s = await serve([{ status: 401, body: '{"error":{"message":"bad key"}}' }]);
     const error = await provider(s.baseUrl)

@@ -13,7 +13,7 @@ import {
   V1_GEOMETRY,
   VelocityProfile,
 } from '@hal/kinematics';
-import type { PlanarPose } from '@hal/kinematics';
+import type { PlanarPoseCm } from '@hal/kinematics';
 
 function sampleIndices(n: number): number[] {
   const picks = new Set<number>([1, 2, 3, 10, Math.floor(n / 3), Math.floor(n / 2), n - 10, n - 2, n - 1, n]);
@@ -108,7 +108,7 @@ export function buildKinematicsVectors() {
       };
     }),
     odometry: odometry.map((deltas) => {
-      let pose: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 };
+      let pose: PlanarPoseCm = { xCm: 0, yCm: 0, headingRad: 0 };
       for (const [dl, dr] of deltas) pose = integrateOdometry(pose, dl, dr);
       return { deltas, x_cm: pose.xCm, y_cm: pose.yCm, heading_rad: pose.headingRad };
     }),

@@ -1,13 +1,8 @@
 import { availableParallelism } from 'node:os';
 import { basename } from 'node:path';
-import type {
-  AgentLogger,
-  ChatProvider,
-  ChatReply,
-  ChatRequest,
-  ChatTool,
-  ChatTurn,
-} from '@hal/agent';
+import type { ChatProvider, ChatReply, ChatRequest, ChatTool, ChatTurn } from '@hal/agent';
+import { scoped } from '@hal/types';
+import type { Logger } from '@hal/types';
 import { getLlama, LlamaChat, LlamaLogLevel } from 'node-llama-cpp';
 import type { Llama, LlamaContext, LlamaGrammar, LlamaModel } from 'node-llama-cpp';
 import { LocalModelError } from './errors.js';
@@ -40,7 +35,7 @@ export interface LocalChatProviderOptions {
   /** Longest answer text, characters. Default 240. */
   answerMaxLength?: number;
   /** llama.cpp's warnings and errors go here (never to the console). */
-  logger?: AgentLogger;
+  logger?: Logger;
   /** For the default model's location (XDG_CACHE_HOME). Default `process.env`. */
   env?: Readonly<Record<string, string | undefined>>;
 }
@@ -98,9 +93,10 @@ export async function createLocalChatProvider(
   const log = (level: LlamaLogLevel, message: string) => {
     const text = message.trim();
     if (text === '' || options.logger === undefined) return;
+    const logger = scoped(options.logger, 'hal:agent-local');
     if (level === LlamaLogLevel.error || level === LlamaLogLevel.fatal)
-      options.logger.error(text, { source: 'llama.cpp' });
-    else options.logger.warn(text, { source: 'llama.cpp' });
+      logger.error(text, { source: 'llama.cpp' });
+    else logger.warn(text, { source: 'llama.cpp' });
   };
   let llama: Llama;
   try {

@@ -55,19 +55,3 @@ export function errorWithCauses(error: unknown): string {
   const [first, ...rest] = parts;
   return rest.length === 0 ? (first ?? String(error)) : `${first} (${rest.join('; ')})`;
 }
-
-/** A logger the package writes through (it never uses the console). */
-export interface AgentLogger {
-  debug(message: string, fields?: Record<string, unknown>): void;
-  info(message: string, fields?: Record<string, unknown>): void;
-  warn(message: string, fields?: Record<string, unknown>): void;
-  error(message: string, fields?: Record<string, unknown>): void;
-}
-
-/** A logger that drops everything: the default. */
-export const SILENT_LOGGER: AgentLogger = Object.freeze({
-  debug: () => undefined,
-  info: () => undefined,
-  warn: () => undefined,
-  error: () => undefined,
-});

@@ -3,9 +3,9 @@ export type { AgentOutcome } from './agent-loop.js';
 export { DEFAULT_CAPS } from './options.js';
 export type { AgentCaps, AgentEndpoint, AgentToolExecutor, RunAgentOptions } from './options.js';
 export type { AgentDoneReason, AgentEvent, AgentEventListener } from './events.js';
-export { AgentError, SILENT_LOGGER } from './errors.js';
-export type { AgentErrorCode, AgentLogger } from './errors.js';
-export { DEFAULT_RETRY } from './retry.js';
+export { AgentError } from './errors.js';
+export type { AgentErrorCode } from './errors.js';
+export { DEFAULT_RETRY, retryableStatus } from './retry.js';
 export type { RetryPolicy } from './retry.js';
 export { AGENT_SYSTEM_PROMPT } from './prompt.js';
 export type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
@@ -18,3 +18,5 @@ export type {
   ContextTrimmed,
 } from './chat-provider.js';
 export type { RetryListener } from './chat-provider.js';
+export { postChatCompletion } from './chat-completions.js';
+export type { ChatEndpoint } from './chat-completions.js';

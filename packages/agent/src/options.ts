@@ -1,7 +1,8 @@
 import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { AgentError, SILENT_LOGGER } from './errors.js';
-import type { AgentLogger } from './errors.js';
+import { scoped, silentLogger } from '@hal/types';
+import type { Logger, ScopedLogger } from '@hal/types';
+import { AgentError } from './errors.js';
 import { openAIProvider } from './chat-client.js';
 import type { ChatClientSettings } from './chat-client.js';
 import type { ChatProvider } from './chat-provider.js';
@@ -67,7 +68,7 @@ export interface RunAgentOptions {
   maxTokens?: number;
   /** With `endpoint`: the fetch to use. Default the global one. */
   fetch?: typeof fetch;
-  logger?: AgentLogger;
+  logger?: Logger;
 }
 
 export const DEFAULT_CAPS: AgentCaps = Object.freeze({ maxSteps: 20, maxMs: 300_000 });
@@ -78,7 +79,7 @@ export interface AgentSettings {
   /** The model: the endpoint's client, or the caller's provider. */
   provider: ChatProvider;
   caps: AgentCaps;
-  logger: AgentLogger;
+  logger: ScopedLogger;
 }
 
 function positive(name: string, value: number, integer = false): number {
@@ -104,7 +105,12 @@ export function resolveSettings(options: RunAgentOptions): AgentSettings {
   if (provider !== undefined && typeof provider.complete !== 'function')
     throw new AgentError('CONFIG', '"provider" must have a complete() method');
   provider ??= openAIProvider(endpointSettings(options));
-  return { goal: options.goal, provider, caps, logger: options.logger ?? SILENT_LOGGER };
+  return {
+    goal: options.goal,
+    provider,
+    caps,
+    logger: scoped(options.logger ?? silentLogger, 'hal:agent'),
+  };
 }
 
 /** The OpenAI-compatible client's settings, checked. */

@@ -1,7 +1,6 @@
 // The HAL's warnings and errors, written to stderr: as text for people, or as one JSON line each
 // with --json (so stderr stays parseable). Debug and info are dropped.
-import type { NatsLogger } from '@hal/nats';
-import type { Logger } from '@hal/physical';
+import type { Logger } from '@hal/types';
 import type { CliIO } from './io.js';
 
 export function cliLogger(io: CliIO, json: boolean): Logger {
@@ -14,16 +13,5 @@ export function cliLogger(io: CliIO, json: boolean): Logger {
           : `${level} ${namespace} ${message}\n`,
       );
     },
-  };
-}
-
-/** The same, in @hal/nats's logger shape. */
-export function cliNatsLogger(io: CliIO, json: boolean): NatsLogger {
-  const log = cliLogger(io, json);
-  return {
-    debug: () => undefined,
-    info: () => undefined,
-    warn: (message) => log.log('warn', 'hal:nats', message),
-    error: (message) => log.log('error', 'hal:nats', message),
   };
 }

@@ -8,7 +8,7 @@ import { SimulationHAL, World } from '@hal/simulation';
 import { HalError, isHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { CliIO } from './io.js';
-import { cliLogger, cliNatsLogger } from './logger.js';
+import { cliLogger } from './logger.js';
 import { DEFAULT_CONNECT_TIMEOUT_MS, describeTarget } from './target.js';
 import type { Target } from './target.js';
 
@@ -130,7 +130,7 @@ async function build(
         connection: nc,
         ...(target.deviceId === undefined ? {} : { deviceId: target.deviceId }),
         clientId: `hal-cli-${process.pid}`,
-        logger: cliNatsLogger(io, options.json === true),
+        logger: cliLogger(io, options.json === true),
       });
       return {
         hal,

@@ -4,7 +4,7 @@ import { randomBytes } from 'node:crypto';
 import { afterEach, describe, expect, it } from 'vitest';
 import { Bonjour } from 'bonjour-service';
 import { HalError } from '@hal/types';
-import type { Logger } from '@hal/physical';
+import type { Logger } from '@hal/types';
 import { announceRobot } from './announce.js';
 import type { Announcer } from './announce.js';
 import { discoverRobots, findRobot } from './discover.js';

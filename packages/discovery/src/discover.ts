@@ -1,9 +1,8 @@
 // Finding robots: browse `_hal-cube._udp` for a while, check every answer's TXT record, and return
 // the robots that announced themselves correctly. A malformed record is skipped and logged.
 import type { Service } from 'bonjour-service';
-import { HalError } from '@hal/types';
-import { scoped, silentLogger } from '@hal/physical';
-import type { Logger } from '@hal/physical';
+import { HalError, scoped, silentLogger } from '@hal/types';
+import type { Logger } from '@hal/types';
 import { isOnThisMachine } from './local-address.js';
 import { openMdns } from './mdns-socket.js';
 import type { MdnsOptions } from './mdns-socket.js';

@@ -1,10 +1,8 @@
-import { HalError } from '@hal/types';
-import type { HardwareAbstractionLayer } from '@hal/types';
+import { HalError, scoped, silentLogger } from '@hal/types';
+import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import type { FleetCommand } from './commands.js';
 import { LeaderFollower } from './leader-follower.js';
 import type { LeaderFollowerOptions } from './leader-follower-options.js';
-import { silentFleetLogger } from './logger.js';
-import type { FleetLogger } from './logger.js';
 import { checkDeviceId, selectMembers } from './members.js';
 import type { FleetMember } from './members.js';
 import type { FleetReport, MemberResult } from './report.js';
@@ -22,7 +20,7 @@ import type { MemberCall, SynchronizedOptions } from './synchronized.js';
 export interface FleetOptions {
   /** The clock of every wait and of the leader-follower loop. Default the wall clock. */
   scheduler?: FleetScheduler;
-  logger?: FleetLogger;
+  logger?: Logger;
   /** Default per-member wait of a synchronized or independent call, ms. Default 60000. */
   callTimeoutMs?: number;
   /** Per-member wait of the fleet e-stop, ms. Default 2000. */
@@ -40,7 +38,7 @@ export interface FleetOptions {
  */
 export class Fleet {
   readonly scheduler: FleetScheduler;
-  readonly #logger: FleetLogger;
+  readonly #logger: ScopedLogger;
   readonly #callTimeoutMs: number;
   readonly #estopTimeoutMs: number;
   readonly #members = new Map<string, FleetMember>();
@@ -49,7 +47,7 @@ export class Fleet {
 
   constructor(members: Iterable<FleetMember> = [], options: FleetOptions = {}) {
     this.scheduler = options.scheduler ?? realTimeScheduler;
-    this.#logger = options.logger ?? silentFleetLogger;
+    this.#logger = scoped(options.logger ?? silentLogger, 'hal:fleet');
     this.#callTimeoutMs = checkTimeout(options.callTimeoutMs, DEFAULT_CALL_TIMEOUT_MS);
     this.#estopTimeoutMs = checkTimeout(options.estopTimeoutMs, 2000);
     for (const member of members) this.add(member);

@@ -1,16 +1,10 @@
-import { HalError } from '@hal/types';
+import { angleDifference, HalError } from '@hal/types';
+import type { PlanarPose } from '@hal/types';
 
 /** Where a follower keeps station, metres, in the leader's frame (REP-103: x ahead, y left). */
 export interface FormationOffset {
   x: number;
   y: number;
-}
-
-/** A planar pose, metres and radians (world frame). */
-export interface PlanarPose {
-  x: number;
-  y: number;
-  yaw: number;
 }
 
 /** Named formations: `column` (single file behind), `line` (abreast), `wedge` (a V behind). */
@@ -68,12 +62,6 @@ export type FollowerAction =
   | { kind: 'moveTo'; x: number; y: number }
   | { kind: 'rotate'; direction: 'left' | 'right'; degrees: number };
 
-/** Wraps an angle to (-pi, pi]. */
-function wrap(angle: number): number {
-  const a = Math.atan2(Math.sin(angle), Math.cos(angle));
-  return a === -Math.PI ? Math.PI : a;
-}
-
 /**
  * The follower's next action: drive to its slot when farther than `toleranceM`, else (when
  * `alignHeading`) turn in place to the leader's heading when off by more than
@@ -91,7 +79,7 @@ export function decideFollowerAction(input: {
   if (Math.hypot(slot.x - pose.x, slot.y - pose.y) > input.toleranceM) {
     return { kind: 'moveTo', x: slot.x, y: slot.y };
   }
-  const error = wrap(input.leaderYaw - pose.yaw);
+  const error = angleDifference(input.leaderYaw, pose.yaw);
   if (input.alignHeading && Math.abs(error) > input.headingToleranceRad) {
     return {
       kind: 'rotate',

@@ -33,9 +33,7 @@ export {
   formationOffsets,
   slotPosition,
 } from './formation.js';
-export type { FollowerAction, FormationOffset, FormationShape, PlanarPose } from './formation.js';
+export type { FollowerAction, FormationOffset, FormationShape } from './formation.js';
 
 export { SteppedScheduler, realTimeScheduler } from './scheduler.js';
 export type { FleetScheduler } from './scheduler.js';
-export { silentFleetLogger } from './logger.js';
-export type { FleetLogger } from './logger.js';

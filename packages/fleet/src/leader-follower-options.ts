@@ -1,6 +1,7 @@
 import { HalError } from '@hal/types';
 import type { HALToolResult } from '@hal/types';
-import type { FormationOffset, PlanarPose } from './formation.js';
+import type { PlanarPose } from '@hal/types';
+import type { FormationOffset } from './formation.js';
 
 /** How a leader-follower formation is run. Distances in metres, times in ms on the fleet clock. */
 export interface LeaderFollowerOptions {

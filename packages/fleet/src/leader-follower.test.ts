@@ -1,4 +1,5 @@
 import { SimulationHAL, World } from '@hal/simulation';
+import { angleDifference } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { Fleet } from './fleet.js';
 import { formationOffsets } from './formation.js';
@@ -42,9 +43,7 @@ describe('leader-follower mode (simulated time)', () => {
     const slotX = leader.position.x + Math.cos(yaw) * o.x - Math.sin(yaw) * o.y;
     const slotY = leader.position.y + Math.sin(yaw) * o.x + Math.cos(yaw) * o.y;
     expect(Math.hypot(r1.position.x - slotX, r1.position.y - slotY)).toBeLessThan(0.03);
-    expect(
-      Math.abs(Math.atan2(Math.sin(r1.rotation.yaw - yaw), Math.cos(r1.rotation.yaw - yaw))),
-    ).toBeLessThan((10 * Math.PI) / 180);
+    expect(Math.abs(angleDifference(r1.rotation.yaw, yaw))).toBeLessThan((10 * Math.PI) / 180);
     expect(formation.running).toBe(false);
   });
 

@@ -1,14 +1,15 @@
 import {
+  angleDifference,
   HalError,
   V1_ROBOT,
   maxLinearSpeedMPerS,
   minLinearSpeedMPerS,
   toHalError,
 } from '@hal/types';
-import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import type { HALToolResult, HardwareAbstractionLayer, PlanarPose, ScopedLogger } from '@hal/types';
 import { callWithTimeout } from './call-with-timeout.js';
 import { decideFollowerAction, slotPosition } from './formation.js';
-import type { FollowerAction, PlanarPose } from './formation.js';
+import type { FollowerAction } from './formation.js';
 import { resolveOptions } from './leader-follower-options.js';
 import type {
   FollowerReport,
@@ -17,7 +18,6 @@ import type {
   LeaderFollowerOptions,
   ResolvedOptions,
 } from './leader-follower-options.js';
-import type { FleetLogger } from './logger.js';
 import { selectMembers } from './members.js';
 import type { FleetMember } from './members.js';
 import { readPose } from './read-pose.js';
@@ -43,7 +43,7 @@ export class LeaderFollower {
   readonly #leader: FleetMember;
   readonly #followers: FleetMember[];
   readonly #scheduler: FleetScheduler;
-  readonly #logger: FleetLogger;
+  readonly #logger: ScopedLogger;
   readonly #busy = new Map<string, Busy>();
   readonly #lastResult = new Map<string, HALToolResult>();
   readonly #lastPose = new Map<string, PlanarPose>();
@@ -62,7 +62,7 @@ export class LeaderFollower {
     members: readonly FleetMember[],
     options: LeaderFollowerOptions,
     scheduler: FleetScheduler,
-    logger: FleetLogger,
+    logger: ScopedLogger,
   ) {
     this.#o = resolveOptions(options);
     const followerIds = Object.keys(this.#o.formation);
@@ -224,10 +224,7 @@ export class LeaderFollower {
   #noteLeader(pose: PlanarPose): void {
     this.#leaderPose = pose;
     const ref = this.#leaderRef;
-    const turned =
-      ref === undefined
-        ? 0
-        : Math.abs(Math.atan2(Math.sin(pose.yaw - ref.yaw), Math.cos(pose.yaw - ref.yaw)));
+    const turned = ref === undefined ? 0 : Math.abs(angleDifference(pose.yaw, ref.yaw));
     if (
       ref === undefined ||
       Math.hypot(pose.x - ref.x, pose.y - ref.y) > 0.001 ||

@@ -1,6 +1,6 @@
 import { HalError, toHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import type { PlanarPose } from './formation.js';
+import type { PlanarPose } from '@hal/types';
 import type { FleetScheduler } from './scheduler.js';
 
 /**

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { composePose, divergenceBetween, normalizeAngle, relativeTo } from './divergence.js';
+import { composePose, divergenceBetween, relativeTo } from './divergence.js';
 
 const tolerance = { positionToleranceM: 0.005, yawToleranceRad: 0.0175 };
 
@@ -32,14 +32,6 @@ describe('divergenceBetween', () => {
     expect(
       divergenceBetween({ x: 0, y: 0, yaw: 0 }, { x: 0, y: 0, yaw: -0.02 }, tolerance),
     ).toMatchObject({ exceeded: true });
-  });
-});
-
-describe('normalizeAngle', () => {
-  it('maps angles to (-pi, pi]', () => {
-    expect(normalizeAngle(-Math.PI)).toBe(Math.PI);
-    expect(normalizeAngle(3 * Math.PI)).toBeCloseTo(Math.PI, 12);
-    expect(normalizeAngle(-Math.PI / 2 - 2 * Math.PI)).toBeCloseTo(-Math.PI / 2, 12);
   });
 });
 

@@ -1,4 +1,5 @@
-import type { Pose } from '@hal/types';
+import { normalizeAngle } from '@hal/types';
+import type { PlanarPose, Pose } from '@hal/types';
 
 /** How far the twin may drift from the physical robot before it counts as diverged. */
 export interface DivergenceTolerance {
@@ -28,22 +29,9 @@ export interface Divergence {
   exceeded: boolean;
 }
 
-/** A planar pose: metres and radians. */
-export interface PlanarPose {
-  x: number;
-  y: number;
-  yaw: number;
-}
-
 /** The planar part of a HAL pose. */
 export function planar(pose: Pose): PlanarPose {
   return { x: pose.position.x, y: pose.position.y, yaw: pose.rotation.yaw };
-}
-
-/** An angle normalised to (-pi, pi]. */
-export function normalizeAngle(angle: number): number {
-  const wrapped = Math.atan2(Math.sin(angle), Math.cos(angle));
-  return wrapped === -Math.PI ? Math.PI : wrapped;
 }
 
 /** `pose` expressed in the frame of `start` (where the robot stood, facing its start heading). */

@@ -1,4 +1,13 @@
-import { failureResult, HalBoundary, HalError, toHalError, V1_ROBOT } from '@hal/types';
+import {
+  failureResult,
+  HalBoundary,
+  HalError,
+  scoped,
+  silentLogger,
+  toHalError,
+  TypedEmitter,
+  V1_ROBOT,
+} from '@hal/types';
 import type {
   CallName,
   CallParams,
@@ -8,6 +17,8 @@ import type {
   HALToolResult,
   HardwareAbstractionLayer,
   LocomotionInterface,
+  LogLevel,
+  PlanarPose,
   Pose,
   RobotConfig,
   SafetyInterface,
@@ -21,8 +32,8 @@ import {
   planar,
   relativeTo,
 } from './divergence.js';
-import type { Divergence, DivergenceTolerance, PlanarPose } from './divergence.js';
-import type { HybridHALOptions, HybridLogLevel, HybridLogger } from './options.js';
+import type { Divergence, DivergenceTolerance } from './divergence.js';
+import type { HybridHALOptions } from './options.js';
 import { createSafety } from './safety.js';
 import { createCommunication, createLocomotion, createVision } from './subsystems.js';
 
@@ -92,7 +103,9 @@ export class HybridHAL implements HardwareAbstractionLayer {
   readonly #boundary: HalBoundary;
   readonly #config: () => RobotConfig;
   readonly #now: () => number;
-  readonly #listeners = new Set<(event: DivergenceEvent) => void>();
+  readonly #events = new TypedEmitter<{ divergence: DivergenceEvent }>((_event, thrown) =>
+    this.#log('error', 'a divergence listener threw', { error: toHalError(thrown).message }),
+  );
   #ready = false;
   #initializing: Promise<void> | undefined;
   #starts: { physical: PlanarPose; twin: PlanarPose } | undefined;
@@ -278,10 +291,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
    * Returns a function that removes it. A listener that throws is logged and ignored.
    */
   onDivergence(listener: (event: DivergenceEvent) => void): () => void {
-    this.#listeners.add(listener);
-    return () => {
-      this.#listeners.delete(listener);
-    };
+    return this.#events.on('divergence', listener);
   }
 
   async #run<N extends CallName>(
@@ -356,23 +366,12 @@ export class HybridHAL implements HardwareAbstractionLayer {
     this.#latest = divergence;
     if (divergence.exceeded) {
       this.#log('warn', `${call}: the twin diverged`, { ...divergence });
-      for (const listener of [...this.#listeners]) {
-        try {
-          listener({ call, divergence: { ...divergence }, physical, twin });
-        } catch (thrown) {
-          this.#log('error', 'a divergence listener threw', { error: toHalError(thrown).message });
-        }
-      }
+      this.#events.emit('divergence', { call, divergence: { ...divergence }, physical, twin });
     }
     return { ...divergence };
   }
 
-  #log(level: HybridLogLevel, message: string, fields?: Record<string, unknown>): void {
-    const logger: HybridLogger | undefined = this.#options.logger;
-    try {
-      logger?.log(level, 'hal:hybrid', message, fields);
-    } catch {
-      // a broken logger must not break a call
-    }
+  #log(level: LogLevel, message: string, fields?: Record<string, unknown>): void {
+    scoped(this.#options.logger ?? silentLogger, 'hal:hybrid')[level](message, fields);
   }
 }

@@ -1,21 +1,5 @@
-import type { HardwareAbstractionLayer, RobotConfig } from '@hal/types';
+import type { HardwareAbstractionLayer, Logger, RobotConfig } from '@hal/types';
 import type { DivergenceTolerance } from './divergence.js';
-
-/** Log levels, least to most severe. */
-export type HybridLogLevel = 'debug' | 'info' | 'warn' | 'error';
-
-/**
- * Where the hybrid HAL writes what it does (namespace `hal:hybrid`). The same shape as
- * `@hal/physical`'s `Logger`, so one logger serves both. Default: drop everything.
- */
-export interface HybridLogger {
-  log(
-    level: HybridLogLevel,
-    namespace: string,
-    message: string,
-    fields?: Record<string, unknown>,
-  ): void;
-}
 
 /** What a {@link HybridHAL} is made of. */
 export interface HybridHALOptions {
@@ -25,8 +9,8 @@ export interface HybridHALOptions {
   twin: HardwareAbstractionLayer;
   /** When the twin counts as diverged. Default 5 mm and 1 degree. */
   divergence?: Partial<DivergenceTolerance>;
-  /** Where to log. Default silent. */
-  logger?: HybridLogger;
+  /** Where to log (namespace `hal:hybrid`). Default silent. */
+  logger?: Logger;
   /** The id `getDeviceInfo()` reports. Default the physical robot's id. */
   deviceId?: string;
   /**

@@ -15,5 +15,5 @@ export type { WheelPair } from './steps.js';
 export { calculateMoveDuration, toMicros, TrapezoidalProfile, VelocityProfile } from './profile.js';
 export { MovePlan, VelocityPlan } from './planner.js';
 export type { StepPlan } from './planner.js';
-export { integrateOdometry, normalizeAngle, OdometryIntegrator } from './odometry.js';
-export type { PlanarPose } from './odometry.js';
+export { integrateOdometry, OdometryIntegrator } from './odometry.js';
+export type { PlanarPoseCm } from './odometry.js';

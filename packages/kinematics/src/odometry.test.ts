@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { getStepsPerCm } from './geometry.js';
-import { integrateOdometry, normalizeAngle, OdometryIntegrator } from './odometry.js';
+import { integrateOdometry, OdometryIntegrator } from './odometry.js';
 import { rotationToSteps } from './steps.js';
 
 const origin = { xCm: 0, yCm: 0, headingRad: 0 };
@@ -37,14 +37,6 @@ describe('integrateOdometry (REP-103)', () => {
     const batch = integrateOdometry(origin, 1000, 2000);
     expect(stepwise.xCm).toBeCloseTo(batch.xCm, 9);
     expect(stepwise.yCm).toBeCloseTo(batch.yCm, 9);
-  });
-});
-
-describe('normalizeAngle', () => {
-  it('wraps into (-pi, pi]', () => {
-    expect(normalizeAngle(3 * Math.PI)).toBeCloseTo(Math.PI, 12);
-    expect(normalizeAngle(-Math.PI)).toBe(Math.PI);
-    expect(normalizeAngle(-Math.PI / 2)).toBeCloseTo(-Math.PI / 2, 12);
   });
 });
 

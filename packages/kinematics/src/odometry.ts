@@ -1,19 +1,17 @@
+import { normalizeAngle } from '@hal/types';
 import { getStepsPerCm, V1_GEOMETRY } from './geometry.js';
 import type { RobotGeometry } from './geometry.js';
 
-/** A planar pose in the REP-103 frame: x forward, y left (cm), heading counter-clockwise (rad). */
-export interface PlanarPose {
+/**
+ * A planar pose in centimetres, as the firmware's odometry keeps it: REP-103 frame, x forward,
+ * y left (cm), heading counter-clockwise (rad). The HAL's own pose in metres is `PlanarPose` in
+ * `@hal/types`.
+ */
+export interface PlanarPoseCm {
   xCm: number;
   yCm: number;
   /** Radians, (-pi, pi]. */
   headingRad: number;
-}
-
-/** Wraps an angle to (-pi, pi]. */
-export function normalizeAngle(angle: number): number {
-  let a = Math.atan2(Math.sin(angle), Math.cos(angle));
-  if (a <= -Math.PI) a = Math.PI;
-  return a;
 }
 
 /**
@@ -21,11 +19,11 @@ export function normalizeAngle(angle: number): number {
  * formula: `ds = (dl + dr) / 2`, `dth = (dr - dl) / B`, straight when `|dth| < 1e-12`).
  */
 export function integrateOdometry(
-  pose: PlanarPose,
+  pose: PlanarPoseCm,
   leftSteps: number,
   rightSteps: number,
   geometry: RobotGeometry = V1_GEOMETRY,
-): PlanarPose {
+): PlanarPoseCm {
   const perCm = getStepsPerCm(geometry);
   const dl = leftSteps / perCm;
   const dr = rightSteps / perCm;
@@ -45,14 +43,14 @@ export function integrateOdometry(
 
 /** Dead reckoning from absolute step counters (as `get_status` reports them). */
 export class OdometryIntegrator {
-  #pose: PlanarPose;
+  #pose: PlanarPoseCm;
   #left: number;
   #right: number;
   readonly #geometry: RobotGeometry;
 
   constructor(
     geometry: RobotGeometry = V1_GEOMETRY,
-    start: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 },
+    start: PlanarPoseCm = { xCm: 0, yCm: 0, headingRad: 0 },
     leftSteps = 0,
     rightSteps = 0,
   ) {
@@ -63,7 +61,7 @@ export class OdometryIntegrator {
   }
 
   /** Integrates the steps made since the last update, given the absolute counters now. */
-  update(leftSteps: number, rightSteps: number): PlanarPose {
+  update(leftSteps: number, rightSteps: number): PlanarPoseCm {
     const dl = leftSteps - this.#left;
     const dr = rightSteps - this.#right;
     if (dl !== 0 || dr !== 0) this.#pose = integrateOdometry(this.#pose, dl, dr, this.#geometry);
@@ -72,13 +70,13 @@ export class OdometryIntegrator {
     return this.pose;
   }
 
-  get pose(): PlanarPose {
+  get pose(): PlanarPoseCm {
     return { ...this.#pose };
   }
 
   /** Restarts from a pose and counters. */
   reset(
-    start: PlanarPose = { xCm: 0, yCm: 0, headingRad: 0 },
+    start: PlanarPoseCm = { xCm: 0, yCm: 0, headingRad: 0 },
     leftSteps = 0,
     rightSteps = 0,
   ): void {

@@ -1,5 +1,19 @@
-import { HalError, V1_ROBOT, isHalError, sanitizeEstopReason, toHalError } from '@hal/types';
-import type { HalErrorPayload, HardwareAbstractionLayer, RobotConfig } from '@hal/types';
+import {
+  HalError,
+  V1_ROBOT,
+  isHalError,
+  sanitizeEstopReason,
+  scoped,
+  silentLogger,
+  toHalError,
+} from '@hal/types';
+import type {
+  HalErrorPayload,
+  HardwareAbstractionLayer,
+  Logger,
+  RobotConfig,
+  ScopedLogger,
+} from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
 import { decodeArgs, decodeMessage, decodeSpecMessage, encodeMessage } from './codec.js';
 import { CommandQueue } from './command-queue.js';
@@ -12,8 +26,6 @@ import { wheelPowersFor } from './drive-mapping.js';
 import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
 import { HAL_CALLS } from './hal-calls.js';
 import { jpegSize } from './jpeg-size.js';
-import type { NatsLogger } from './logger.js';
-import { silentNatsLogger } from './logger.js';
 import {
   CameraFrameRequestSchema,
   DifferentialCommandSchema,
@@ -47,7 +59,7 @@ export type GatewayOptions = NatsConnectionSource & {
   announceIntervalMs?: number;
   /** Geometry and limits for mapping body velocities onto wheels. Default the V1 robot. */
   robot?: RobotConfig;
-  logger?: NatsLogger;
+  logger?: Logger;
 };
 
 /** A HAL served on NATS. The HAL stays the caller's: `close()` does not clean it up. */
@@ -95,7 +107,7 @@ class Gateway implements HalGateway {
   readonly #started = Date.now();
   readonly #isDefault: boolean;
   readonly #robot: RobotConfig;
-  readonly #log: NatsLogger;
+  readonly #log: ScopedLogger;
   readonly #watchdog: ControllerWatchdog;
   readonly #cpu = new CpuMeter();
   #streaming = false;
@@ -110,7 +122,7 @@ class Gateway implements HalGateway {
     this.deviceId = options.deviceId;
     this.#isDefault = options.defaultDevice ?? true;
     this.#robot = options.robot ?? V1_ROBOT;
-    this.#log = options.logger ?? silentNatsLogger;
+    this.#log = scoped(options.logger ?? silentLogger, 'hal:nats:gateway');
     subjectFor('call', this.deviceId); // refuses a bad device id before anything is served
     this.#watchdog = new ControllerWatchdog(options.controllerTimeoutMs ?? 3000, (client) => {
       this.#log.warn('controller went quiet during an open-ended drive: stopping', { client });

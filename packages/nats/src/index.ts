@@ -43,5 +43,3 @@ export type {
   RangeData,
   RangeSummary,
 } from './messages.js';
-export { silentNatsLogger } from './logger.js';
-export type { NatsLogger } from './logger.js';

@@ -4,8 +4,12 @@ import {
   failureResult,
   sanitizeEstopReason,
   successResult,
+  scoped,
+  silentLogger,
 } from '@hal/types';
 import type {
+  Logger,
+  ScopedLogger,
   CommunicationInterface,
   DeviceInfo,
   HALLogLevel,
@@ -25,8 +29,6 @@ import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
 import { DeviceLink } from './device-link.js';
 import { errorFromPayload } from './device-link.js';
-import type { NatsLogger } from './logger.js';
-import { silentNatsLogger } from './logger.js';
 import {
   CapabilityAnnouncementSchema,
   DifferentialStateSchema,
@@ -52,7 +54,7 @@ export type NatsHALOptions = NatsConnectionSource & {
    * controller that goes quiet). Default 1000.
    */
   heartbeatMs?: number;
-  logger?: NatsLogger;
+  logger?: Logger;
 };
 
 let sequence = 0;
@@ -85,7 +87,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
   readonly safety: SafetyInterface;
   readonly #options: NatsHALOptions;
   readonly #clientId: string;
-  readonly #log: NatsLogger;
+  readonly #log: ScopedLogger;
   #link: DeviceLink | undefined;
   #nc: { nc: NatsConnection; owned: boolean } | undefined;
   #ready = false;
@@ -105,7 +107,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
   constructor(options: NatsHALOptions) {
     this.#options = options;
     this.#clientId = options.clientId ?? `nats-hal-${process.pid}-${(sequence += 1)}`;
-    this.#log = options.logger ?? silentNatsLogger;
+    this.#log = scoped(options.logger ?? silentLogger, 'hal:nats:hal');
     if (options.deviceId !== undefined) subjectFor('call', options.deviceId); // checks the id
     this.#info = {
       id: options.deviceId ?? 'default',

@@ -22,8 +22,8 @@ export type { PathPlan, PlanOptions } from './planner/grid-planner.js';
 export { lineOfSight, simplifyPath } from './planner/line-of-sight.js';
 export { ObstacleMap } from './planner/obstacle-map.js';
 
-export { NavigationError, SILENT_LOGGER } from './errors.js';
-export type { NavigationErrorCode, NavigationLogger } from './errors.js';
+export { NavigationError } from './errors.js';
+export type { NavigationErrorCode } from './errors.js';
 
 export {
   NavigationDecisionSchema,

@@ -28,9 +28,6 @@ export { MockRobot } from './mock/mock-robot.js';
 export type { MockRobotOptions } from './mock/mock-robot.js';
 export type { MockTransportOptions } from './mock/mock-transport.js';
 
-export type { Logger, LogLevel, ScopedLogger } from './logger.js';
-export { scoped, silentLogger } from './logger.js';
-
 export { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS, ReplyMatcher } from './transport/transport.js';
 export type {
   RequestOptions,

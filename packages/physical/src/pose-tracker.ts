@@ -1,5 +1,6 @@
-import { MovePlan, normalizeAngle, OdometryIntegrator, VelocityPlan } from '@hal/kinematics';
+import { MovePlan, OdometryIntegrator, VelocityPlan } from '@hal/kinematics';
 import type { StepPlan } from '@hal/kinematics';
+import { normalizeAngle } from '@hal/types';
 import type { Pose, RobotConfig } from '@hal/types';
 import type { Command, MotionReply, StatusReply } from './protocol/schemas.js';
 

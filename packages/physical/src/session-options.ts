@@ -1,4 +1,4 @@
-import type { Logger } from './logger.js';
+import type { Logger } from '@hal/types';
 import type { MessageCodec } from './protocol/codec.js';
 import type { Command, HelloReply } from './protocol/schemas.js';
 import type { SafetyLaneTiming } from './safety-lane.js';

@@ -1,6 +1,6 @@
 import { HalError, isHalError } from '@hal/types';
-import { scoped } from './logger.js';
-import type { ScopedLogger } from './logger.js';
+import { scoped } from '@hal/types';
+import type { ScopedLogger } from '@hal/types';
 import type { WireReply } from './protocol/codec.js';
 import { helloUnanswered, randomNonce, robotError } from './session-errors.js';
 import type { SessionOptions, SessionState } from './session-options.js';

@@ -26,5 +26,3 @@ export type {
   StatePayload,
   ValueCallName,
 } from './protocol.js';
-export { silentRemoteLogger } from './logger.js';
-export type { RemoteLogLevel, RemoteLogger } from './logger.js';

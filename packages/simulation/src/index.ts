@@ -2,13 +2,12 @@ export { SimulationHAL } from './hal/simulation-hal.js';
 export type { CommunicationEvent, SimulationHALEvents } from './hal/events.js';
 export type {
   FrameSource,
-  SimLogger,
   SimulatedFeatures,
   SimulationClock,
   SimulationHALOptions,
 } from './hal/options.js';
 
-export { Emitter, World } from './world.js';
+export { World } from './world.js';
 export type { AddRobotOptions, RealtimeOptions, WorldEvents, WorldOptions } from './world.js';
 
 export { SimRobot } from './robot/sim-robot.js';

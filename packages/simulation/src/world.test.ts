@@ -46,6 +46,33 @@ describe('World', () => {
     vi.useRealTimers();
   });
 
+  it('keeps stepping, calls the other listeners and logs the error when a listener throws', () => {
+    const entries: Array<{
+      level: string;
+      namespace: string;
+      fields: Record<string, unknown> | undefined;
+    }> = [];
+    const world = new World({
+      logger: {
+        log: (level, namespace, _message, fields) => entries.push({ level, namespace, fields }),
+      },
+    });
+    const ticks: number[] = [];
+    world.events.on('tick', () => {
+      throw new Error('broken listener');
+    });
+    world.events.on('tick', (t) => ticks.push(t));
+    expect(() => world.step()).not.toThrow();
+    world.step();
+    expect(ticks).toEqual([1000, 2000]);
+    expect(entries).toHaveLength(2);
+    expect(entries[0]).toMatchObject({
+      level: 'error',
+      namespace: 'hal:simulation:world',
+      fields: { event: 'tick', error: 'broken listener' },
+    });
+  });
+
   it('stops a robot at the arena wall and reports the contact point', () => {
     const world = new World();
     const robot = world.addRobot();

@@ -1,5 +1,5 @@
-import { HalError } from '@hal/types';
-import type { RobotConfig } from '@hal/types';
+import { HalError, scoped, TypedEmitter } from '@hal/types';
+import type { Logger, RobotConfig } from '@hal/types';
 import { parseMap } from './map.js';
 import type { WorldMap, WorldMapInput } from './map.js';
 import { BUILTIN_MAPS } from './maps/index.js';
@@ -17,33 +17,6 @@ import { contactAmong, freeSpaceAmong, ROOM_HORIZON_US } from './world-contacts.
 const INDEX_MIN_ROBOTS = 32;
 /** An index is rebuilt when it is older than this, µs (it bounds how far robots have moved). */
 const INDEX_MAX_AGE_US = 1_000_000;
-
-/** Listener bookkeeping for a few named events (no Node dependency, works in the browser). */
-export class Emitter<Events extends Record<string, unknown>> {
-  readonly #listeners = new Map<keyof Events, Set<(payload: never) => void>>();
-
-  /** Calls `listener` on every `event`; returns the function that unsubscribes it. */
-  on<E extends keyof Events>(event: E, listener: (payload: Events[E]) => void): () => void {
-    let set = this.#listeners.get(event);
-    if (set === undefined) {
-      set = new Set();
-      this.#listeners.set(event, set);
-    }
-    set.add(listener as (payload: never) => void);
-    return () => set.delete(listener as (payload: never) => void);
-  }
-
-  /** Whether anyone listens to `event`. */
-  has(event: keyof Events): boolean {
-    return (this.#listeners.get(event)?.size ?? 0) > 0;
-  }
-
-  emit<E extends keyof Events>(event: E, payload: Events[E]): void {
-    const set = this.#listeners.get(event);
-    if (set === undefined) return;
-    for (const listener of set) (listener as (p: Events[E]) => void)(payload);
-  }
-}
 
 /** What a {@link World} reports to whoever listens (a UI, a recorder, a test). */
 export interface WorldEvents extends Record<string, unknown> {
@@ -64,6 +37,11 @@ export interface WorldOptions {
   seed?: number;
   /** Simulated time per step, µs. Default 1000 (1 ms). */
   tickUs?: number;
+  /**
+   * Where a listener that throws is reported (namespace `hal:simulation:world`, level error); the
+   * world goes on either way. Default silent.
+   */
+  logger?: Logger;
 }
 
 export interface AddRobotOptions {
@@ -112,7 +90,7 @@ function resolveMap(map: WorldOptions['map']): WorldMap {
  * takes only steps that cannot touch anything, and is brought up to the clock when read.
  */
 export class World {
-  readonly events = new Emitter<WorldEvents>();
+  readonly events: TypedEmitter<WorldEvents>;
   readonly random: SeededRandom;
   readonly tickUs: number;
   #map: WorldMap;
@@ -128,6 +106,7 @@ export class World {
   #index: RobotIndex | undefined;
 
   constructor(options: WorldOptions = {}) {
+    this.events = listenerSafeEmitter<WorldEvents>(options.logger, 'hal:simulation:world');
     this.random = new SeededRandom(options.seed ?? 1);
     this.tickUs = options.tickUs ?? 1000;
     if (!Number.isInteger(this.tickUs) || this.tickUs < 1) {
@@ -380,4 +359,22 @@ export class World {
     this.#timer = undefined;
     this.#speed = 0;
   }
+}
+
+/**
+ * An emitter whose throwing listener is logged (at error level) and changes nothing else: the
+ * other listeners still run and the step that emitted goes on.
+ */
+export function listenerSafeEmitter<Events extends { [K in keyof Events]: unknown }>(
+  logger: Logger | undefined,
+  namespace: string,
+): TypedEmitter<Events> {
+  if (logger === undefined) return new TypedEmitter<Events>();
+  const log = scoped(logger, namespace);
+  return new TypedEmitter<Events>((event, error) =>
+    log.error('event listener threw', {
+      event,
+      error: error instanceof Error ? error.message : String(error),
+    }),
+  );
 }

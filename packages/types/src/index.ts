@@ -133,3 +133,11 @@ export {
   parseSubject,
 } from './envelope.js';
 export type { Envelope, HalErrorPayload, SubjectParts } from './envelope.js';
+
+// The shared vocabulary: one angle wrap and one planar pose for every package.
+export { angleDifference, normalizeAngle } from './vocabulary/angle.js';
+export type { PlanarPose } from './vocabulary/planar-pose.js';
+export { TypedEmitter } from './vocabulary/typed-emitter.js';
+export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
+export { scoped, silentLogger } from './vocabulary/logger.js';
+export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';

@@ -1,5 +1,5 @@
 import { Fleet } from '@hal/fleet';
-import type { FleetLogger } from '@hal/fleet';
+import type { Logger } from '@hal/types';
 import type { RobotRoster } from '../robots/roster.js';
 
 /**
@@ -16,7 +16,7 @@ export class DemoFleet {
   readonly #roster: RobotRoster;
 
   /** `logger`: where the fleet's warnings go (the demo's results list). */
-  constructor(roster: RobotRoster, logger?: FleetLogger) {
+  constructor(roster: RobotRoster, logger?: Logger) {
     this.#roster = roster;
     this.fleet = new Fleet([], logger === undefined ? {} : { logger });
     // A new map puts every robot at a start again: a formation's slots no longer mean anything.

@@ -11,7 +11,7 @@ import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
 import type { LeashCliOptions } from '@hal/mcp/leash-options';
 import { integerArg, positiveArg } from '@hal/remote/cli';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
-import type { Pose } from '@hal/types';
+import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
 import type { ModelChoice, ModelCliOptions } from '../agent/model-choice.js';
 import { eventPrinter } from '../agent/print.js';
@@ -34,7 +34,7 @@ const TARGET_FLAGS = ['sim', 'udp', 'serial', 'ws', 'device', 'nats'] as const;
 /** Loads the local model, its errors as the CLI reports them. */
 async function loadLocal(
   choice: Extract<ModelChoice, { kind: 'local' }>,
-  log: (level: 'warn' | 'error', message: string) => void,
+  logger: Logger,
 ): Promise<LocalChatProvider> {
   try {
     return await createLocalChatProvider({
@@ -42,12 +42,7 @@ async function loadLocal(
       ...(choice.offerTools === undefined ? {} : { offerTools: choice.offerTools }),
       ...(choice.threads === undefined ? {} : { threads: choice.threads }),
       ...(choice.contextSize === undefined ? {} : { contextSize: choice.contextSize }),
-      logger: {
-        debug: () => undefined,
-        info: () => undefined,
-        warn: (message) => log('warn', message),
-        error: (message) => log('error', message),
-      },
+      logger,
     });
   } catch (error) {
     throw asCliError(error);
@@ -123,14 +118,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     const target = resolveTarget(options, io.env);
     const leash = leashFromOptions(options);
     const logger = cliLogger(io, json);
-    const log = (level: 'warn' | 'error', message: string) =>
-      logger.log(level, 'hal:agent', message);
 
     // the model first: a bad model file is an error before any robot is touched
     let local: LocalChatProvider | undefined;
     if (choice.kind === 'local') {
       progress(io, global(), 'loading the model...');
-      local = await loadLocal(choice, log);
+      local = await loadLocal(choice, logger);
       progress(
         io,
         global(),
@@ -183,12 +176,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
             },
             signal: io.signal,
             onEvent: (event) => (json ? io.out(`${JSON.stringify(event)}\n`) : print(event)),
-            logger: {
-              debug: () => undefined,
-              info: () => undefined,
-              warn: (message) => log('warn', message),
-              error: (message) => log('error', message),
-            },
+            logger,
           });
           let pose: Pose | undefined;
           try {

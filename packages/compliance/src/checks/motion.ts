@@ -1,6 +1,7 @@
 // The state consistency checks of motor.differential: a small, short drive shows in the state
 // stream with the commanded velocities, the pose moves the right way, and a stop ends it.
 import type { DifferentialState } from '@hal/nats';
+import { angleDifference } from '@hal/types';
 import type { RunContext } from '../context.js';
 import { describeAnswer } from '../context.js';
 import type { Verdict } from './check.js';
@@ -11,9 +12,6 @@ const close = (seen: number, want: number, floor: number) =>
 const LINEAR_FLOOR = 0.002;
 const ANGULAR_FLOOR = 0.03;
 const STILL = 1e-3;
-
-/** Wraps an angle to -pi..pi. */
-const wrap = (a: number) => Math.atan2(Math.sin(a), Math.cos(a));
 
 /**
  * Drives at (linear, angular) for at most `motionMs` (the device stops by itself then), waits
@@ -102,7 +100,7 @@ export async function motionVerdict(
   const dx = stopped.x_m - before.x_m;
   const dy = stopped.y_m - before.y_m;
   return pass(
-    `state showed the command after ${seenAfterMs.toFixed(0)} ms and the stop after ${stoppedAfterMs.toFixed(0)} ms; moved ${(Math.hypot(dx, dy) * 1000).toFixed(1)} mm, turned ${wrap(stopped.yaw_rad - before.yaw_rad).toFixed(3)} rad`,
+    `state showed the command after ${seenAfterMs.toFixed(0)} ms and the stop after ${stoppedAfterMs.toFixed(0)} ms; moved ${(Math.hypot(dx, dy) * 1000).toFixed(1)} mm, turned ${angleDifference(stopped.yaw_rad, before.yaw_rad).toFixed(3)} rad`,
   );
 }
 
@@ -115,7 +113,7 @@ export function judgeForward(
   const dy = after.y_m - before.y_m;
   const along = dx * Math.cos(before.yaw_rad) + dy * Math.sin(before.yaw_rad);
   const across = -dx * Math.sin(before.yaw_rad) + dy * Math.cos(before.yaw_rad);
-  const turned = wrap(after.yaw_rad - before.yaw_rad);
+  const turned = angleDifference(after.yaw_rad, before.yaw_rad);
   if (along < 0.003)
     return `driving forward moved ${(along * 1000).toFixed(1)} mm along the heading (want > 3 mm forward)`;
   if (Math.abs(across) > along / 2)
@@ -129,7 +127,7 @@ export function judgeTurnLeft(
   before: DifferentialState,
   after: DifferentialState,
 ): string | undefined {
-  const turned = wrap(after.yaw_rad - before.yaw_rad);
+  const turned = angleDifference(after.yaw_rad, before.yaw_rad);
   const moved = Math.hypot(after.x_m - before.x_m, after.y_m - before.y_m);
   if (turned < 0.05)
     return `a positive angular velocity turned ${turned.toFixed(3)} rad (want > 0.05 rad counter-clockwise)`;

@@ -1,6 +1,7 @@
 // sensor.imu and sensor.range: streamed at the spec's rate by a device that offers them, and
 // not at all by one that does not.
 import type { ImuData } from '@hal/nats';
+import { angleDifference } from '@hal/types';
 import type { RunContext } from '../context.js';
 import type { SpecCapability } from '../spec.js';
 import type { Received, StreamView } from '../streams.js';
@@ -65,8 +66,7 @@ function yawOf(q: ImuData['orientation_quaternion']): number {
   return Math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
 }
 
-const angleBetween = (a: number, b: number) =>
-  Math.abs(Math.atan2(Math.sin(a - b), Math.cos(a - b)));
+const angleBetween = (a: number, b: number) => Math.abs(angleDifference(a, b));
 
 const imuOrientation: Check = {
   capability: 'sensor.imu',

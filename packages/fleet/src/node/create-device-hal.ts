@@ -1,10 +1,10 @@
 import { NatsHAL } from '@hal/nats';
-import type { NatsConnectionSource, NatsLogger } from '@hal/nats';
+import type { NatsConnectionSource } from '@hal/nats';
 import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import type { World } from '@hal/simulation';
 import { SimulationHAL } from '@hal/simulation';
 import { HalError, robotConfig } from '@hal/types';
-import type { HardwareAbstractionLayer } from '@hal/types';
+import type { HardwareAbstractionLayer, Logger } from '@hal/types';
 import type { DeviceConfig } from './device-config.js';
 
 /** What the router needs besides a device's own config. */
@@ -13,7 +13,7 @@ export interface DeviceHALContext {
   world(name: string): World;
   /** How NatsHALs reach NATS (one shared connection, usually). */
   nats?: NatsConnectionSource;
-  natsLogger?: NatsLogger;
+  natsLogger?: Logger;
 }
 
 /**

@@ -112,6 +112,36 @@ describe('DeviceManager with simulated devices', () => {
     }
   });
 
+  it('logs a listener that throws and still brings every device online for the others', async () => {
+    const errors: Array<Record<string, unknown> | undefined> = [];
+    const manager = new DeviceManager(
+      { devices: [sim('a', 0), sim('b', 0.3)] },
+      {
+        logger: {
+          log: (level, _namespace, _message, fields) => {
+            if (level === 'error') errors.push(fields);
+          },
+        },
+      },
+    );
+    const online: string[] = [];
+    manager.on('online', () => {
+      throw new Error('broken listener');
+    });
+    manager.on('online', (e) => online.push(e.device));
+    try {
+      const health = await manager.start();
+      expect(health.map((h) => h.online)).toEqual([true, true]);
+      expect(online).toEqual(['a', 'b']);
+      expect(errors).toEqual([
+        { event: 'online', error: 'broken listener' },
+        { event: 'online', error: 'broken listener' },
+      ]);
+    } finally {
+      await manager.stop();
+    }
+  });
+
   it('refuses to register a bad or duplicate device and answers an unknown id clearly', () => {
     const manager = new DeviceManager({ devices: [sim('a', 0)] });
     expect(() => manager.register(sim('a', 1))).toThrow(/already registered/);

@@ -1,12 +1,10 @@
 import { openConnection } from '@hal/nats';
-import type { NatsConnectionSource, NatsLogger } from '@hal/nats';
+import type { NatsConnectionSource } from '@hal/nats';
 import { World } from '@hal/simulation';
-import { HalError, toHalError } from '@hal/types';
-import type { HardwareAbstractionLayer } from '@hal/types';
+import { HalError, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
+import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import { Fleet } from '../fleet.js';
 import type { FleetOptions } from '../fleet.js';
-import { silentFleetLogger } from '../logger.js';
-import type { FleetLogger } from '../logger.js';
 import { createDeviceHAL, definedFields } from './create-device-hal.js';
 import { parseDeviceConfig, parseFleetConfig } from './device-config.js';
 import type { DeviceConfig, FleetConfig, FleetConfigInput } from './device-config.js';
@@ -17,8 +15,8 @@ import { boundedWait } from './bounded-wait.js';
 export interface DeviceManagerOptions {
   /** An open NATS connection for the "nats" devices (not closed by the manager). */
   natsConnection?: NatsConnectionSource;
-  logger?: FleetLogger;
-  natsLogger?: NatsLogger;
+  logger?: Logger;
+  natsLogger?: Logger;
   /** Options of the fleet the manager drives (scheduler, timeouts). */
   fleet?: Omit<FleetOptions, 'logger'>;
 }
@@ -51,8 +49,8 @@ export class DeviceManager {
   readonly fleet: Fleet;
   readonly #devices = new Map<string, Managed>();
   readonly #worlds = new Map<string, World>();
-  readonly #listeners = new Map<keyof DeviceManagerEvents, Set<(e: never) => void>>();
-  readonly #log: FleetLogger;
+  readonly #events: TypedEmitter<DeviceManagerEvents>;
+  readonly #log: ScopedLogger;
   readonly #options: DeviceManagerOptions;
   #nats: { source: NatsConnectionSource; close?: () => Promise<void> } | undefined;
   #timer: ReturnType<typeof setInterval> | undefined;
@@ -61,8 +59,12 @@ export class DeviceManager {
   constructor(config: FleetConfigInput | FleetConfig = {}, options: DeviceManagerOptions = {}) {
     this.config = parseFleetConfig(config);
     this.#options = options;
-    this.#log = options.logger ?? silentFleetLogger;
-    this.fleet = new Fleet([], { ...options.fleet, logger: this.#log });
+    const logger = options.logger ?? silentLogger;
+    this.#log = scoped(logger, 'hal:fleet:devices');
+    this.#events = new TypedEmitter<DeviceManagerEvents>((event, error) =>
+      this.#log.error('a device event listener threw', { event, error: toHalError(error).message }),
+    );
+    this.fleet = new Fleet([], { ...options.fleet, logger });
     if (options.natsConnection !== undefined) this.#nats = { source: options.natsConnection };
     const onNats = this.config.devices.find((d) => d.type === 'nats');
     if (onNats !== undefined && this.#nats === undefined && this.config.nats === undefined) {
@@ -151,15 +153,12 @@ export class DeviceManager {
     });
   }
 
-  /** Calls `listener` on every `event`; returns the function that unsubscribes it. */
+  /**
+   * Calls `listener` on every `event`; returns the function that unsubscribes it. A listener that
+   * throws is logged and stops neither the other listeners nor the manager.
+   */
   on<E extends keyof DeviceManagerEvents>(event: E, listener: Listener<E>): () => void {
-    let set = this.#listeners.get(event);
-    if (set === undefined) {
-      set = new Set();
-      this.#listeners.set(event, set);
-    }
-    set.add(listener as (e: never) => void);
-    return () => set.delete(listener as (e: never) => void);
+    return this.#events.on(event, listener);
   }
 
   /**
@@ -253,7 +252,7 @@ export class DeviceManager {
   }
 
   #emit<E extends keyof DeviceManagerEvents>(event: E, payload: DeviceManagerEvents[E]): void {
-    for (const listener of this.#listeners.get(event) ?? []) (listener as Listener<E>)(payload);
+    this.#events.emit(event, payload);
   }
 
   /** One round for one device: connect if needed, read, and update online/offline. */

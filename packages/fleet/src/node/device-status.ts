@@ -1,4 +1,4 @@
-import type { PlanarPose } from '../formation.js';
+import type { PlanarPose } from '@hal/types';
 import type { DeviceConfig } from './device-config.js';
 
 /** One telemetry reading of a device. */

@@ -1,10 +1,13 @@
-import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import type {
+  HALToolResult,
+  HardwareAbstractionLayer,
+  ScopedLogger,
+  TypedEmitter,
+} from '@hal/types';
 import type { Point, Pose2D } from '../grid/geometry.js';
 import type { OccupancyGrid } from '../grid/occupancy-grid.js';
 import type { ActionReport, DecisionProvider } from '../decision/provider.js';
-import type { NavigationLogger } from '../errors.js';
 import type { BridgeSettings } from './bridge-options.js';
-import type { TypedEmitter } from './emitter.js';
 import type { NavigationEvents } from './navigation-events.js';
 import type { Terminal } from './navigation-outcome.js';
 
@@ -14,7 +17,7 @@ export interface BridgeContext {
   readonly grid: OccupancyGrid;
   readonly provider: DecisionProvider;
   readonly events: TypedEmitter<NavigationEvents>;
-  readonly logger: NavigationLogger;
+  readonly logger: ScopedLogger;
   readonly settings: BridgeSettings;
   /** Set by `stop()`; cleared when a run starts. */
   stopRequested: boolean;

@@ -5,7 +5,7 @@ import type { OccupancyGrid } from '../grid/occupancy-grid.js';
 import type { RangeSensorModel } from '../grid/range-sensor-update.js';
 import type { DecisionProvider } from '../decision/provider.js';
 import { positiveOption } from '../errors.js';
-import type { NavigationLogger } from '../errors.js';
+import type { Logger } from '@hal/types';
 
 /** Options of a {@link NavigationBridge}. */
 export interface NavigationBridgeOptions {
@@ -53,7 +53,7 @@ export interface NavigationBridgeOptions {
   maxStuckRecoveries?: number;
   /** The clock for the time cap, ms. Default `Date.now`. */
   now?: () => number;
-  logger?: NavigationLogger;
+  logger?: Logger;
 }
 
 /** A bridge's options with every default filled in and every number checked. */

@@ -1,4 +1,4 @@
-import { normalizeAngle } from '@hal/kinematics';
+import { normalizeAngle } from '@hal/types';
 import { distance, worldToCell } from '../grid/geometry.js';
 import type { Pose2D } from '../grid/geometry.js';
 import type { ActionReport, DecisionContext } from '../decision/provider.js';

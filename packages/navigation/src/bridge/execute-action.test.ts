@@ -1,3 +1,4 @@
+import { angleDifference, normalizeAngle } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { FakeHAL, ready } from './fake-hal.fixture.js';
 import { NavigationBridge } from './navigation-bridge.js';
@@ -43,10 +44,8 @@ describe('NavigationBridge', () => {
         expect(rotations[0]?.args[0]).toBe(c.direction);
         expect(rotations[0]?.args[1] as number).toBeCloseTo(c.degrees, 6);
       }
-      const target = Math.atan2(Math.sin((c.to * Math.PI) / 180), Math.cos((c.to * Math.PI) / 180));
-      expect(
-        Math.abs(Math.atan2(Math.sin(hal.yaw - target), Math.cos(hal.yaw - target))),
-      ).toBeLessThan((0.5 * Math.PI) / 180);
+      const target = normalizeAngle((c.to * Math.PI) / 180);
+      expect(Math.abs(angleDifference(hal.yaw, target))).toBeLessThan((0.5 * Math.PI) / 180);
     });
   });
 });

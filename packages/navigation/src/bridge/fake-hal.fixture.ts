@@ -1,7 +1,7 @@
 // An in-process robot for the bridge's unit tests: a disc in a world of boxes, moved exactly and
 // instantly, with range sensors by ray casting, behind the shared HAL boundary. Faults can be
 // injected per call. Not exported; the end-to-end tests use SimulationHAL.
-import { CAPABILITIES, HalBoundary, HalError, V1_ROBOT } from '@hal/types';
+import { CAPABILITIES, HalBoundary, HalError, normalizeAngle, V1_ROBOT } from '@hal/types';
 import type {
   CommunicationInterface,
   DeviceInfo,
@@ -34,8 +34,6 @@ export interface FakeHALOptions {
 
 type Call = { name: string; args: unknown[] };
 type Fault = (call: Call) => HALToolResult | 'hang' | 'freeze' | undefined;
-
-const wrap = (a: number) => Math.atan2(Math.sin(a), Math.cos(a));
 
 export class FakeHAL implements HardwareAbstractionLayer {
   readonly mode = 'simulation' as const;
@@ -106,7 +104,9 @@ export class FakeHAL implements HardwareAbstractionLayer {
         }),
       rotate: (direction, degrees) =>
         guarded('rotate', [direction, degrees], { direction, degrees }, async () => {
-          this.yaw = wrap(this.yaw + ((direction === 'left' ? 1 : -1) * degrees * Math.PI) / 180);
+          this.yaw = normalizeAngle(
+            this.yaw + ((direction === 'left' ? 1 : -1) * degrees * Math.PI) / 180,
+          );
         }),
       moveForward: (distanceCm) =>
         guarded('moveForward', [distanceCm], { distanceCm }, async () =>

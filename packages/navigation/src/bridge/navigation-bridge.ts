@@ -1,14 +1,14 @@
+import { scoped, silentLogger, TypedEmitter } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { distance } from '../grid/geometry.js';
 import type { Point } from '../grid/geometry.js';
 import { OccupancyGrid } from '../grid/occupancy-grid.js';
 import type { DecisionProvider } from '../decision/provider.js';
-import { errorMessage, NavigationError, SILENT_LOGGER } from '../errors.js';
+import { errorMessage, NavigationError } from '../errors.js';
 import { resolveBridgeSettings } from './bridge-options.js';
 import type { NavigationBridgeOptions } from './bridge-options.js';
 import type { BridgeContext, RunState } from './bridge-context.js';
 import { runCycles } from './cycle-loop.js';
-import { TypedEmitter } from './emitter.js';
 import type { NavigationEvents } from './navigation-events.js';
 import { failed } from './navigation-outcome.js';
 import type { NavigationOutcome, Terminal } from './navigation-outcome.js';
@@ -36,14 +36,16 @@ export class NavigationBridge {
   constructor(options: NavigationBridgeOptions) {
     this.hal = options.hal;
     this.provider = options.provider;
-    const logger = options.logger ?? SILENT_LOGGER;
+    const logger = scoped(options.logger ?? silentLogger, 'hal:navigation');
     this.grid = options.grid ?? new OccupancyGrid();
     if (options.map !== undefined) this.grid.seedFromMap(options.map);
     this.#ctx = {
       hal: this.hal,
       grid: this.grid,
       provider: this.provider,
-      events: new TypedEmitter(logger),
+      events: new TypedEmitter<NavigationEvents>((event, error) =>
+        logger.error('navigation event listener threw', { event, error: errorMessage(error) }),
+      ),
       logger,
       settings: resolveBridgeSettings(options),
       stopRequested: false,

@@ -1,4 +1,4 @@
-import { normalizeAngle } from '@hal/kinematics';
+import { normalizeAngle } from '@hal/types';
 
 /** Radians per degree. */
 export const DEG = Math.PI / 180;

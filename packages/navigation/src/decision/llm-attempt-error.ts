@@ -6,6 +6,8 @@ export class AttemptError extends Error {
     readonly retryable: boolean,
     /** What to tell the model about its reply before asking again, when the reply was the problem. */
     readonly feedback?: string,
+    /** How long the server asked to be left alone before the next attempt (Retry-After), ms. */
+    readonly retryAfterMs?: number,
   ) {
     super(message);
   }

@@ -1,24 +1,38 @@
-import { errorMessage } from '../errors.js';
+import { AgentError, postChatCompletion, retryableStatus } from '@hal/agent';
+import type { ChatEndpoint } from '@hal/agent';
 import { AttemptError } from './llm-attempt-error.js';
 import type { LlmSettings, ResponseFormatMode } from './llm-options.js';
 import { requestBody } from './llm-prompt.js';
 import type { ChatMessage } from './llm-prompt.js';
 import { replyContent } from './llm-reply.js';
 
+/** The longest wait a server may ask for (Retry-After) before the provider gives up on it, ms. */
+export const MAX_RETRY_AFTER_MS = 30_000;
+
 /**
- * One chat-completions endpoint: a POST per request, bounded by `timeoutMs`, answering the
- * reply's text. Failures are AttemptErrors that say whether to ask again: a timeout, a network
- * error, HTTP 408, 429 or 5xx, or a reply without content may pass; other HTTP errors will not.
- * A server that refuses `json_schema` with HTTP 400 is asked for `json_object` from then on.
+ * One chat-completions endpoint, reached through `@hal/agent`'s OpenAI-compatible client with one
+ * request per call (the provider counts the attempts, a reply that breaks the schema among them).
+ * Failures are AttemptErrors that say whether to ask again, and after how long when the server
+ * said (Retry-After): a timeout, a network error, HTTP 408, 429 or 5xx, or a reply without
+ * content may pass; other HTTP errors will not. A server that refuses `json_schema` with HTTP 400
+ * is asked for `json_object` from then on.
  */
 export class ChatCompletionsClient {
   /** The response format asked for now (it drops to `json_object` when `json_schema` is refused). */
   format: ResponseFormatMode;
   readonly #settings: LlmSettings;
+  readonly #endpoint: ChatEndpoint;
 
   constructor(settings: LlmSettings) {
     this.#settings = settings;
     this.format = settings.responseFormat;
+    this.#endpoint = {
+      url: settings.url,
+      apiKey: settings.apiKey,
+      requestTimeoutMs: settings.timeoutMs,
+      retry: { maxRetries: 0, baseDelayMs: 0, maxDelayMs: MAX_RETRY_AFTER_MS },
+      fetch: settings.fetch,
+    };
   }
 
   /** Sends `messages` and answers the reply's text; rejects with what `signal` aborts with. */
@@ -27,47 +41,40 @@ export class ChatCompletionsClient {
     schema: Record<string, unknown>,
     signal: AbortSignal,
   ): Promise<string> {
-    const { apiKey, model, temperature, maxTokens, timeoutMs, logger } = this.#settings;
+    const { model, temperature, maxTokens, logger } = this.#settings;
     const body = requestBody(
       { model, temperature, maxTokens, format: this.format },
       messages,
       schema,
     );
-    const headers: Record<string, string> = { 'content-type': 'application/json' };
-    if (apiKey !== undefined && apiKey !== '') headers['authorization'] = `Bearer ${apiKey}`;
-    const timeout = AbortSignal.timeout(timeoutMs);
-    let response: Response;
-    let text: string;
-    try {
-      response = await this.#settings.fetch(this.#settings.url, {
-        method: 'POST',
-        headers,
-        body: JSON.stringify(body),
-        signal: AbortSignal.any([signal, timeout]),
-      });
-      text = await response.text();
-    } catch (error) {
-      if (signal.aborted) throw error;
-      if (timeout.aborted) throw new AttemptError(`no reply within ${timeoutMs} ms`, true);
-      throw new AttemptError(`request failed: ${errorMessage(error)}`, true);
-    }
-    if (!response.ok) {
-      const snippet = text.slice(0, 200);
-      if (response.status === 400 && this.format === 'json_schema') {
-        // Many servers do not support structured output: ask for plain JSON instead.
-        this.format = 'json_object';
-        logger.warn('server refused json_schema; using json_object', { status: response.status });
-        throw new AttemptError(`HTTP 400 with json_schema (${snippet})`, true);
-      }
-      const retryable =
-        response.status === 408 || response.status === 429 || response.status >= 500;
-      throw new AttemptError(`HTTP ${response.status}: ${snippet}`, retryable);
-    }
     let payload: unknown;
     try {
-      payload = JSON.parse(text);
-    } catch {
-      throw new AttemptError('the server answered with something that is not JSON', true);
+      payload = await postChatCompletion(
+        this.#endpoint,
+        body,
+        (reply) => reply,
+        signal,
+        () => undefined,
+      );
+    } catch (error) {
+      if (signal.aborted || !(error instanceof AgentError)) throw error;
+      const status = error.details?.['status'];
+      if (error.code !== 'HTTP' || typeof status !== 'number') {
+        throw new AttemptError(error.message, true);
+      }
+      if (status === 400 && this.format === 'json_schema') {
+        // Many servers do not support structured output: ask for plain JSON instead.
+        this.format = 'json_object';
+        logger.warn('server refused json_schema; using json_object', { status });
+        throw new AttemptError(`json_schema refused: ${error.message}`, true);
+      }
+      const waitMs = error.details?.['retryAfterMs'];
+      throw new AttemptError(
+        error.message,
+        retryableStatus(status),
+        undefined,
+        typeof waitMs === 'number' ? waitMs : undefined,
+      );
     }
     return replyContent(payload);
   }

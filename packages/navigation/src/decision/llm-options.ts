@@ -1,5 +1,6 @@
-import { NavigationError, positiveOption, SILENT_LOGGER } from '../errors.js';
-import type { NavigationLogger } from '../errors.js';
+import { scoped, silentLogger } from '@hal/types';
+import type { Logger, ScopedLogger } from '@hal/types';
+import { NavigationError, positiveOption } from '../errors.js';
 import type { DecisionProvider } from './provider.js';
 
 /** How the provider asks the server for JSON. */
@@ -42,7 +43,8 @@ export interface OpenAICompatibleOptions {
   fetch?: typeof fetch;
   /** Environment to read defaults from. Default `process.env` where there is one. */
   env?: Record<string, string | undefined>;
-  logger?: NavigationLogger;
+  /** Where to log (namespace `hal:navigation:llm`). Default silent. */
+  logger?: Logger;
 }
 
 /** The provider's options with the environment read, the defaults filled in and all checked. */
@@ -62,7 +64,7 @@ export interface LlmSettings {
   /** The system prompt, when it replaces the built-in one. */
   readonly systemPrompt: string | undefined;
   readonly fetch: typeof fetch;
-  readonly logger: NavigationLogger;
+  readonly logger: ScopedLogger;
 }
 
 const DEFAULT_BASE_URL = 'https://api.openai.com/v1';
@@ -120,6 +122,6 @@ export function resolveLlmSettings(options: OpenAICompatibleOptions): LlmSetting
     fallback: options.fallback,
     systemPrompt: options.systemPrompt,
     fetch: fetchImpl,
-    logger: options.logger ?? SILENT_LOGGER,
+    logger: scoped(options.logger ?? silentLogger, 'hal:navigation:llm'),
   };
 }

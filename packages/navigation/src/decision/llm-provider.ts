@@ -1,7 +1,7 @@
 import { errorMessage, NavigationError } from '../errors.js';
-import type { NavigationLogger } from '../errors.js';
+import type { ScopedLogger } from '@hal/types';
 import { AttemptError } from './llm-attempt-error.js';
-import { ChatCompletionsClient } from './llm-http.js';
+import { ChatCompletionsClient, MAX_RETRY_AFTER_MS } from './llm-http.js';
 import { resolveLlmSettings } from './llm-options.js';
 import type { LlmSettings, OpenAICompatibleOptions } from './llm-options.js';
 import { decisionBounds, SYSTEM_PROMPT, userContent } from './llm-prompt.js';
@@ -29,7 +29,8 @@ function pause(ms: number, signal: AbortSignal): Promise<void> {
  * Ollama, llama.cpp server, LM Studio, ...). Each decision sends the camera frame as an image,
  * the world summary, the goal and the previous result, asks for the decision's JSON Schema as
  * structured output, and validates the reply with zod. A reply that is not JSON or breaks the
- * schema is answered with the problem and asked again; a timeout, HTTP 429 or 5xx is retried;
+ * schema is answered with the problem and asked again; a timeout, HTTP 429 or 5xx is retried,
+ * after the wait the server asks for (Retry-After, up to 30 s; a longer one ends the attempts);
  * when no attempt gives a valid decision the fallback provider decides (or the call rejects with
  * a NavigationError PROVIDER_ERROR).
  */
@@ -39,7 +40,7 @@ export class OpenAICompatibleProvider implements DecisionProvider {
   readonly #settings: LlmSettings;
   readonly #client: ChatCompletionsClient;
   readonly #system: string;
-  readonly #logger: NavigationLogger;
+  readonly #logger: ScopedLogger;
 
   constructor(options: OpenAICompatibleOptions = {}) {
     this.#settings = resolveLlmSettings(options);
@@ -82,6 +83,13 @@ export class OpenAICompatibleProvider implements DecisionProvider {
           problem: failure.message,
         });
         if (!failure.retryable) break;
+        const asked = failure.retryAfterMs;
+        if (asked !== undefined && asked > MAX_RETRY_AFTER_MS) {
+          problems.push(
+            `the server asks to wait ${Math.round(asked)} ms, more than ${MAX_RETRY_AFTER_MS}`,
+          );
+          break;
+        }
         if (failure.feedback !== undefined && reply !== undefined) {
           const last = messages.at(-1);
           // Keep the conversation short: one correction at a time.
@@ -89,7 +97,7 @@ export class OpenAICompatibleProvider implements DecisionProvider {
           messages.push({ role: 'assistant', content: reply.slice(0, 2000) });
           messages.push({ role: 'user', content: failure.feedback });
         } else if (attempt < maxAttempts) {
-          await pause(250 * attempt, signal);
+          await pause(asked ?? 250 * attempt, signal);
         }
       }
     }

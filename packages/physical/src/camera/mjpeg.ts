@@ -1,6 +1,6 @@
 import { HalError } from '@hal/types';
-import { scoped } from '../logger.js';
-import type { Logger, ScopedLogger } from '../logger.js';
+import { scoped } from '@hal/types';
+import type { Logger, ScopedLogger } from '@hal/types';
 import { boundaryOf, MultipartParser } from './multipart.js';
 
 /** Options of {@link MjpegCamera}. */

@@ -1,6 +1,6 @@
 import { HalError } from '@hal/types';
 import type { CommunicationInterface } from '@hal/types';
-import type { ScopedLogger } from '../logger.js';
+import type { ScopedLogger } from '@hal/types';
 import type { HalContext } from './context.js';
 
 /**

@@ -1,5 +1,4 @@
-import { normalizeAngle } from '@hal/kinematics';
-import { stepsPerCm } from '@hal/types';
+import { normalizeAngle, stepsPerCm } from '@hal/types';
 import type { HalContext } from './context.js';
 import { poseData, runMotion } from './run-motion.js';
 

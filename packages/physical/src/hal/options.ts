@@ -1,4 +1,4 @@
-import type { Logger } from '../logger.js';
+import type { Logger } from '@hal/types';
 import type { CalibrationSource } from './calibration.js';
 import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
 import type { SafetyLaneTiming } from '../safety-lane.js';

@@ -10,8 +10,8 @@ import type {
   VisionInterface,
 } from '@hal/types';
 import { MjpegCamera } from '../camera/mjpeg.js';
-import { scoped, silentLogger } from '../logger.js';
-import type { ScopedLogger } from '../logger.js';
+import { scoped, silentLogger } from '@hal/types';
+import type { ScopedLogger } from '@hal/types';
 import { PoseTracker } from '../pose-tracker.js';
 import { createAuthenticator } from '../protocol/auth.js';
 import { MessageCodec } from '../protocol/codec.js';

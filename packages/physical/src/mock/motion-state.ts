@@ -1,5 +1,5 @@
 import { OdometryIntegrator, StepAccumulator } from '@hal/kinematics';
-import type { PlanarPose, RobotGeometry, StepPlan, WheelPair } from '@hal/kinematics';
+import type { PlanarPoseCm, RobotGeometry, StepPlan, WheelPair } from '@hal/kinematics';
 import type { MoveOutcome } from '../protocol/schemas.js';
 import type { RobotClock } from './robot-clock.js';
 
@@ -78,7 +78,7 @@ export class MotionState {
   }
 
   /** The odometry pose, cm and radians. */
-  get pose(): PlanarPose {
+  get pose(): PlanarPoseCm {
     return this.#odometry.pose;
   }
 

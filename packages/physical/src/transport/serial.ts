@@ -1,5 +1,5 @@
 import { HalError } from '@hal/types';
-import { scoped } from '../logger.js';
+import { scoped } from '@hal/types';
 import { encodeFrame } from '../serial/frame.js';
 import type { FrameType } from '../serial/frame.js';
 import { FrameDecoder } from '../serial/frame-decoder.js';

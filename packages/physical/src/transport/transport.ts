@@ -1,5 +1,5 @@
 import { HalError } from '@hal/types';
-import type { Logger } from '../logger.js';
+import type { Logger } from '@hal/types';
 import type { DecodeResult, WireReply } from '../protocol/codec.js';
 
 /** How long to wait for a reply before resending, ms (protocol 1.0, section 4). */

@@ -1,7 +1,7 @@
 import { createSocket } from 'node:dgram';
 import type { Socket } from 'node:dgram';
 import { afterEach, describe, expect, it } from 'vitest';
-import { silentLogger } from '../logger.js';
+import { silentLogger } from '@hal/types';
 import { MessageCodec } from '../protocol/codec.js';
 import type { Transport } from './transport.js';
 import { udpTransport } from './udp.js';

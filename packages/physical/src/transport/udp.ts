@@ -1,5 +1,5 @@
 import { HalError } from '@hal/types';
-import { scoped } from '../logger.js';
+import { scoped } from '@hal/types';
 import type {
   RequestOptions,
   Transport,

@@ -2,11 +2,11 @@
 // hal-serve: serves one HAL over WebSocket. Prints `listening ws://HOST:PORT` on stdout when ready;
 // logs go to stderr. Stops cleanly on SIGINT/SIGTERM.
 import { isHalError } from '@hal/types';
-import type { RemoteLogger } from '../logger.js';
+import type { Logger } from '@hal/types';
 import { parseServeCommand } from './parse.js';
 import { runServe } from './run.js';
 
-const stderrLogger: RemoteLogger = {
+const stderrLogger: Logger = {
   log: (level, namespace, message) => {
     if (level !== 'debug') process.stderr.write(`${level} ${namespace} ${message}\n`);
   },

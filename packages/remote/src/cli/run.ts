@@ -2,14 +2,14 @@
 import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import type { RemoteLogger } from '../logger.js';
+import type { Logger } from '@hal/types';
 import { checkBinding } from '../server/auth.js';
 import { serveHal } from '../server/index.js';
 import type { HalServer } from '../server/index.js';
 import type { ServeCommand } from './parse.js';
 
 /** Makes the HAL a command asks for (not yet initialised). */
-export function buildHal(command: ServeCommand, logger: RemoteLogger): HardwareAbstractionLayer {
+export function buildHal(command: ServeCommand, logger: Logger): HardwareAbstractionLayer {
   const { hal } = command;
   if (hal.kind === 'sim') {
     return new SimulationHAL({ deviceId: command.deviceId, clock: 'realtime' });
@@ -38,7 +38,7 @@ export function buildHal(command: ServeCommand, logger: RemoteLogger): HardwareA
 /** Initialises the HAL and serves it. */
 export async function runServe(
   command: ServeCommand,
-  logger: RemoteLogger,
+  logger: Logger,
 ): Promise<{ hal: HardwareAbstractionLayer; server: HalServer }> {
   const hal = buildHal(command, logger);
   const options = {

@@ -2,8 +2,8 @@
 // id (each with a timeout), heartbeats, the cached state, and reconnection.
 import { HalError } from '@hal/types';
 import type { HalErrorCode, Pose, SafetyStatus } from '@hal/types';
-import { writeLog } from '../logger.js';
-import type { RemoteLogLevel, RemoteLogger } from '../logger.js';
+import { scoped } from '@hal/types';
+import type { Logger, LogLevel } from '@hal/types';
 import { MESSAGE_SCHEMAS, decodeMessage, encodeArgs, encodeMessage } from '../protocol.js';
 import type { HelloPayload, MessageSchema, RemoteCallName, Role } from '../protocol.js';
 import { OPEN, resolveWebSocket } from './websocket.js';
@@ -27,7 +27,7 @@ export interface ConnectionOptions {
   connectTimeoutMs: number;
   reconnect: boolean;
   reconnectDelayMs: number;
-  logger: RemoteLogger;
+  logger: Logger;
   /** Called after every (re)connection, once the hello is in. */
   onConnected: (hello: HelloPayload) => void;
 }
@@ -115,8 +115,8 @@ export class Connection {
     });
   }
 
-  #log(level: RemoteLogLevel, message: string, fields?: Record<string, unknown>): void {
-    writeLog(this.#options.logger, level, NS, message, fields);
+  #log(level: LogLevel, message: string, fields?: Record<string, unknown>): void {
+    scoped(this.#options.logger, NS)[level](message, fields);
   }
 
   async #connect(): Promise<void> {

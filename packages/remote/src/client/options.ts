@@ -1,5 +1,5 @@
 import type { HALMode } from '@hal/types';
-import type { RemoteLogger } from '../logger.js';
+import type { Logger } from '@hal/types';
 import type { WebSocketConstructor } from './websocket.js';
 
 /** How a {@link RemoteHAL} reaches its server. */
@@ -29,7 +29,7 @@ export interface RemoteHALOptions {
   reconnect?: boolean;
   /** First delay before reconnecting, ms; doubles up to 5000. Default 250. */
   reconnectDelayMs?: number;
-  logger?: RemoteLogger;
+  logger?: Logger;
 }
 
 export const REMOTE_DEFAULTS = {

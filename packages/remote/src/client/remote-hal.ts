@@ -9,6 +9,8 @@ import {
   isHalError,
   sanitizeEstopReason,
   successResult,
+  scoped,
+  silentLogger,
 } from '@hal/types';
 import type {
   CallName,
@@ -23,7 +25,6 @@ import type {
   SafetyStatus,
   VisionInterface,
 } from '@hal/types';
-import { silentRemoteLogger, writeLog } from '../logger.js';
 import type { ResultCallName, Role, ValueCallName } from '../protocol.js';
 import { Connection } from './connection.js';
 import { REMOTE_DEFAULTS } from './options.js';
@@ -52,7 +53,7 @@ export class RemoteHAL implements HardwareAbstractionLayer {
   #delivering: Promise<boolean> | undefined;
 
   constructor(options: RemoteHALOptions) {
-    this.#options = { ...REMOTE_DEFAULTS, logger: silentRemoteLogger, ...options };
+    this.#options = { ...REMOTE_DEFAULTS, logger: silentLogger, ...options };
     this.#link = new Connection({
       url: options.url,
       token: options.token,
@@ -206,17 +207,11 @@ export class RemoteHAL implements HardwareAbstractionLayer {
             data['reason'] = sanitizeEstopReason(data['reason']);
           return { ...result, data };
         }
-        writeLog(
-          this.#options.logger,
-          'warn',
-          'hal:remote:client',
-          'the server refused an e-stop',
-          {
-            error: result.error,
-          },
-        );
+        scoped(this.#options.logger, 'hal:remote:client').warn('the server refused an e-stop', {
+          error: result.error,
+        });
       } catch (e) {
-        writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'e-stop not delivered', {
+        scoped(this.#options.logger, 'hal:remote:client').warn('e-stop not delivered', {
           error: String(e),
         });
       }
@@ -240,7 +235,7 @@ export class RemoteHAL implements HardwareAbstractionLayer {
         if (this.#hostEstop === reason) this.#hostEstop = undefined;
         return true;
       } catch (e) {
-        writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'e-stop not delivered', {
+        scoped(this.#options.logger, 'hal:remote:client').warn('e-stop not delivered', {
           error: String(e),
         });
         return false;
@@ -323,23 +318,18 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     try {
       const refusal = this.#refusal();
       if (refusal !== undefined) {
-        writeLog(
-          this.#options.logger,
-          'warn',
-          'hal:remote:client',
-          `log refused: ${refusal.message}`,
-        );
+        scoped(this.#options.logger, 'hal:remote:client').warn(`log refused: ${refusal.message}`);
         return;
       }
       this.#link
         .request('log', [message, level], this.#options.requestTimeoutMs)
         .catch((e: unknown) => {
-          writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'log refused', {
+          scoped(this.#options.logger, 'hal:remote:client').warn('log refused', {
             error: String(e),
           });
         });
     } catch (e) {
-      writeLog(this.#options.logger, 'warn', 'hal:remote:client', 'log failed', {
+      scoped(this.#options.logger, 'hal:remote:client').warn('log failed', {
         error: String(e),
       });
     }

@@ -1,4 +1,4 @@
-import type { RemoteLogger } from '../logger.js';
+import type { Logger } from '@hal/types';
 
 /** How {@link serveHal} serves a HAL. */
 export interface ServeHalOptions {
@@ -19,7 +19,7 @@ export interface ServeHalOptions {
   maxMessageBytes?: number;
   /** `device_id` of the server's messages. Default the served HAL's device id. */
   deviceId?: string;
-  logger?: RemoteLogger;
+  logger?: Logger;
 }
 
 export const SERVE_DEFAULTS = {

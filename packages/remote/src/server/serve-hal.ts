@@ -5,12 +5,10 @@ import { randomUUID } from 'node:crypto';
 import { createServer } from 'node:http';
 import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { HalError, MOTION_CALLS, toHalError } from '@hal/types';
-import type { CallName, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
+import { HalError, MOTION_CALLS, scoped, silentLogger, toHalError } from '@hal/types';
+import type { CallName, HalErrorCode, HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import { WebSocketServer } from 'ws';
 import type { RawData, WebSocket } from 'ws';
-import { silentRemoteLogger, writeLog } from '../logger.js';
-import type { RemoteLogLevel } from '../logger.js';
 import {
   CONTROLLER_CALLS,
   MESSAGE_SCHEMAS,
@@ -46,9 +44,9 @@ export async function serveHal(
   }
   const stateRateHz = options.stateRateHz ?? SERVE_DEFAULTS.stateRateHz;
   const maxMessageBytes = options.maxMessageBytes ?? SERVE_DEFAULTS.maxMessageBytes;
-  const logger = options.logger ?? silentRemoteLogger;
-  const log = (level: RemoteLogLevel, message: string, fields?: Record<string, unknown>) =>
-    writeLog(logger, level, NS, message, fields);
+  const scopedLog = scoped(options.logger ?? silentLogger, NS);
+  const log = (level: LogLevel, message: string, fields?: Record<string, unknown>) =>
+    scopedLog[level](message, fields);
   const sender = () => ({
     deviceId: options.deviceId ?? hal.getDeviceInfo().id,
     caps: hal.getDeviceInfo().capabilities,

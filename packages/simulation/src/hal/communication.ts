@@ -1,7 +1,6 @@
-import { CAPABILITIES, HalError } from '@hal/types';
-import type { CommunicationInterface } from '@hal/types';
+import { CAPABILITIES, HalError, scoped } from '@hal/types';
+import type { CommunicationInterface, Logger } from '@hal/types';
 import type { HalContext } from './context.js';
-import type { SimLogger } from './options.js';
 
 /** How many `log` messages the HAL keeps. */
 const KEPT_LOGS = 1000;
@@ -10,13 +9,14 @@ const KEPT_LOGS = 1000;
  * The simulated robot's communication: `setLED` lights the robot's LED; `log`, and `speak` and
  * `playSound` with a speaker, emit `communication` events for a UI. `log` keeps the last
  * messages in `logs` (oldest first) and writes to `logger`, never the console; a `log` call the
- * boundary refuses records nothing and is reported to `logger.warn`.
+ * boundary refuses records nothing and is reported to `logger` at warn level.
  */
 export function createCommunication(
   ctx: HalContext,
   logs: string[],
-  logger: SimLogger,
+  logger: Logger,
 ): CommunicationInterface {
+  const log = scoped(logger, 'hal:simulation');
   const b = ctx.boundary;
   const requireSpeaker = (capability: string) => {
     if (!ctx.features.speaker) {
@@ -54,7 +54,7 @@ export function createCommunication(
         const at = p.level ?? 'info';
         logs.push(p.message);
         if (logs.length > KEPT_LOGS) logs.shift();
-        logger[at]?.(p.message);
+        log[at](p.message);
         ctx.events.emit('communication', {
           type: 'log',
           message: p.message,
@@ -63,11 +63,8 @@ export function createCommunication(
         });
       });
       if (!result.success) {
-        try {
-          logger.warn?.(`log refused: ${result.error ?? result.code ?? 'unknown reason'}`);
-        } catch {
-          // log() never throws, even through a broken logger
-        }
+        // scoped() swallows a broken logger's throw: log() never throws
+        log.warn(`log refused: ${result.error ?? result.code ?? 'unknown reason'}`);
       }
     },
   };

@@ -1,6 +1,6 @@
-import type { HalBoundary } from '@hal/types';
+import type { HalBoundary, TypedEmitter } from '@hal/types';
 import type { SimRobot } from '../robot/sim-robot.js';
-import type { Emitter, World } from '../world.js';
+import type { World } from '../world.js';
 import type { SimulationHALEvents } from './events.js';
 import type { SimulatedFeatures, SimulationClock, SimulationHALOptions } from './options.js';
 
@@ -11,7 +11,7 @@ export interface HalContext {
   robot(): SimRobot;
   /** Readiness, e-stop gating, validation, timing and error-to-result conversion of each call. */
   readonly boundary: HalBoundary;
-  readonly events: Emitter<SimulationHALEvents>;
+  readonly events: TypedEmitter<SimulationHALEvents>;
   readonly clock: SimulationClock;
   readonly features: Required<SimulatedFeatures>;
   readonly options: SimulationHALOptions;

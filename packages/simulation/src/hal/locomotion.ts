@@ -1,5 +1,4 @@
-import { normalizeAngle } from '@hal/kinematics';
-import { stepsPerCm } from '@hal/types';
+import { normalizeAngle, stepsPerCm } from '@hal/types';
 import type { LocomotionInterface, Pose } from '@hal/types';
 import type { MotionReport } from '../robot/motion-report.js';
 import type { SimRobot } from '../robot/sim-robot.js';

@@ -1,4 +1,4 @@
-import type { RobotConfig } from '@hal/types';
+import type { Logger, RobotConfig } from '@hal/types';
 import type { CameraOptions } from '../camera.js';
 import type { JpegEncoder } from '../jpeg-encoders.js';
 import type { SimRobot } from '../robot/sim-robot.js';
@@ -27,14 +27,6 @@ export interface SimulatedFeatures {
   imu?: boolean;
   /** A speaker (`speak`, `playSound` emit events). Default false, like the V1 robot. */
   speaker?: boolean;
-}
-
-/** A logger the HAL writes to (never the console). */
-export interface SimLogger {
-  debug(message: string): void;
-  info(message: string): void;
-  warn(message: string): void;
-  error(message: string): void;
 }
 
 export interface SimulationHALOptions {
@@ -69,16 +61,9 @@ export interface SimulationHALOptions {
   frameSource?: FrameSource;
   /** Device id reported by `getDeviceInfo`. Default `sim-` + the robot id. */
   deviceId?: string;
-  logger?: SimLogger;
+  /** Where the HAL writes (namespace `hal:simulation`), never the console. Default silent. */
+  logger?: Logger;
 }
-
-/** The logger used when none is given: says nothing. */
-export const SILENT_LOGGER: SimLogger = {
-  debug: () => undefined,
-  info: () => undefined,
-  warn: () => undefined,
-  error: () => undefined,
-};
 
 /** The features a robot has: those asked for, the rest by default (all but the speaker). */
 export function resolveFeatures(features: SimulatedFeatures = {}): Required<SimulatedFeatures> {

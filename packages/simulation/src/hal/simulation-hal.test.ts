@@ -1,4 +1,5 @@
 import { isHalError } from '@hal/types';
+import type { Logger } from '@hal/types';
 import { afterEach, describe, expect, it } from 'vitest';
 import { SimulationHAL } from './simulation-hal.js';
 import type { CommunicationEvent } from './events.js';
@@ -256,12 +257,10 @@ describe('SimulationHAL', () => {
 
     it('records nothing for a refused log call, reports it to the logger and never throws', async () => {
       const warnings: string[] = [];
-      const ignore = () => undefined;
-      const logger = {
-        debug: ignore,
-        info: ignore,
-        error: ignore,
-        warn: (m: string) => warnings.push(m),
+      const logger: Logger = {
+        log: (level, _namespace, message) => {
+          if (level === 'warn') warnings.push(message);
+        },
       };
       const hal = new SimulationHAL({ logger });
       const seen: CommunicationEvent[] = [];

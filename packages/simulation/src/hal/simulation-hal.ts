@@ -1,4 +1,4 @@
-import { CAPABILITIES, HalBoundary, robotConfig, V1_ROBOT } from '@hal/types';
+import { CAPABILITIES, HalBoundary, robotConfig, silentLogger, V1_ROBOT } from '@hal/types';
 import type {
   CommunicationInterface,
   DeviceInfo,
@@ -7,16 +7,17 @@ import type {
   LocomotionInterface,
   RobotConfig,
   SafetyInterface,
+  TypedEmitter,
   VisionInterface,
 } from '@hal/types';
 import type { SimRobot } from '../robot/sim-robot.js';
-import { Emitter, World } from '../world.js';
+import { listenerSafeEmitter, World } from '../world.js';
 import { createCommunication } from './communication.js';
 import type { HalContext } from './context.js';
 import type { SimulationHALEvents } from './events.js';
 import { optionsFromConfig } from './from-config.js';
 import { createLocomotion } from './locomotion.js';
-import { resolveFeatures, SILENT_LOGGER } from './options.js';
+import { resolveFeatures } from './options.js';
 import type { SimulatedFeatures, SimulationClock, SimulationHALOptions } from './options.js';
 import { createSafety } from './safety.js';
 import { createVision, softwareFrameSource } from './vision.js';
@@ -33,7 +34,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
   readonly communication: CommunicationInterface;
   readonly safety: SafetyInterface;
   readonly world: World;
-  readonly events = new Emitter<SimulationHALEvents>();
+  readonly events: TypedEmitter<SimulationHALEvents>;
 
   readonly #robotId: string;
   readonly #clock: SimulationClock;
@@ -45,7 +46,9 @@ export class SimulationHAL implements HardwareAbstractionLayer {
 
   constructor(options: SimulationHALOptions = {}) {
     this.#options = options;
-    this.world = options.world ?? new World();
+    this.events = listenerSafeEmitter(options.logger, 'hal:simulation');
+    this.world =
+      options.world ?? new World(options.logger === undefined ? {} : { logger: options.logger });
     this.#clock = options.clock ?? 'fast';
     this.#features = resolveFeatures(options.features);
     if (options.robotId !== undefined) {
@@ -79,7 +82,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       context,
       options.frameSource ?? softwareFrameSource(options.camera ?? {}, options.jpegEncoder),
     );
-    this.communication = createCommunication(context, this.#logs, options.logger ?? SILENT_LOGGER);
+    this.communication = createCommunication(context, this.#logs, options.logger ?? silentLogger);
     this.safety = createSafety(context);
   }
 

@@ -1,4 +1,4 @@
-import type { PlanarPose } from '@hal/kinematics';
+import type { PlanarPoseCm } from '@hal/kinematics';
 import type { Point, Solid } from '../shapes.js';
 
 /** Where the robot touched something. */
@@ -24,8 +24,8 @@ export type ContactTest = (x: number, y: number, radius: number) => Contact | un
 export function blockingContact(
   test: ContactTest,
   radius: number,
-  from: PlanarPose,
-  to: PlanarPose,
+  from: PlanarPoseCm,
+  to: PlanarPoseCm,
 ): Contact | undefined {
   const x = to.xCm / 100;
   const y = to.yCm / 100;

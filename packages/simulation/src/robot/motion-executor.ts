@@ -1,5 +1,5 @@
 import { MovePlan, VelocityPlan } from '@hal/kinematics';
-import type { PlanarPose, StepPlan } from '@hal/kinematics';
+import type { PlanarPoseCm, StepPlan } from '@hal/kinematics';
 import type { RobotConfig } from '@hal/types';
 import { blockingContact } from './contact.js';
 import type { ContactTest, FreeSpaceTest } from './contact.js';
@@ -50,7 +50,7 @@ export class MotionExecutor {
   readonly #scratch = { xCm: 0, yCm: 0, headingRad: 0 };
 
   /** `onChange` is told whenever a motion starts or ends. */
-  constructor(start: PlanarPose, radius: number, onChange: () => void = () => undefined) {
+  constructor(start: PlanarPoseCm, radius: number, onChange: () => void = () => undefined) {
     this.#odometry = new StepOdometry(start);
     this.#radius = radius;
     this.#onChange = onChange;
@@ -71,7 +71,7 @@ export class MotionExecutor {
     this.#checkStep = this.#odometry.masterSteps + 1;
   }
 
-  get pose(): PlanarPose {
+  get pose(): PlanarPoseCm {
     return this.#odometry.pose;
   }
   /** Centre, cm (no allocation). */

@@ -1,5 +1,5 @@
-import { normalizeAngle, rotationArcCm } from '@hal/kinematics';
-import { HalError, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
+import { rotationArcCm } from '@hal/kinematics';
+import { HalError, normalizeAngle, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 import type { ContactTest, FreeSpaceTest } from './contact.js';
 import { MotionExecutor } from './motion-executor.js';

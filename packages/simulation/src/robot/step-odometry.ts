@@ -1,5 +1,6 @@
-import { getStepsPerCm, integrateOdometry, normalizeAngle } from '@hal/kinematics';
-import type { PlanarPose, StepPlan } from '@hal/kinematics';
+import { getStepsPerCm, integrateOdometry } from '@hal/kinematics';
+import type { PlanarPoseCm, StepPlan } from '@hal/kinematics';
+import { normalizeAngle } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 
 /** The heading is wrapped and its sine and cosine recomputed every this many master steps. */
@@ -73,7 +74,7 @@ export class StepOdometry {
   #slave = 0;
   #periods: Periods | undefined;
 
-  constructor(start: PlanarPose) {
+  constructor(start: PlanarPoseCm) {
     this.#xCm = start.xCm;
     this.#yCm = start.yCm;
     this.#heading = start.headingRad;
@@ -81,7 +82,7 @@ export class StepOdometry {
     this.#sin = Math.sin(this.#heading);
   }
 
-  get pose(): PlanarPose {
+  get pose(): PlanarPoseCm {
     return { xCm: this.#xCm, yCm: this.#yCm, headingRad: normalizeAngle(this.#heading) };
   }
   get xCm(): number {

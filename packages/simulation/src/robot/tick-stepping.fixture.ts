@@ -1,6 +1,6 @@
-import { integrateOdometry, MovePlan, normalizeAngle, VelocityPlan } from '@hal/kinematics';
-import type { PlanarPose, StepPlan } from '@hal/kinematics';
-import { V1_ROBOT } from '@hal/types';
+import { integrateOdometry, MovePlan, VelocityPlan } from '@hal/kinematics';
+import type { PlanarPoseCm, StepPlan } from '@hal/kinematics';
+import { normalizeAngle, V1_ROBOT } from '@hal/types';
 import { discContact } from '../shapes.js';
 import type { Solid } from '../shapes.js';
 import { blockingContact } from './contact.js';
@@ -42,7 +42,7 @@ interface TickRobot {
   spec: TickRobotSpec;
   plan: StepPlan;
   limitUs: number;
-  pose: PlanarPose;
+  pose: PlanarPoseCm;
   result: TickResult;
 }
 

@@ -7,6 +7,7 @@ import type { HardwareAbstractionLayer } from '../interfaces.js';
 import { DeviceInfoSchema, PoseSchema, SafetyStatusSchema } from '../pose.js';
 import type { Pose } from '../pose.js';
 import { HALToolResultSchema } from '../result.js';
+import { angleDifference } from '../vocabulary/angle.js';
 import type { HALToolResult } from '../result.js';
 import { describeBoundaryContract } from './contract-boundary.js';
 import { describeCapabilityContract } from './contract-capabilities.js';
@@ -36,10 +37,6 @@ function expectFailure(result: HALToolResult, code: HalErrorCode): void {
 function expectSuccess(result: HALToolResult): void {
   expect(HALToolResultSchema.safeParse(result).success, JSON.stringify(result)).toBe(true);
   expect(result.success, JSON.stringify(result)).toBe(true);
-}
-
-function angleDiff(a: number, b: number): number {
-  return Math.atan2(Math.sin(a - b), Math.cos(a - b));
 }
 
 /**
@@ -254,7 +251,7 @@ export function describeHalContract(name: string, options: HalContractOptions): 
           await ready();
           expectSuccess(await hal.locomotion.rotate('left', 90));
           let now = await pose();
-          expect(Math.abs(angleDiff(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
+          expect(Math.abs(angleDifference(now.rotation.yaw, Math.PI / 2))).toBeLessThan(yawTol);
           expect(Math.hypot(now.position.x, now.position.y)).toBeLessThan(posTol);
           expectSuccess(await hal.locomotion.moveForward(5));
           now = await pose();
@@ -267,7 +264,7 @@ export function describeHalContract(name: string, options: HalContractOptions): 
         await ready();
         expectSuccess(await hal.locomotion.rotate('right', 90));
         const now = await pose();
-        expect(Math.abs(angleDiff(now.rotation.yaw, -Math.PI / 2))).toBeLessThan(yawTol);
+        expect(Math.abs(angleDifference(now.rotation.yaw, -Math.PI / 2))).toBeLessThan(yawTol);
       });
 
       it('moveTo(x, y, 0) arrives at the point', { timeout }, async () => {

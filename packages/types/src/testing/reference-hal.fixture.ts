@@ -12,11 +12,7 @@ import type {
 import type { DeviceInfo, Pose, SafetyStatus } from '../pose.js';
 import { maxLinearSpeedMPerS, V1_ROBOT } from '../robot-config.js';
 import { HalBoundary } from '../validation.js';
-
-function wrap(angle: number): number {
-  const a = Math.atan2(Math.sin(angle), Math.cos(angle));
-  return a === -Math.PI ? Math.PI : a;
-}
+import { normalizeAngle } from '../vocabulary/angle.js';
 
 export class ReferenceHAL implements HardwareAbstractionLayer {
   readonly mode = 'simulation' as const;
@@ -55,7 +51,7 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
           const v = (maxLinearSpeedMPerS(V1_ROBOT) * 100) / 255;
           const dl = p.left * v * seconds;
           const dr = p.right * v * seconds;
-          this.#yaw = wrap(this.#yaw + (dr - dl) / V1_ROBOT.wheelBaseCm);
+          this.#yaw = normalizeAngle(this.#yaw + (dr - dl) / V1_ROBOT.wheelBaseCm);
           forward((dl + dr) / 2);
         }),
       moveTo: (x, y, z, speed) =>
@@ -67,7 +63,7 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
       rotate: (direction, degrees) =>
         b.call('rotate', { direction, degrees }, async (p) => {
           const sign = p.direction === 'left' ? 1 : -1;
-          this.#yaw = wrap(this.#yaw + (sign * p.degrees * Math.PI) / 180);
+          this.#yaw = normalizeAngle(this.#yaw + (sign * p.degrees * Math.PI) / 180);
         }),
       moveForward: (distanceCm) =>
         b.call('moveForward', { distanceCm }, async (p) => forward(p.distanceCm)),
