@@ -4,7 +4,8 @@ import type { HALMode } from './mode.js';
 import { failureResult, successResult } from './result.js';
 import type { HALToolResult } from './result.js';
 import type { RobotConfig } from './robot-config.js';
-import { createCallSchemas, MOTION_CALLS } from './schemas/calls.js';
+import { MOTION_CALLS } from './schemas/call-table.js';
+import { createCallSchemas } from './schemas/calls.js';
 import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
 import { compileCallSchemas } from './schemas/compiled.js';
 
