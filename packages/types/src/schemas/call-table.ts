@@ -1,4 +1,4 @@
-import { z } from 'zod';
+import type { z } from 'zod';
 import { CAPABILITIES } from '../capabilities.js';
 import type { RobotConfig } from '../robot-config.js';
 import { createCallSchemas, V1_CALL_SCHEMAS } from './calls.js';
