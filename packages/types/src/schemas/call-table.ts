@@ -47,6 +47,11 @@ export interface CallSpec {
   readonly lane: CallLane;
   /** Only the controlling client may make it (where a HAL is served to several clients). */
   readonly controllerOnly: boolean;
+  /**
+   * Answers synchronously from cached state and never throws (`isEmergencyStopped`,
+   * `getSafetyStatus`): a forwarding HAL answers it from its own cache.
+   */
+  readonly cached: boolean;
   /** The parameter names, in argument order. */
   readonly params: readonly string[];
   /** The parameters as one object schema, with limits from a robot configuration. */
@@ -73,7 +78,10 @@ function schemasFor(config: RobotConfig): CallSchemas {
   return schemas;
 }
 
-type Declared = Omit<CallSpec, 'name' | 'method' | 'params' | 'paramsSchema' | 'data'>;
+type Declared = Omit<
+  CallSpec,
+  'name' | 'method' | 'params' | 'paramsSchema' | 'data' | 'cached'
+> & { readonly cached?: boolean };
 
 function declare(name: CallName, spec: Declared): CallSpec {
   const shape = (V1_CALL_SCHEMAS[name] as unknown as { shape: Record<string, unknown> }).shape;
@@ -84,6 +92,7 @@ function declare(name: CallName, spec: Declared): CallSpec {
     paramsSchema: (config: RobotConfig) => schemasFor(config)[name],
     data: CALL_DATA_SCHEMAS[name],
     ...spec,
+    cached: spec.cached ?? false,
     tool: Object.freeze(spec.tool),
   });
 }
@@ -219,10 +228,12 @@ export const HAL_CALL_TABLE: CallTable = Object.freeze([
   }),
   declare('getSafetyStatus', {
     ...read('safety'),
+    cached: true,
     tool: { name: 'get_safety_status', summary: 'Read the safety state.' },
   }),
   declare('isEmergencyStopped', {
     ...read('safety'),
+    cached: true,
     tool: {
       name: 'is_emergency_stopped',
       summary: 'Whether the emergency stop is latched.',
