@@ -1,4 +1,4 @@
-import type { HALMode } from '@hal/types';
+import type { CallTable, HALMode } from '@hal/types';
 import type { RemoteLogger } from '../logger.js';
 import type { WebSocketConstructor } from './websocket.js';
 
@@ -30,6 +30,8 @@ export interface RemoteHALOptions {
   /** First delay before reconnecting, ms; doubles up to 5000. Default 250. */
   reconnectDelayMs?: number;
   logger?: RemoteLogger;
+  /** The calls this HAL forwards; default the HAL's own call table. */
+  calls?: CallTable;
 }
 
 export const REMOTE_DEFAULTS = {

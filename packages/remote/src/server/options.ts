@@ -1,3 +1,4 @@
+import type { CallTable } from '@hal/types';
 import type { RemoteLogger } from '../logger.js';
 
 /** How {@link serveHal} serves a HAL. */
@@ -20,6 +21,8 @@ export interface ServeHalOptions {
   /** `device_id` of the server's messages. Default the served HAL's device id. */
   deviceId?: string;
   logger?: RemoteLogger;
+  /** The calls served; default the HAL's own call table. */
+  calls?: CallTable;
 }
 
 export const SERVE_DEFAULTS = {
