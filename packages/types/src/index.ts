@@ -102,7 +102,13 @@ export type {
   CallTable,
   CallToolSpec,
 } from './schemas/call-table.js';
-export { argsFromObject, invokeCall, invokeSpec } from './schemas/invoke-call.js';
+export {
+  argsFromObject,
+  callMethod,
+  invokeCall,
+  invokeSpec,
+  objectFromArgs,
+} from './schemas/invoke-call.js';
 export { forwardCalls } from './schemas/forward-calls.js';
 export type { ForwardedSubsystems } from './schemas/forward-calls.js';
 

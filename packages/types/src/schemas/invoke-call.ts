@@ -13,6 +13,20 @@ export async function invokeSpec(
   spec: CallSpec,
   args: readonly unknown[],
 ): Promise<unknown> {
+  const value: unknown = await callMethod(hal, spec, args);
+  return spec.kind === 'void' ? undefined : value;
+}
+
+/**
+ * Calls `spec`'s method on `hal` with `args` as it is: a synchronous answer stays synchronous and
+ * a throw is thrown (for `log`, which answers nothing and must run at once). Throws
+ * NOT_IMPLEMENTED when the HAL has no such subsystem or method.
+ */
+export function callMethod(
+  hal: HardwareAbstractionLayer,
+  spec: CallSpec,
+  args: readonly unknown[],
+): unknown {
   const target = (hal as unknown as Record<string, unknown>)[spec.subsystem] as
     Record<string, unknown> | undefined;
   const method = target?.[spec.method];
@@ -21,8 +35,7 @@ export async function invokeSpec(
       details: { call: spec.name },
     });
   }
-  const value: unknown = await (method as (...a: unknown[]) => unknown).apply(target, [...args]);
-  return spec.kind === 'void' ? undefined : value;
+  return (method as (...a: unknown[]) => unknown).apply(target, [...args]);
 }
 
 /**
@@ -52,4 +65,9 @@ export function argsFromObject(
   const args = spec.params.map((param) => named[param]);
   while (args.length > 0 && args[args.length - 1] === undefined) args.pop();
   return args;
+}
+
+/** The named arguments of `spec` from positional ones (`[10]` -> `{ distanceCm: 10 }`). */
+export function objectFromArgs(spec: CallSpec, args: readonly unknown[]): Record<string, unknown> {
+  return Object.fromEntries(spec.params.map((param, i) => [param, args[i]]));
 }
