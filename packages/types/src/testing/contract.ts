@@ -11,6 +11,7 @@ import type { HALToolResult } from '../result.js';
 import { describeBoundaryContract } from './contract-boundary.js';
 import { describeCapabilityContract } from './contract-capabilities.js';
 import { describeLifecycleContract } from './contract-lifecycle.js';
+import { describeResultContract } from './contract-results.js';
 
 /** How the contract suite gets, and gets rid of, the HAL under test. */
 export interface HalContractOptions {
@@ -325,5 +326,6 @@ export function describeHalContract(name: string, options: HalContractOptions): 
     describeBoundaryContract(groups);
     describeLifecycleContract(groups);
     describeCapabilityContract(groups);
+    describeResultContract(groups);
   });
 }
