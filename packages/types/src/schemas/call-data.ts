@@ -10,7 +10,7 @@ const PoseDataSchema = z.looseObject({
 });
 
 /** What a motion reports; each world may add more (steps, move ids, divergence). */
-const MotionDataSchema = z.looseObject({ pose: PoseDataSchema.optional() });
+export const MOTION_DATA_SCHEMA: z.ZodType = z.looseObject({ pose: PoseDataSchema.optional() });
 
 const LedSchema = z.looseObject({
   r: z.number().int().min(0).max(255),
@@ -20,20 +20,17 @@ const LedSchema = z.looseObject({
 });
 
 /**
- * The `data` of a successful result of every call, or the value a value call answers with: the
- * shape both worlds share (loose objects: a world may add fields, never rename them).
+ * The `data` of a successful result of every call but the plain motions (which answer
+ * {@link MOTION_DATA_SCHEMA}), or the value a value call answers with: the shape both worlds
+ * share (loose objects: a world may add fields, never rename them).
  */
-export const CALL_DATA_SCHEMAS: Readonly<Record<CallName, z.ZodType>> = Object.freeze({
+export const CALL_DATA_SCHEMAS: Readonly<Partial<Record<CallName, z.ZodType>>> = Object.freeze({
   ...READ_RESULT_SCHEMAS,
   drive: z.looseObject({
     leftSps: z.number().describe('left wheel speed, steps/s'),
     rightSps: z.number().describe('right wheel speed, steps/s'),
     running: z.boolean().describe('the wheels keep turning after the call answered'),
   }),
-  moveTo: MotionDataSchema,
-  rotate: MotionDataSchema,
-  moveForward: MotionDataSchema,
-  moveBackward: MotionDataSchema,
   stop: z.looseObject({ stopped: z.boolean(), pose: PoseDataSchema.optional() }),
   speak: z.looseObject({ spoken: z.string() }),
   setLED: z.looseObject({ led: LedSchema }),

@@ -3,7 +3,7 @@ import { CAPABILITIES } from '../capabilities.js';
 import type { RobotConfig } from '../robot-config.js';
 import { createCallSchemas, V1_CALL_SCHEMAS } from './calls.js';
 import type { CallName, CallSchemas } from './calls.js';
-import { CALL_DATA_SCHEMAS } from './call-data.js';
+import { CALL_DATA_SCHEMAS, MOTION_DATA_SCHEMA } from './call-data.js';
 
 /** The subsystem of the HAL a call belongs to. */
 export type CallSubsystem = 'locomotion' | 'vision' | 'communication' | 'safety';
@@ -83,6 +83,12 @@ type Declared = Omit<
   'name' | 'method' | 'params' | 'paramsSchema' | 'data' | 'cached'
 > & { readonly cached?: boolean };
 
+function dataSchema(name: CallName, kind: CallKind): z.ZodType {
+  const schema = CALL_DATA_SCHEMAS[name] ?? (kind === 'motion' ? MOTION_DATA_SCHEMA : undefined);
+  if (schema === undefined) throw new Error(`call-data.ts has no result schema for "${name}"`);
+  return schema;
+}
+
 function declare(name: CallName, spec: Declared): CallSpec {
   const shape = (V1_CALL_SCHEMAS[name] as unknown as { shape: Record<string, unknown> }).shape;
   return Object.freeze({
@@ -90,7 +96,7 @@ function declare(name: CallName, spec: Declared): CallSpec {
     method: name,
     params: Object.freeze(Object.keys(shape)),
     paramsSchema: (config: RobotConfig) => schemasFor(config)[name],
-    data: CALL_DATA_SCHEMAS[name],
+    data: dataSchema(name, spec.kind),
     ...spec,
     cached: spec.cached ?? false,
     tool: Object.freeze(spec.tool),
