@@ -1,68 +1,74 @@
 import { z } from 'zod';
-import { HalError } from '@hal/types';
-import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import { HAL_CALL_TABLE, HalError, V1_ROBOT, argsFromObject, invokeSpec } from '@hal/types';
+import type { CallSpec, CallTable, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 
 /*
  * A fleet command is a HAL call written as data, so a CLI, a config file or a browser demo can
  * send the same command to many robots. The HAL still validates every parameter against each
  * robot's own limits; this schema only checks the shape.
  */
-export const FleetCommandSchema = z
-  .discriminatedUnion('kind', [
-    z.object({
-      kind: z.literal('drive'),
-      left: z.number().describe('Left wheel power, -255..255'),
-      right: z.number().describe('Right wheel power, -255..255'),
-      durationMs: z.number().optional().describe('Stop after this many ms'),
-    }),
-    z.object({
-      kind: z.literal('moveTo'),
-      x: z.number().describe('Target x, metres (world frame)'),
-      y: z.number().describe('Target y, metres'),
-      z: z.number().optional().describe('Target z, metres (default 0)'),
-      speed: z.number().optional().describe('Cruise speed, m/s'),
-    }),
-    z.object({
-      kind: z.literal('rotate'),
-      direction: z.enum(['left', 'right']),
-      degrees: z.number().describe('How far, degrees, > 0'),
-    }),
-    z.object({
-      kind: z.literal('moveForward'),
-      distanceCm: z.number().describe('How far, cm, > 0'),
-    }),
-    z.object({
-      kind: z.literal('moveBackward'),
-      distanceCm: z.number().describe('How far, cm, > 0'),
-    }),
-    z.object({ kind: z.literal('stop') }),
-    z.object({
-      kind: z.literal('setLED'),
-      r: z.number(),
-      g: z.number(),
-      b: z.number(),
-      pattern: z.enum(['solid', 'blink', 'pulse']).optional(),
-    }),
-  ])
-  .describe('One HAL call, as data, for every member of a fleet');
 
-/** One HAL call, as data (see {@link FleetCommandSchema}). */
-export type FleetCommand = z.infer<typeof FleetCommandSchema>;
+/** The calls a fleet sends as commands: every locomotion command (motions and stop), and the LED. */
+export function isFleetCall(spec: CallSpec): boolean {
+  return (spec.subsystem === 'locomotion' && spec.kind !== 'value') || spec.name === 'setLED';
+}
+
+/** Parameters a fleet command may leave out, with the value sent for them. */
+const FLEET_DEFAULTS: Readonly<Record<string, Readonly<Record<string, unknown>>>> = {
+  moveTo: { z: 0 },
+};
+
+/** A parameter's schema with its type and description but none of one robot's limits. */
+function shapeOnly(schema: z.ZodType): z.ZodType {
+  if (schema instanceof z.ZodOptional) return shapeOnly(schema.unwrap() as z.ZodType).optional();
+  const loose =
+    schema instanceof z.ZodNumber
+      ? z.number()
+      : schema instanceof z.ZodString
+        ? z.string()
+        : schema;
+  return schema.description === undefined ? loose : loose.describe(schema.description);
+}
+
+function commandSchema(spec: CallSpec): z.ZodObject {
+  const params = spec.paramsSchema(V1_ROBOT) as z.ZodObject;
+  const defaults = FLEET_DEFAULTS[spec.name] ?? {};
+  const shape = Object.fromEntries(
+    Object.entries(params.shape as Record<string, z.ZodType>).map(([name, field]) => {
+      const loose = shapeOnly(field);
+      return [name, name in defaults ? loose.optional() : loose];
+    }),
+  );
+  return z.object({ kind: z.literal(spec.name), ...shape });
+}
+
+/** The schema of the fleet commands of a call table. */
+export function fleetCommandSchema(table: CallTable = HAL_CALL_TABLE): z.ZodType<FleetCommand> {
+  const options = table.filter(isFleetCall).map(commandSchema);
+  return z
+    .discriminatedUnion('kind', options as [z.ZodObject, ...z.ZodObject[]])
+    .describe(
+      'One HAL call, as data, for every member of a fleet',
+    ) as unknown as z.ZodType<FleetCommand>;
+}
+
+/** One HAL call, as data: its name as `kind`, its parameters by name. */
+export type FleetCommand = { kind: string } & Record<string, unknown>;
+
+/** The HAL's own fleet commands (see {@link fleetCommandSchema}). */
+export const FleetCommandSchema: z.ZodType<FleetCommand> = fleetCommandSchema();
 
 /** The command kinds a fleet understands. */
-export const FLEET_COMMAND_KINDS = [
-  'drive',
-  'moveTo',
-  'rotate',
-  'moveForward',
-  'moveBackward',
-  'stop',
-  'setLED',
-] as const satisfies readonly FleetCommand['kind'][];
+export const FLEET_COMMAND_KINDS: readonly string[] = Object.freeze(
+  HAL_CALL_TABLE.filter(isFleetCall).map((spec) => spec.name),
+);
 
 /** Checks a command; a bad one is an INVALID_PARAMETER HalError naming what is wrong. */
-export function parseFleetCommand(input: unknown): FleetCommand {
-  const parsed = FleetCommandSchema.safeParse(input);
+export function parseFleetCommand(
+  input: unknown,
+  schema: z.ZodType<FleetCommand> = FleetCommandSchema,
+): FleetCommand {
+  const parsed = schema.safeParse(input);
   if (parsed.success) return parsed.data;
   const issues = parsed.error.issues
     .map((i) => `${i.path.length > 0 ? i.path.join('.') : 'command'}: ${i.message}`)
@@ -73,25 +79,16 @@ export function parseFleetCommand(input: unknown): FleetCommand {
 }
 
 /** Runs a command on one HAL through its own calls (and so its own validation). */
-export function runFleetCommand(
+export async function runFleetCommand(
   hal: HardwareAbstractionLayer,
   command: FleetCommand,
+  table: CallTable = HAL_CALL_TABLE,
 ): Promise<HALToolResult> {
-  const loco = hal.locomotion;
-  switch (command.kind) {
-    case 'drive':
-      return loco.drive(command.left, command.right, command.durationMs);
-    case 'moveTo':
-      return loco.moveTo(command.x, command.y, command.z ?? 0, command.speed);
-    case 'rotate':
-      return loco.rotate(command.direction, command.degrees);
-    case 'moveForward':
-      return loco.moveForward(command.distanceCm);
-    case 'moveBackward':
-      return loco.moveBackward(command.distanceCm);
-    case 'stop':
-      return loco.stop();
-    case 'setLED':
-      return hal.communication.setLED(command.r, command.g, command.b, command.pattern);
+  const spec = table.find((entry) => entry.name === command.kind && isFleetCall(entry));
+  if (spec === undefined) {
+    throw new HalError('INVALID_PARAMETER', `not a fleet command kind: "${command.kind}"`);
   }
+  const named = { ...FLEET_DEFAULTS[spec.name] };
+  for (const [key, value] of Object.entries(command)) if (value !== undefined) named[key] = value;
+  return (await invokeSpec(hal, spec, argsFromObject(spec, named))) as HALToolResult;
 }

@@ -8,6 +8,8 @@ export type { FleetMode, FleetReport, MemberResult } from './report.js';
 export {
   FLEET_COMMAND_KINDS,
   FleetCommandSchema,
+  fleetCommandSchema,
+  isFleetCall,
   parseFleetCommand,
   runFleetCommand,
 } from './commands.js';

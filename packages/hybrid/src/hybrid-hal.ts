@@ -1,5 +1,6 @@
 import {
   failureResult,
+  HAL_CALL_TABLE,
   HalBoundary,
   HalError,
   scoped,
@@ -35,7 +36,7 @@ import {
 import type { Divergence, DivergenceTolerance } from './divergence.js';
 import type { HybridHALOptions } from './options.js';
 import { createSafety } from './safety.js';
-import { createCommunication, createLocomotion, createVision } from './subsystems.js';
+import { createSubsystems } from './subsystems.js';
 
 /** What a divergence listener is told after a call left the twin beyond its tolerance. */
 export interface DivergenceEvent {
@@ -131,6 +132,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
       isEmergencyStopped: () => this.safety.isEmergencyStopped(),
       isReady: () => this.#ready,
       now: this.#now,
+      ...(options.calls === undefined ? {} : { calls: options.calls }),
     });
     const context: HybridContext = {
       physical: this.physical,
@@ -151,10 +153,15 @@ export class HybridHAL implements HardwareAbstractionLayer {
         }
       },
     };
-    this.locomotion = createLocomotion(context);
-    this.vision = createVision(context);
-    this.communication = createCommunication(context);
-    this.safety = createSafety(context);
+    const subsystems = createSubsystems(
+      context,
+      createSafety(context),
+      options.calls ?? HAL_CALL_TABLE,
+    );
+    this.locomotion = subsystems.locomotion;
+    this.vision = subsystems.vision;
+    this.communication = subsystems.communication;
+    this.safety = subsystems.safety;
   }
 
   /**

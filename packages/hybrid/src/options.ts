@@ -1,4 +1,4 @@
-import type { HardwareAbstractionLayer, Logger, RobotConfig } from '@hal/types';
+import type { CallTable, HardwareAbstractionLayer, Logger, RobotConfig } from '@hal/types';
 import type { DivergenceTolerance } from './divergence.js';
 
 /** What a {@link HybridHAL} is made of. */
@@ -20,6 +20,8 @@ export interface HybridHALOptions {
   robotConfig?: () => RobotConfig;
   /** The clock results are stamped with, ms. Default `Date.now`. */
   now?: () => number;
+  /** The calls this HAL offers, run on both robots as their kind says; default the HAL's own. */
+  calls?: CallTable;
   /**
    * 'physical' (default): at `initialize()` the twin (a SimulationHAL) takes the physical robot's
    * wheel diameter, wheel base and steps per revolution, calibrated values included. 'own': the

@@ -1,93 +1,78 @@
-import type { CommunicationInterface, LocomotionInterface, VisionInterface } from '@hal/types';
+import { argsFromObject, callMethod, forwardCalls, invokeSpec, objectFromArgs } from '@hal/types';
+import type {
+  CallName,
+  CallSpec,
+  CallTable,
+  ForwardedSubsystems,
+  HALToolResult,
+  SafetyInterface,
+} from '@hal/types';
 import type { HybridContext } from './context.js';
 
 /**
- * Every motion runs on both robots; the pose is the physical robot's. A `moveTo` target is a point
- * of the physical robot's frame, carried into the twin's frame for the twin.
+ * Besides every locomotion command, the calls the twin runs too, so a twin's UI shows them (the
+ * LED). Speech, sound and logs go to the physical robot alone.
  */
-export function createLocomotion(ctx: HybridContext): LocomotionInterface {
-  const { physical: p, twin: t } = ctx;
-  return {
-    drive: (left, right, durationMs) =>
-      ctx.run(
-        'drive',
-        { left, right, durationMs },
-        (a) => p.locomotion.drive(a.left, a.right, a.durationMs),
-        (a) => t.locomotion.drive(a.left, a.right, a.durationMs),
-      ),
-    moveTo: (x, y, z, speed) =>
-      ctx.run(
-        'moveTo',
-        { x, y, z, speed },
-        (a) => p.locomotion.moveTo(a.x, a.y, a.z, a.speed),
-        (a) => {
-          const target = ctx.twinPoint(a.x, a.y);
-          return t.locomotion.moveTo(target.x, target.y, a.z, a.speed);
-        },
-      ),
-    rotate: (direction, degrees) =>
-      ctx.run(
-        'rotate',
-        { direction, degrees },
-        (a) => p.locomotion.rotate(a.direction, a.degrees),
-        (a) => t.locomotion.rotate(a.direction, a.degrees),
-      ),
-    moveForward: (distanceCm) =>
-      ctx.run(
-        'moveForward',
-        { distanceCm },
-        (a) => p.locomotion.moveForward(a.distanceCm),
-        (a) => t.locomotion.moveForward(a.distanceCm),
-      ),
-    moveBackward: (distanceCm) =>
-      ctx.run(
-        'moveBackward',
-        { distanceCm },
-        (a) => p.locomotion.moveBackward(a.distanceCm),
-        (a) => t.locomotion.moveBackward(a.distanceCm),
-      ),
-    stop: () =>
-      ctx.run(
-        'stop',
-        {},
-        () => p.locomotion.stop(),
-        () => t.locomotion.stop(),
-      ),
-    getPose: () => ctx.read('getPose', {}, () => p.locomotion.getPose()),
-  };
+const SHOWN_ON_TWIN: ReadonlySet<string> = new Set(['setLED']);
+
+function onTwin(spec: CallSpec): boolean {
+  return spec.subsystem === 'locomotion' || SHOWN_ON_TWIN.has(spec.name);
 }
 
 /**
- * Sensing is the physical robot's alone: what it lacks fails as it fails there (NOT_IMPLEMENTED),
- * never filled in from the twin's simulated sensors.
+ * The subsystems of a HybridHAL, one method per call of `table`:
+ * - every motion runs on both robots; the pose is the physical robot's. A `moveTo` target is a
+ *   point of the physical robot's frame, carried into the twin's frame for the twin;
+ * - sensing is the physical robot's alone: what it lacks fails as it fails there
+ *   (NOT_IMPLEMENTED), never filled in from the twin's simulated sensors;
+ * - speech, sound and logs go to the physical robot; the LED to both;
+ * - safety is `safety` (safety.ts), which latches both.
+ * Every call is guarded and validated once by the hybrid's boundary.
  */
-export function createVision(ctx: HybridContext): VisionInterface {
-  const v = ctx.physical.vision;
-  return {
-    captureFrame: () => ctx.read('captureFrame', {}, () => v.captureFrame()),
-    scan: (mode) => ctx.read('scan', { mode }, (a) => v.scan(a.mode)),
-    getDistanceSensors: () => ctx.read('getDistanceSensors', {}, () => v.getDistanceSensors()),
-    getLineSensors: () => ctx.read('getLineSensors', {}, () => v.getLineSensors()),
-    getIMU: () => ctx.read('getIMU', {}, () => v.getIMU()),
-  };
-}
-
-/** Speech, sound and logs go to the physical robot; the LED to both, so a twin's UI shows it. */
-export function createCommunication(ctx: HybridContext): CommunicationInterface {
+export function createSubsystems(
+  ctx: HybridContext,
+  safety: SafetyInterface,
+  table: CallTable,
+): ForwardedSubsystems {
   const { physical: p, twin: t } = ctx;
-  return {
-    speak: (text, urgency) =>
-      ctx.run('speak', { text, urgency }, (a) => p.communication.speak(a.text, a.urgency)),
-    setLED: (r, g, b, pattern) =>
-      ctx.run(
-        'setLED',
-        { r, g, b, pattern },
-        (a) => p.communication.setLED(a.r, a.g, a.b, a.pattern),
-        (a) => t.communication.setLED(a.r, a.g, a.b, a.pattern),
-      ),
-    playSound: (soundId) =>
-      ctx.run('playSound', { soundId }, (a) => p.communication.playSound(a.soundId)),
-    log: (message, level) =>
-      ctx.notify('log', { message, level }, (a) => p.communication.log(a.message, a.level)),
+  const forward = (spec: CallSpec, args: unknown[]): unknown => {
+    const name = spec.name as CallName; // an extended table's call is validated by its own schema
+    const named = objectFromArgs(spec, args);
+    const on = (hal: typeof p) => (a: object) =>
+      invokeSpec(
+        hal,
+        spec,
+        argsFromObject(spec, a as Record<string, unknown>),
+      ) as Promise<HALToolResult>;
+    switch (spec.kind) {
+      case 'value':
+        return ctx.read(name, named, on(p));
+      case 'void':
+        return ctx.notify(name, named, (a) => {
+          callMethod(p, spec, argsFromObject(spec, a as Record<string, unknown>));
+        });
+      default:
+        return ctx.run(name, named, on(p), onTwin(spec) ? on(t) : undefined);
+    }
   };
+  return forwardCalls(
+    forward,
+    {
+      moveTo: (x: number, y: number, z: number, speed?: number) =>
+        ctx.run(
+          'moveTo',
+          { x, y, z, speed },
+          (a) => p.locomotion.moveTo(a.x, a.y, a.z, a.speed),
+          (a) => {
+            const target = ctx.twinPoint(a.x, a.y);
+            return t.locomotion.moveTo(target.x, target.y, a.z, a.speed);
+          },
+        ),
+      emergencyStop: safety.emergencyStop,
+      resetEmergencyStop: safety.resetEmergencyStop,
+      isEmergencyStopped: safety.isEmergencyStopped,
+      getSafetyStatus: safety.getSafetyStatus,
+    },
+    table,
+  );
 }

@@ -1,6 +1,7 @@
 import {
   HalError,
   V1_ROBOT,
+  invokeSpec,
   isHalError,
   sanitizeEstopReason,
   scoped,
@@ -8,6 +9,7 @@ import {
   toHalError,
 } from '@hal/types';
 import type {
+  CallTable,
   HalErrorPayload,
   HardwareAbstractionLayer,
   Logger,
@@ -24,7 +26,8 @@ import { resolveConnection } from './connection.js';
 import { refuseServedTwice } from './served-probe.js';
 import { wheelPowersFor } from './drive-mapping.js';
 import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
-import { HAL_CALLS } from './hal-calls.js';
+import { natsCalls } from './hal-calls.js';
+import type { NatsCall } from './hal-calls.js';
 import { jpegSize } from './jpeg-size.js';
 import {
   CameraFrameRequestSchema,
@@ -60,6 +63,8 @@ export type GatewayOptions = NatsConnectionSource & {
   /** Geometry and limits for mapping body velocities onto wheels. Default the V1 robot. */
   robot?: RobotConfig;
   logger?: Logger;
+  /** The calls served on `hal.call.req`; default the HAL's own call table. */
+  calls?: CallTable;
 };
 
 /** A HAL served on NATS. The HAL stays the caller's: `close()` does not clean it up. */
@@ -110,6 +115,7 @@ class Gateway implements HalGateway {
   readonly #log: ScopedLogger;
   readonly #watchdog: ControllerWatchdog;
   readonly #cpu = new CpuMeter();
+  readonly #calls: Readonly<Record<string, NatsCall>>;
   #streaming = false;
   #closed = false;
 
@@ -123,6 +129,7 @@ class Gateway implements HalGateway {
     this.#isDefault = options.defaultDevice ?? true;
     this.#robot = options.robot ?? V1_ROBOT;
     this.#log = scoped(options.logger ?? silentLogger, 'hal:nats:gateway');
+    this.#calls = natsCalls(options.calls);
     subjectFor('call', this.deviceId); // refuses a bad device id before anything is served
     this.#watchdog = new ControllerWatchdog(options.controllerTimeoutMs ?? 3000, (client) => {
       this.#log.warn('controller went quiet during an open-ended drive: stopping', { client });
@@ -239,7 +246,7 @@ class Gateway implements HalGateway {
     args: unknown[],
     priority: boolean,
   ): Promise<Omit<HalCallReply, 'request_id'>> {
-    const spec = HAL_CALLS[name];
+    const spec = Object.hasOwn(this.#calls, name) ? this.#calls[name] : undefined;
     // every reply carries the latch, and its reason while latched, so a client's status has both
     const safety = () => {
       const emergency_stopped = this.hal.safety.isEmergencyStopped();
@@ -258,7 +265,7 @@ class Gateway implements HalGateway {
     }
     const run = async (): Promise<Omit<HalCallReply, 'request_id'>> => {
       try {
-        const out = await spec.invoke(this.hal, args);
+        const out = await invokeSpec(this.hal, spec.spec, args);
         return spec.kind === 'result' ? { result: out, ...safety() } : { value: out, ...safety() };
       } catch (thrown) {
         return { error: errorPayload(thrown), ...safety() };

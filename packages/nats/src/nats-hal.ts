@@ -1,13 +1,16 @@
 import {
+  HAL_CALL_TABLE,
   HalError,
   HALToolResultSchema,
   failureResult,
+  forwardCalls,
   sanitizeEstopReason,
   successResult,
   scoped,
   silentLogger,
 } from '@hal/types';
 import type {
+  CallTable,
   Logger,
   ScopedLogger,
   CommunicationInterface,
@@ -16,9 +19,7 @@ import type {
   HALMode,
   HALToolResult,
   HardwareAbstractionLayer,
-  IMUReading,
   LocomotionInterface,
-  Pose,
   SafetyInterface,
   SafetyStatus,
   VisionInterface,
@@ -37,6 +38,7 @@ import {
 } from './messages.js';
 import type { CapabilityAnnouncement } from './messages.js';
 import { subjectFor } from './subjects.js';
+import { crossesNats, natsCallName } from './hal-calls.js';
 
 export type NatsHALOptions = NatsConnectionSource & {
   /** The device to drive (`hal.v1.dev.{deviceId}...`); omitted: the default device. */
@@ -55,19 +57,12 @@ export type NatsHALOptions = NatsConnectionSource & {
    */
   heartbeatMs?: number;
   logger?: Logger;
+  /** The calls this HAL forwards; default the HAL's own call table. */
+  calls?: CallTable;
 };
 
 let sequence = 0;
 const STOP_ON_CLEANUP_MS = 2000;
-/** Calls that move the robot: refused at once while the host's e-stop latch is set. */
-const MOTION_CALLS: ReadonlySet<string> = new Set([
-  'locomotion.drive',
-  'locomotion.moveTo',
-  'locomotion.rotate',
-  'locomotion.moveForward',
-  'locomotion.moveBackward',
-]);
-
 /**
  * A {@link HardwareAbstractionLayer} that drives a device through NATS: every call goes to the
  * device's gateway (`serveHalOnNats`) and comes back with the device's own result. The same
@@ -103,6 +98,10 @@ export class NatsHAL implements HardwareAbstractionLayer {
    */
   #hostLatch: string | undefined;
   #safety: SafetyStatus = { emergencyStopped: false, batteryLevel: 100, errors: [] };
+  /** Calls that move the robot (by NATS name): refused at once while the host's latch is set. */
+  readonly #motion: ReadonlySet<string>;
+  /** Stop and e-stop (by NATS name): sent with priority. */
+  readonly #safetyLane: ReadonlySet<string>;
 
   constructor(options: NatsHALOptions) {
     this.#options = options;
@@ -115,42 +114,32 @@ export class NatsHAL implements HardwareAbstractionLayer {
       mode: this.mode,
       capabilities: [],
     };
-    const result =
-      (call: string) =>
-      (...args: unknown[]) =>
-        this.#result(call, args);
-    const value =
-      <T>(call: string) =>
-      (...args: unknown[]) =>
-        this.#value<T>(call, args);
-    this.locomotion = {
-      drive: result('locomotion.drive'),
-      moveTo: result('locomotion.moveTo'),
-      rotate: result('locomotion.rotate'),
-      moveForward: result('locomotion.moveForward'),
-      moveBackward: result('locomotion.moveBackward'),
-      stop: result('locomotion.stop'),
-      getPose: value<Pose>('locomotion.getPose'),
-    };
-    this.vision = {
-      captureFrame: value<string>('vision.captureFrame'),
-      scan: value('vision.scan'),
-      getDistanceSensors: value('vision.getDistanceSensors'),
-      getLineSensors: value<number[]>('vision.getLineSensors'),
-      getIMU: value<IMUReading>('vision.getIMU'),
-    };
-    this.communication = {
-      speak: result('communication.speak'),
-      setLED: result('communication.setLED'),
-      playSound: result('communication.playSound'),
-      log: (message: string, level?: HALLogLevel) => this.#sendLog(message, level),
-    };
-    this.safety = {
-      emergencyStop: (reason?: string) => this.#emergencyStop(reason),
-      resetEmergencyStop: () => this.#resetEmergencyStop(),
-      isEmergencyStopped: () => this.#isEstopped(),
-      getSafetyStatus: () => this.#safetyStatus(),
-    };
+    const table = options.calls ?? HAL_CALL_TABLE;
+    const names = (kind: (spec: CallTable[number]) => boolean) =>
+      new Set(table.filter(kind).map(natsCallName));
+    this.#motion = names((spec) => spec.kind === 'motion');
+    this.#safetyLane = names((spec) => spec.lane === 'safety');
+    const subsystems = forwardCalls(
+      (spec, args) => {
+        const call = natsCallName(spec);
+        if (!crossesNats(spec)) {
+          return Promise.reject(new HalError('NOT_IMPLEMENTED', `${call} does not cross NATS`));
+        }
+        return spec.kind === 'value' ? this.#value(call, args) : this.#result(call, args);
+      },
+      {
+        log: (message: string, level?: HALLogLevel) => this.#sendLog(message, level),
+        emergencyStop: (reason?: string) => this.#emergencyStop(reason),
+        resetEmergencyStop: () => this.#resetEmergencyStop(),
+        isEmergencyStopped: () => this.#isEstopped(),
+        getSafetyStatus: () => this.#safetyStatus(),
+      },
+      table,
+    );
+    this.locomotion = subsystems.locomotion;
+    this.vision = subsystems.vision;
+    this.communication = subsystems.communication;
+    this.safety = subsystems.safety;
   }
 
   /** Connects, and learns the device's identity and capabilities; NOT_CONNECTED when it is not there. */
@@ -317,7 +306,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
     if (!this.#ready || link === undefined) {
       throw new HalError('NOT_READY', `${call}: the HAL is not initialised (call initialize())`);
     }
-    if (MOTION_CALLS.has(call) && this.#hostLatch !== undefined) {
+    if (this.#motion.has(call) && this.#hostLatch !== undefined) {
       throw new HalError(
         'EMERGENCY_STOPPED',
         `${call}: the emergency stop is latched; call safety.resetEmergencyStop() first`,
@@ -333,7 +322,7 @@ export class NatsHAL implements HardwareAbstractionLayer {
       { request_id: `${this.#clientId}-${(sequence += 1)}`, call, args: encodeArgs(args) },
       HalCallReplySchema,
       {
-        priority: call === 'safety.emergencyStop' || call === 'locomotion.stop',
+        priority: this.#safetyLane.has(call),
         ...(timeoutMs === undefined ? {} : { timeoutMs }),
       },
     );
@@ -354,9 +343,9 @@ export class NatsHAL implements HardwareAbstractionLayer {
     }
   }
 
-  async #value<T>(call: string, args: unknown[]): Promise<T> {
+  async #value(call: string, args: unknown[]): Promise<unknown> {
     const reply = await this.#call(call, args);
-    return reply.value as T;
+    return reply.value;
   }
 
   #sendLog(message: string, level: HALLogLevel | undefined): void {

@@ -1,5 +1,11 @@
-import { HalBoundary } from '@hal/types';
-import type { CallName, HALToolResult, HardwareAbstractionLayer, RobotConfig } from '@hal/types';
+import { HAL_CALL_TABLE, HalBoundary } from '@hal/types';
+import type {
+  CallName,
+  CallTable,
+  HALToolResult,
+  HardwareAbstractionLayer,
+  RobotConfig,
+} from '@hal/types';
 import { parseArguments } from './arguments.js';
 import { dispatch } from './dispatch.js';
 import { checkMotion, RateLimiter } from './leash.js';
@@ -31,6 +37,8 @@ export interface ToolExecutorOptions {
   tools?: HalTool[];
   /** The clock of the rate limit, ms. Default `Date.now`. */
   now?: () => number;
+  /** The calls the tools run; default the HAL's own call table (pass the one `tools` came from). */
+  calls?: CallTable;
 }
 
 /** Runs tool calls on a HAL. */
@@ -55,7 +63,26 @@ function validate(
   hal: HardwareAbstractionLayer,
   call: CallName,
   args: unknown,
+  table: CallTable,
 ) {
+  if (table !== HAL_CALL_TABLE) {
+    const spec = table.find((entry) => entry.name === call);
+    const own = HAL_CALL_TABLE.find((entry) => entry.name === call);
+    if (spec !== undefined && own === undefined) {
+      // a call of an extended table: the HAL's boundary does not know it; its schema does
+      const parsed = spec.paramsSchema(config).safeParse(args);
+      if (parsed.success)
+        return { ok: true as const, args: parsed.data as Record<string, unknown> };
+      const issue = parsed.error.issues[0];
+      return {
+        ok: false as const,
+        result: errorResult(
+          'INVALID_PARAMETER',
+          `${call}: "${issue?.path.join('.') ?? 'arguments'}" is invalid: ${issue?.message ?? 'invalid'}`,
+        ),
+      };
+    }
+  }
   const boundary = new HalBoundary({
     mode: hal.mode,
     config: () => config,
@@ -88,10 +115,11 @@ export function createToolExecutor(
   const leash = options.leash ?? {};
   const limiter = leash.rateLimit === undefined ? undefined : new RateLimiter(leash.rateLimit);
   const now = options.now ?? Date.now;
+  const table = options.calls ?? HAL_CALL_TABLE;
   const baseTimeout = options.timeoutMs ?? DEFAULT_TOOL_TIMEOUT_MS;
 
   async function run(tool: HalTool, args: Record<string, unknown>, timeoutMs: number) {
-    const work = dispatch(hal, tool.call as CallName, args);
+    const work = dispatch(hal, tool.call, args, table);
     let outcome: { value: unknown } | undefined;
     try {
       outcome = await withTimeout(work, timeoutMs);
@@ -140,7 +168,7 @@ export function createToolExecutor(
     const parsed = parseArguments(call.arguments);
     if (!parsed.ok) return errorResult('BAD_ARGUMENTS', `${tool.name}: ${parsed.message}`);
     const config = robotConfigOf(hal);
-    let checked = validate(config, hal, tool.call as CallName, parsed.args);
+    let checked = validate(config, hal, tool.call as CallName, parsed.args, table);
     if (!checked.ok) return checked.result;
     if (limiter !== undefined) {
       const waitMs = limiter.take(now());
@@ -162,7 +190,7 @@ export function createToolExecutor(
       }
       if (!decision.allow) return errorResult('DENIED', `${tool.name}: denied: ${decision.reason}`);
       if (decision.args !== undefined) {
-        checked = validate(config, hal, tool.call as CallName, decision.args);
+        checked = validate(config, hal, tool.call as CallName, decision.args, table);
         if (!checked.ok) return checked.result;
       }
     }

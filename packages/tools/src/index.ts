@@ -1,7 +1,7 @@
 export { halTools } from './tools.js';
 export type { HalTool, HalToolsOptions } from './tools.js';
 
-export { TOOL_CATALOG } from './catalog.js';
+export { TOOL_CATALOG, toolCatalog } from './catalog.js';
 export type { ToolEntry, ToolSafety } from './catalog.js';
 
 export type { JsonSchemaObject } from './json-schema.js';

@@ -1,7 +1,7 @@
-import { createCallSchemas, hasCapability } from '@hal/types';
-import type { CallName, HardwareAbstractionLayer, ReadCallName } from '@hal/types';
+import { HAL_CALL_TABLE, hasCapability } from '@hal/types';
+import type { CallName, CallTable, HardwareAbstractionLayer, ReadCallName } from '@hal/types';
 import type { z } from 'zod';
-import { TOOL_CATALOG } from './catalog.js';
+import { toolCatalog } from './catalog.js';
 import type { ToolSafety } from './catalog.js';
 import { toolParameters } from './json-schema.js';
 import type { JsonSchemaObject } from './json-schema.js';
@@ -48,6 +48,8 @@ export interface HalToolsOptions {
   include?: string[];
   /** Not these tools. */
   exclude?: string[];
+  /** The calls to make tools of; default the HAL's own call table. */
+  calls?: CallTable;
 }
 
 function describe(summary: string, schema: z.ZodType, parameters: JsonSchemaObject): string {
@@ -68,26 +70,30 @@ function describe(summary: string, schema: z.ZodType, parameters: JsonSchemaObje
  * robot's own limits. The emergency stop is always offered.
  */
 export function halTools(hal: HardwareAbstractionLayer, options: HalToolsOptions = {}): HalTool[] {
-  const schemas = createCallSchemas(robotConfigOf(hal));
+  const table = options.calls ?? HAL_CALL_TABLE;
+  const config = robotConfigOf(hal);
   const offered = hal.getDeviceInfo().capabilities;
-  return TOOL_CATALOG.filter(
-    (entry) =>
-      (entry.requires === undefined ||
-        entry.safety !== undefined ||
-        hasCapability(offered, entry.requires)) &&
-      (options.include === undefined || options.include.includes(entry.name)) &&
-      !(options.exclude ?? []).includes(entry.name),
-  ).map((entry) => {
-    const schema = schemas[entry.call] as z.ZodType;
-    const inputSchema =
-      entry.safety === 'estop' ? neverRefused(toolParameters(schema)) : toolParameters(schema);
-    return {
-      name: entry.name,
-      call: entry.call as CallName | ReadCallName,
-      description: describe(entry.summary, schema, inputSchema),
-      inputSchema,
-      ...(entry.safety === undefined ? {} : { safety: entry.safety }),
-      motion: entry.motion,
-    };
-  });
+  return toolCatalog(table)
+    .filter(
+      (entry) =>
+        (entry.requires === undefined ||
+          entry.safety !== undefined ||
+          hasCapability(offered, entry.requires)) &&
+        (options.include === undefined || options.include.includes(entry.name)) &&
+        !(options.exclude ?? []).includes(entry.name),
+    )
+    .map((entry) => {
+      const spec = table.find((call) => call.name === entry.call);
+      const schema = spec?.paramsSchema(config) as z.ZodType;
+      const inputSchema =
+        entry.safety === 'estop' ? neverRefused(toolParameters(schema)) : toolParameters(schema);
+      return {
+        name: entry.name,
+        call: entry.call as CallName | ReadCallName,
+        description: describe(entry.summary, schema, inputSchema),
+        inputSchema,
+        ...(entry.safety === undefined ? {} : { safety: entry.safety }),
+        motion: entry.motion,
+      };
+    });
 }

@@ -64,7 +64,6 @@ export type {
 export {
   DriveParamsSchema,
   EmergencyStopParamsSchema,
-  MOTION_CALLS,
   MoveDistanceParamsSchema,
   MoveToParamsSchema,
   PlaySoundParamsSchema,
@@ -87,6 +86,31 @@ export type {
   SetLEDParams,
   SpeakParams,
 } from './schemas/calls.js';
+
+export {
+  CALL_RESULT_SCHEMAS,
+  HAL_CALL_TABLE,
+  MOTION_CALLS,
+  callsByName,
+  findCall,
+} from './schemas/call-table.js';
+export type {
+  CallKind,
+  CallLane,
+  CallSpec,
+  CallSubsystem,
+  CallTable,
+  CallToolSpec,
+} from './schemas/call-table.js';
+export {
+  argsFromObject,
+  callMethod,
+  invokeCall,
+  invokeSpec,
+  objectFromArgs,
+} from './schemas/invoke-call.js';
+export { forwardCalls } from './schemas/forward-calls.js';
+export type { ForwardedSubsystems } from './schemas/forward-calls.js';
 
 export {
   FrameDataUrlSchema,

@@ -4,7 +4,9 @@ import type { HALMode } from './mode.js';
 import { failureResult, successResult } from './result.js';
 import type { HALToolResult } from './result.js';
 import type { RobotConfig } from './robot-config.js';
-import { createCallSchemas, MOTION_CALLS } from './schemas/calls.js';
+import { MOTION_CALLS } from './schemas/call-table.js';
+import type { CallTable } from './schemas/call-table.js';
+import { createCallSchemas } from './schemas/calls.js';
 import type { CallName, CallParams, CallSchemas } from './schemas/calls.js';
 import { compileCallSchemas } from './schemas/compiled.js';
 
@@ -95,6 +97,11 @@ export interface HalBoundaryOptions {
   isReady: () => boolean;
   /** The clock results are stamped with, ms. Default `Date.now`. */
   now?: () => number;
+  /**
+   * An extended call table: its calls beyond the HAL's own are validated with their own
+   * parameter schemas (and gated as motion when they are). Default none.
+   */
+  calls?: CallTable;
 }
 
 /** The call schemas of a configuration, and the same compiled by zod (schemas/compiled.ts). */
@@ -175,6 +182,7 @@ export class HalBoundary {
    */
   validate<N extends CallName>(call: N, args: unknown): CallParams<N> {
     const shared = this.#current();
+    if (!Object.hasOwn(shared.compiled, call)) return this.#validateExtended(call, args);
     const parsed = (shared.compiled[call] as z.ZodType).safeParse(args);
     if (!parsed.success) {
       const schema = shared.schemas[call] as z.ZodType;
@@ -186,6 +194,25 @@ export class HalBoundary {
     return parsed.data as CallParams<N>;
   }
 
+  /** A call of the extended table (`options.calls`); INVALID_PARAMETER for one it lacks. */
+  #validateExtended<N extends CallName>(call: N, args: unknown): CallParams<N> {
+    const spec = this.#options.calls?.find((entry) => entry.name === call);
+    if (spec === undefined) {
+      throw new HalError('INVALID_PARAMETER', `unknown HAL call "${call}"`, { details: { call } });
+    }
+    const schema = spec.paramsSchema(this.#options.config());
+    const parsed = schema.safeParse(args);
+    if (parsed.success) return parsed.data as CallParams<N>;
+    const issue = parsed.error.issues[0];
+    if (issue === undefined) throw new HalError('INVALID_PARAMETER', `${call}: invalid arguments`);
+    throw issueToError(call, schema, args, issue);
+  }
+
+  #isMotion(call: CallName): boolean {
+    if (MOTION_CALLS.includes(call)) return true;
+    return this.#options.calls?.find((entry) => entry.name === call)?.kind === 'motion';
+  }
+
   /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
   checkAllowed(call: CallName): void {
     // an e-stop is never refused: before initialize() or after cleanup() it still latches
@@ -195,7 +222,7 @@ export class HalBoundary {
         `${call}: the HAL is not initialised; call initialize() first`,
       );
     }
-    if (MOTION_CALLS.includes(call) && this.#options.isEmergencyStopped()) {
+    if (this.#isMotion(call) && this.#options.isEmergencyStopped()) {
       throw new HalError(
         'EMERGENCY_STOPPED',
         `${call}: the emergency stop is latched; call safety.resetEmergencyStop() first`,

@@ -1,8 +1,8 @@
 // The motions and safety calls `hal drive` can make, checked against the HAL's own call schemas
 // (V1 limits) before anything is sent: a bad number is a USAGE error, never a motor command.
 import { InvalidArgumentError } from 'commander';
-import { V1_CALL_SCHEMAS } from '@hal/types';
-import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import { V1_ROBOT, argsFromObject, findCall, invokeCall } from '@hal/types';
+import type { CallName, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 import { CliError } from '../cli-error.js';
 
 export type DriveAction =
@@ -115,36 +115,62 @@ function check(
   }
 }
 
+/**
+ * The HAL call an action makes, with its parameters by name, and the values as typed where the
+ * call is sent their size (`forward -5`: moveBackward with distanceCm 500; messages speak of -5 m).
+ */
+interface ActionCall {
+  call: CallName;
+  params: Record<string, unknown>;
+  typed?: Readonly<Record<string, number>>;
+}
+
+function actionCall(action: DriveAction): ActionCall {
+  switch (action.kind) {
+    case 'forward':
+      // the call takes centimetres; the message speaks of the metres that were typed
+      return {
+        call: action.metres > 0 ? 'moveForward' : 'moveBackward',
+        params: { distanceCm: Math.abs(action.metres) * 100 },
+        typed: { distanceCm: action.metres },
+      };
+    case 'turn':
+      // REP-103: positive degrees turn counter-clockwise (left)
+      return {
+        call: 'rotate',
+        params: {
+          direction: action.degrees > 0 ? 'left' : 'right',
+          degrees: Math.abs(action.degrees),
+        },
+        typed: { degrees: action.degrees },
+      };
+    case 'move-to':
+      return { call: 'moveTo', params: { x: action.x, y: action.y, z: 0, speed: action.speed } };
+    case 'wheels':
+      return {
+        call: 'drive',
+        params: { left: action.left, right: action.right, durationMs: action.durationMs },
+      };
+    case 'stop':
+      return { call: 'stop', params: {} };
+    case 'estop':
+      return { call: 'emergencyStop', params: { reason: action.reason } };
+    case 'reset-estop':
+      return { call: 'resetEmergencyStop', params: {} };
+  }
+}
+
 /** Refuses an action the robot's limits would refuse (USAGE), before connecting. */
 export function checkAction(action: DriveAction): void {
-  const s = V1_CALL_SCHEMAS;
-  switch (action.kind) {
-    case 'forward': {
-      if (action.metres === 0) throw new CliError('USAGE', 'forward: the distance must not be 0');
-      // the call takes centimetres; the message speaks of the metres that were typed
-      check(s.moveForward, { distanceCm: Math.abs(action.metres) * 100 }, 'forward', {
-        distanceCm: action.metres,
-      });
-      return;
-    }
-    case 'turn':
-      if (action.degrees === 0) throw new CliError('USAGE', 'turn: the angle must not be 0');
-      check(s.rotate, { direction: 'left', degrees: Math.abs(action.degrees) }, 'turn', {
-        degrees: action.degrees,
-      });
-      return;
-    case 'move-to':
-      check(s.moveTo, { x: action.x, y: action.y, z: 0, speed: action.speed }, 'move-to');
-      return;
-    case 'wheels':
-      check(s.drive, action, 'wheels');
-      return;
-    case 'estop':
-      check(s.emergencyStop, { reason: action.reason ?? '' }, 'estop');
-      return;
-    default:
-      return;
+  if (action.kind === 'forward' && action.metres === 0) {
+    throw new CliError('USAGE', 'forward: the distance must not be 0');
   }
+  if (action.kind === 'turn' && action.degrees === 0) {
+    throw new CliError('USAGE', 'turn: the angle must not be 0');
+  }
+  const { call, params, typed } = actionCall(action);
+  const schema = findCall(call)?.paramsSchema(V1_ROBOT);
+  if (schema !== undefined) check(schema as Checker, params, action.kind, typed);
 }
 
 /** True for the actions that move the robot (and so show live pose, and stop on Ctrl-C). */
@@ -157,26 +183,10 @@ export function callFor(
   hal: HardwareAbstractionLayer,
   action: DriveAction,
 ): Promise<HALToolResult> {
-  const loco = hal.locomotion;
-  switch (action.kind) {
-    case 'forward':
-      return action.metres > 0
-        ? loco.moveForward(action.metres * 100)
-        : loco.moveBackward(-action.metres * 100);
-    case 'turn':
-      // REP-103: positive degrees turn counter-clockwise (left)
-      return loco.rotate(action.degrees > 0 ? 'left' : 'right', Math.abs(action.degrees));
-    case 'move-to':
-      return loco.moveTo(action.x, action.y, 0, action.speed);
-    case 'wheels':
-      return loco.drive(action.left, action.right, action.durationMs);
-    case 'stop':
-      return loco.stop();
-    case 'estop':
-      return hal.safety.emergencyStop(action.reason);
-    case 'reset-estop':
-      return hal.safety.resetEmergencyStop();
-  }
+  const { call, params } = actionCall(action);
+  const spec = findCall(call);
+  const args = spec === undefined ? [] : argsFromObject(spec, params);
+  return invokeCall(hal, call, args) as Promise<HALToolResult>;
 }
 
 /** `forward 0.5 m`, for messages. */

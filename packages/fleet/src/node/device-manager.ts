@@ -1,7 +1,7 @@
 import { openConnection } from '@hal/nats';
 import type { NatsConnectionSource } from '@hal/nats';
 import { World } from '@hal/simulation';
-import { HalError, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
+import { HalError, forwardCalls, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import { Fleet } from '../fleet.js';
 import type { FleetOptions } from '../fleet.js';
@@ -308,31 +308,14 @@ export class DeviceManager {
 function placeholderHAL(): HardwareAbstractionLayer {
   const refuse = (): Promise<never> =>
     Promise.reject(new HalError('NOT_CONNECTED', 'NATS is not connected yet'));
+  const subsystems = forwardCalls(refuse, {
+    log: () => undefined,
+    isEmergencyStopped: () => false,
+    getSafetyStatus: () => ({ emergencyStopped: false, batteryLevel: 0, errors: [] }),
+  });
   return {
     mode: 'simulation',
-    locomotion: {
-      drive: refuse,
-      moveTo: refuse,
-      rotate: refuse,
-      moveForward: refuse,
-      moveBackward: refuse,
-      stop: refuse,
-      getPose: refuse,
-    },
-    vision: {
-      captureFrame: refuse,
-      scan: refuse,
-      getDistanceSensors: refuse,
-      getLineSensors: refuse,
-      getIMU: refuse,
-    },
-    communication: { speak: refuse, setLED: refuse, playSound: refuse, log: () => undefined },
-    safety: {
-      emergencyStop: refuse,
-      resetEmergencyStop: refuse,
-      isEmergencyStopped: () => false,
-      getSafetyStatus: () => ({ emergencyStopped: false, batteryLevel: 0, errors: [] }),
-    },
+    ...subsystems,
     initialize: refuse,
     cleanup: () => Promise.resolve(),
     isReady: () => false,

@@ -1,5 +1,13 @@
-import { V1_ROBOT, deviceOfflineError, failureResult } from '@hal/types';
-import type { HalError } from '@hal/types';
+import {
+  HAL_CALL_TABLE,
+  V1_ROBOT,
+  callMethod,
+  deviceOfflineError,
+  failureResult,
+  forwardCalls,
+  invokeSpec,
+} from '@hal/types';
+import type { CallSpec, CallTable, HalError } from '@hal/types';
 import type {
   CommunicationInterface,
   HALToolResult,
@@ -30,42 +38,32 @@ export class OfflineGuardHAL implements HardwareAbstractionLayer {
   readonly #device: string;
   readonly #offline: () => boolean;
 
-  constructor(inner: HardwareAbstractionLayer, device: string, offline: () => boolean) {
+  constructor(
+    inner: HardwareAbstractionLayer,
+    device: string,
+    offline: () => boolean,
+    calls: CallTable = HAL_CALL_TABLE,
+  ) {
     this.#inner = inner;
     this.#device = device;
     this.#offline = offline;
-    const l = inner.locomotion;
-    const v = inner.vision;
-    const c = inner.communication;
-    const s = inner.safety;
-    this.locomotion = {
-      drive: (left, right, ms) => this.#result(() => l.drive(left, right, ms)),
-      moveTo: (x, y, z, speed) => this.#result(() => l.moveTo(x, y, z, speed)),
-      rotate: (direction, degrees) => this.#result(() => l.rotate(direction, degrees)),
-      moveForward: (cm) => this.#result(() => l.moveForward(cm)),
-      moveBackward: (cm) => this.#result(() => l.moveBackward(cm)),
-      stop: () => this.#result(() => l.stop()),
-      getPose: () => this.#value(() => l.getPose()),
+    const forward = (spec: CallSpec, args: unknown[]): unknown => {
+      // the cached safety reads and log answer at once, whatever the link does
+      if (spec.cached || spec.kind === 'void') return callMethod(inner, spec, args);
+      const run = () => invokeSpec(inner, spec, args);
+      return spec.kind === 'value'
+        ? this.#value(run)
+        : this.#result(run as () => Promise<HALToolResult>);
     };
-    this.vision = {
-      captureFrame: () => this.#value(() => v.captureFrame()),
-      scan: (mode) => this.#value(() => v.scan(mode)),
-      getDistanceSensors: () => this.#value(() => v.getDistanceSensors()),
-      getLineSensors: () => this.#value(() => v.getLineSensors()),
-      getIMU: () => this.#value(() => v.getIMU()),
-    };
-    this.communication = {
-      speak: (text, urgency) => this.#result(() => c.speak(text, urgency)),
-      setLED: (r, g, b, pattern) => this.#result(() => c.setLED(r, g, b, pattern)),
-      playSound: (id) => this.#result(() => c.playSound(id)),
-      log: (message, level) => c.log(message, level),
-    };
-    this.safety = {
-      emergencyStop: (reason) => s.emergencyStop(reason),
-      resetEmergencyStop: () => this.#result(() => s.resetEmergencyStop()),
-      isEmergencyStopped: () => s.isEmergencyStopped(),
-      getSafetyStatus: () => s.getSafetyStatus(),
-    };
+    const subsystems = forwardCalls(
+      forward,
+      { emergencyStop: (reason?: string) => inner.safety.emergencyStop(reason) },
+      calls,
+    );
+    this.locomotion = subsystems.locomotion;
+    this.vision = subsystems.vision;
+    this.communication = subsystems.communication;
+    this.safety = subsystems.safety;
   }
 
   get mode(): HardwareAbstractionLayer['mode'] {

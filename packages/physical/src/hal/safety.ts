@@ -33,7 +33,7 @@ export function createSafety(ctx: HalContext): SafetyInterface {
     resetEmergencyStop: () =>
       b.call('resetEmergencyStop', {}, async () => {
         const reply = await ctx.command('reset_estop', {});
-        return { wasEmergencyStopped: reply.was_estopped };
+        return { estop: false, wasEmergencyStopped: reply.was_estopped };
       }),
     getSafetyStatus: (): SafetyStatus => ctx.safety.status(),
   };

@@ -5,7 +5,7 @@ import type { HalErrorCode, Pose, SafetyStatus } from '@hal/types';
 import { scoped } from '@hal/types';
 import type { Logger, LogLevel } from '@hal/types';
 import { MESSAGE_SCHEMAS, decodeMessage, encodeArgs, encodeMessage } from '../protocol.js';
-import type { HelloPayload, MessageSchema, RemoteCallName, Role } from '../protocol.js';
+import type { HelloPayload, MessageSchema, Role } from '../protocol.js';
 import { OPEN, resolveWebSocket } from './websocket.js';
 import type { WebSocketConstructor, WebSocketLike } from './websocket.js';
 
@@ -92,11 +92,7 @@ export class Connection {
   }
 
   /** Runs a call on the server and resolves with its reply's value; rejects with a HalError. */
-  request(
-    call: RemoteCallName | 'take_control',
-    args: readonly unknown[],
-    timeoutMs: number,
-  ): Promise<unknown> {
+  request(call: string, args: readonly unknown[], timeoutMs: number): Promise<unknown> {
     if (!this.connected) {
       return Promise.reject(new HalError('NOT_CONNECTED', `not connected to ${this.#options.url}`));
     }

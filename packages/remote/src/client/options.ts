@@ -1,5 +1,4 @@
-import type { HALMode } from '@hal/types';
-import type { Logger } from '@hal/types';
+import type { CallTable, HALMode, Logger } from '@hal/types';
 import type { WebSocketConstructor } from './websocket.js';
 
 /** How a {@link RemoteHAL} reaches its server. */
@@ -30,6 +29,8 @@ export interface RemoteHALOptions {
   /** First delay before reconnecting, ms; doubles up to 5000. Default 250. */
   reconnectDelayMs?: number;
   logger?: Logger;
+  /** The calls this HAL forwards; default the HAL's own call table. */
+  calls?: CallTable;
 }
 
 export const REMOTE_DEFAULTS = {

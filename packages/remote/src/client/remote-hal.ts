@@ -1,11 +1,11 @@
 // A HardwareAbstractionLayer whose robot is served by serveHal() in another process. Node and
 // browser: it never imports `ws` statically.
 import {
+  HAL_CALL_TABLE,
   HALToolResultSchema,
   HalError,
-  MOTION_CALLS,
-  READ_RESULT_SCHEMAS,
   failureResult,
+  forwardCalls,
   isHalError,
   sanitizeEstopReason,
   successResult,
@@ -13,7 +13,7 @@ import {
   silentLogger,
 } from '@hal/types';
 import type {
-  CallName,
+  CallSpec,
   CommunicationInterface,
   DeviceInfo,
   HALLogLevel,
@@ -25,7 +25,7 @@ import type {
   SafetyStatus,
   VisionInterface,
 } from '@hal/types';
-import type { ResultCallName, Role, ValueCallName } from '../protocol.js';
+import type { Role } from '../protocol.js';
 import { Connection } from './connection.js';
 import { REMOTE_DEFAULTS } from './options.js';
 import type { RemoteHALOptions } from './options.js';
@@ -38,8 +38,10 @@ export class RemoteHAL implements HardwareAbstractionLayer {
   readonly communication: CommunicationInterface;
   readonly safety: SafetyInterface;
 
-  readonly #options: Required<Omit<RemoteHALOptions, 'token' | 'WebSocket'>> &
+  readonly #options: Required<Omit<RemoteHALOptions, 'token' | 'WebSocket' | 'calls'>> &
     Pick<RemoteHALOptions, 'token' | 'WebSocket'>;
+  /** The calls by name, for their kind and result schema. */
+  readonly #calls: ReadonlyMap<string, CallSpec>;
   readonly #link: Connection;
   #initialized = false;
   /**
@@ -66,42 +68,24 @@ export class RemoteHAL implements HardwareAbstractionLayer {
       logger: this.#options.logger,
       onConnected: () => this.#onConnected(),
     });
-    const result =
-      (call: ResultCallName) =>
-      (...args: unknown[]) =>
-        this.#result(call, args);
-    const value =
-      (call: ValueCallName) =>
-      (...args: unknown[]) =>
-        this.#value(call, args);
-    this.locomotion = {
-      drive: result('drive'),
-      moveTo: result('moveTo'),
-      rotate: result('rotate'),
-      moveForward: result('moveForward'),
-      moveBackward: result('moveBackward'),
-      stop: result('stop'),
-      getPose: value('getPose'),
-    } as LocomotionInterface;
-    this.vision = {
-      captureFrame: value('captureFrame'),
-      scan: value('scan'),
-      getDistanceSensors: value('getDistanceSensors'),
-      getLineSensors: value('getLineSensors'),
-      getIMU: value('getIMU'),
-    } as VisionInterface;
-    this.communication = {
-      speak: result('speak'),
-      setLED: result('setLED'),
-      playSound: result('playSound'),
-      log: (message: string, level?: HALLogLevel) => this.#remoteLog(message, level),
-    } as CommunicationInterface;
-    this.safety = {
-      emergencyStop: (reason?: unknown) => this.#emergencyStop(reason),
-      resetEmergencyStop: () => this.#resetEmergencyStop(),
-      isEmergencyStopped: () => this.#cachedSafety().emergencyStopped,
-      getSafetyStatus: () => this.#cachedSafety(),
-    } as SafetyInterface;
+    const table = options.calls ?? HAL_CALL_TABLE;
+    this.#calls = new Map(table.map((spec) => [spec.name, spec]));
+    const subsystems = forwardCalls(
+      (spec, args) =>
+        spec.kind === 'value' ? this.#value(spec.name, args) : this.#result(spec.name, args),
+      {
+        log: (message: string, level?: HALLogLevel) => this.#remoteLog(message, level),
+        emergencyStop: (reason?: unknown) => this.#emergencyStop(reason),
+        resetEmergencyStop: () => this.#resetEmergencyStop(),
+        isEmergencyStopped: () => this.#cachedSafety().emergencyStopped,
+        getSafetyStatus: () => this.#cachedSafety(),
+      },
+      table,
+    );
+    this.locomotion = subsystems.locomotion;
+    this.vision = subsystems.vision;
+    this.communication = subsystems.communication;
+    this.safety = subsystems.safety;
   }
 
   /** The served HAL's mode (known once connected). */
@@ -264,17 +248,19 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     return undefined;
   }
 
-  #timeout(call: string): number {
-    return MOTION_CALLS.includes(call as CallName)
-      ? this.#options.motionTimeoutMs
-      : this.#options.requestTimeoutMs;
+  #isMotion(call: string): boolean {
+    return this.#calls.get(call)?.kind === 'motion';
   }
 
-  async #result(call: ResultCallName, args: unknown[]): Promise<HALToolResult> {
+  #timeout(call: string): number {
+    return this.#isMotion(call) ? this.#options.motionTimeoutMs : this.#options.requestTimeoutMs;
+  }
+
+  async #result(call: string, args: unknown[]): Promise<HALToolResult> {
     const started = Date.now();
     const refusal = this.#refusal();
     if (refusal !== undefined) return failureResult(this.mode, Date.now(), refusal, 0);
-    if (this.#hostEstop !== undefined && MOTION_CALLS.includes(call as CallName)) {
+    if (this.#hostEstop !== undefined && this.#isMotion(call)) {
       const latched = new HalError(
         'EMERGENCY_STOPPED',
         'emergency stop is active: reset it first',
@@ -292,7 +278,7 @@ export class RemoteHAL implements HardwareAbstractionLayer {
   }
 
   /** Runs a result call on the server; rejects if it has no valid answer. */
-  async #send(call: ResultCallName, args: unknown[]): Promise<HALToolResult> {
+  async #send(call: string, args: unknown[]): Promise<HALToolResult> {
     const value = await this.#link.request(call, args, this.#timeout(call));
     const parsed = HALToolResultSchema.safeParse(value);
     if (!parsed.success) {
@@ -301,17 +287,19 @@ export class RemoteHAL implements HardwareAbstractionLayer {
     return parsed.data as HALToolResult;
   }
 
-  async #value(call: ValueCallName, args: unknown[]): Promise<never> {
+  async #value(call: string, args: unknown[]): Promise<unknown> {
     const refusal = this.#refusal();
     if (refusal !== undefined) throw refusal;
     const value = await this.#link.request(call, args, this.#timeout(call));
-    const parsed = READ_RESULT_SCHEMAS[call].safeParse(value);
+    const schema = this.#calls.get(call)?.data;
+    if (schema === undefined) return value;
+    const parsed = schema.safeParse(value);
     if (!parsed.success) {
       throw new HalError('MALFORMED', `the server's "${call}" answer does not match its schema`, {
         details: { issue: parsed.error.issues[0]?.message },
       });
     }
-    return parsed.data as never;
+    return parsed.data;
   }
 
   #remoteLog(message: string, level?: HALLogLevel): void {

@@ -1,4 +1,4 @@
-import type { Logger } from '@hal/types';
+import type { CallTable, Logger } from '@hal/types';
 
 /** How {@link serveHal} serves a HAL. */
 export interface ServeHalOptions {
@@ -20,6 +20,8 @@ export interface ServeHalOptions {
   /** `device_id` of the server's messages. Default the served HAL's device id. */
   deviceId?: string;
   logger?: Logger;
+  /** The calls served; default the HAL's own call table. */
+  calls?: CallTable;
 }
 
 export const SERVE_DEFAULTS = {

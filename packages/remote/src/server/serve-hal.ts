@@ -5,13 +5,13 @@ import { randomUUID } from 'node:crypto';
 import { createServer } from 'node:http';
 import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { HalError, MOTION_CALLS, scoped, silentLogger, toHalError } from '@hal/types';
-import type { CallName, HalErrorCode, HardwareAbstractionLayer, LogLevel } from '@hal/types';
+import { HAL_CALL_TABLE, HalError, scoped, silentLogger, toHalError } from '@hal/types';
+import type { HalErrorCode, HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import { WebSocketServer } from 'ws';
 import type { RawData, WebSocket } from 'ws';
 import {
-  CONTROLLER_CALLS,
   MESSAGE_SCHEMAS,
+  controllerCalls,
   decodeArgs,
   decodeMessage,
   encodeMessage,
@@ -20,7 +20,7 @@ import {
 import type { MessageSchema, Role } from '../protocol.js';
 import { checkBinding, presentedToken, tokenMatches } from './auth.js';
 import type { ClientSession } from './client-session.js';
-import { dispatchCall, isRemoteCall } from './dispatch.js';
+import { dispatchCall, findRemoteCall } from './dispatch.js';
 import { SERVE_DEFAULTS } from './options.js';
 import type { HalServer, ServeHalOptions } from './options.js';
 
@@ -52,6 +52,8 @@ export async function serveHal(
     caps: hal.getDeviceInfo().capabilities,
   });
 
+  const table = options.calls ?? HAL_CALL_TABLE;
+  const controllerOnly = controllerCalls(table);
   const sessions = new Map<WebSocket, ClientSession>();
   let controller: ClientSession | undefined;
 
@@ -98,11 +100,12 @@ export async function serveHal(
   };
 
   const runCall = (session: ClientSession, id: string, call: string, rawArgs: unknown[]) => {
-    if (!isRemoteCall(call)) {
+    const spec = findRemoteCall(call, table);
+    if (spec === undefined) {
       reply(session, id, null, errorOf('UNKNOWN_COMMAND', `unknown call "${call}"`, { call }));
       return;
     }
-    if (CONTROLLER_CALLS.has(call) && session.role !== 'controller') {
+    if (controllerOnly.has(call) && session.role !== 'controller') {
       reply(
         session,
         id,
@@ -114,9 +117,9 @@ export async function serveHal(
       );
       return;
     }
-    const motion = MOTION_CALLS.includes(call as CallName);
+    const motion = spec.kind === 'motion';
     if (motion) session.running += 1;
-    dispatchCall(hal, call, decodeArgs(rawArgs))
+    dispatchCall(hal, spec, decodeArgs(rawArgs))
       .then(
         (value) => reply(session, id, value),
         (e: unknown) => reply(session, id, null, toHalError(e)),

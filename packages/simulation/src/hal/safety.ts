@@ -35,7 +35,7 @@ export function createSafety(ctx: HalContext): SafetyInterface {
       b.call('resetEmergencyStop', {}, async () => {
         const was = ctx.robot().resetEmergencyStop();
         ctx.events.emit('safety', status());
-        return { estop: false, wasEstopped: was };
+        return { estop: false, wasEmergencyStopped: was };
       }),
     getSafetyStatus: status,
   };

@@ -131,15 +131,6 @@ export type CallName = keyof CallSchemas;
 /** The validated parameters of a HAL call. */
 export type CallParams<N extends CallName> = z.output<CallSchemas[N]>;
 
-/** Calls that move the robot: refused while the emergency stop is latched. */
-export const MOTION_CALLS: readonly CallName[] = Object.freeze([
-  'drive',
-  'moveTo',
-  'rotate',
-  'moveForward',
-  'moveBackward',
-]);
-
 /** The call schemas of the V1 robot, for tool definitions and documentation. */
 export const V1_CALL_SCHEMAS: CallSchemas = createCallSchemas(V1_ROBOT);
 

@@ -12,6 +12,7 @@ import type { HALToolResult } from '../result.js';
 import { describeBoundaryContract } from './contract-boundary.js';
 import { describeCapabilityContract } from './contract-capabilities.js';
 import { describeLifecycleContract } from './contract-lifecycle.js';
+import { describeResultContract } from './contract-results.js';
 
 /** How the contract suite gets, and gets rid of, the HAL under test. */
 export interface HalContractOptions {
@@ -322,5 +323,6 @@ export function describeHalContract(name: string, options: HalContractOptions): 
     describeBoundaryContract(groups);
     describeLifecycleContract(groups);
     describeCapabilityContract(groups);
+    describeResultContract(groups);
   });
 }

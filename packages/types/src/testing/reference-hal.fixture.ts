@@ -53,6 +53,7 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
           const dr = p.right * v * seconds;
           this.#yaw = normalizeAngle(this.#yaw + (dr - dl) / V1_ROBOT.wheelBaseCm);
           forward((dl + dr) / 2);
+          return { leftSps: p.left, rightSps: p.right, running: false };
         }),
       moveTo: (x, y, z, speed) =>
         b.call('moveTo', { x, y, z, speed }, async (p) => {
@@ -69,7 +70,11 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
         b.call('moveForward', { distanceCm }, async (p) => forward(p.distanceCm)),
       moveBackward: (distanceCm) =>
         b.call('moveBackward', { distanceCm }, async (p) => forward(-p.distanceCm)),
-      stop: () => b.call('stop', {}, async () => undefined),
+      stop: () =>
+        b.call('stop', {}, async () => ({
+          stopped: false,
+          pose: { x: this.#x, y: this.#y, yaw: this.#yaw },
+        })),
       getPose: () =>
         b.read('getPose', {}, (): Pose => ({
           position: { x: this.#x, y: this.#y, z: 0 },
@@ -97,7 +102,9 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
       speak: (text, urgency) => b.call('speak', { text, urgency }, async () => lacks('speaker')),
       playSound: (soundId) => b.call('playSound', { soundId }, async () => lacks('speaker')),
       setLED: (r, g, bl, pattern) =>
-        b.call('setLED', { r, g, b: bl, pattern }, async () => undefined),
+        b.call('setLED', { r, g, b: bl, pattern }, async (p) => ({
+          led: { r: p.r, g: p.g, b: p.b, pattern: p.pattern ?? 'solid' },
+        })),
       log: (message, level) => {
         const result = b.notify('log', { message, level }, (p) => {
           this.logged.push(p.message);
@@ -115,8 +122,10 @@ export class ReferenceHAL implements HardwareAbstractionLayer {
       isEmergencyStopped: () => this.#estop,
       resetEmergencyStop: () =>
         b.call('resetEmergencyStop', {}, async () => {
+          const was = this.#estop;
           this.#estop = false;
           this.#estopReason = undefined;
+          return { estop: false, wasEmergencyStopped: was };
         }),
       getSafetyStatus: (): SafetyStatus => ({
         emergencyStopped: this.#estop,

@@ -1,0 +1,90 @@
+import { describe, expect, it } from 'vitest';
+import { V1_ROBOT } from '../robot-config.js';
+import type { HardwareAbstractionLayer } from '../interfaces.js';
+import { HAL_CALL_TABLE, MOTION_CALLS, findCall } from './call-table.js';
+import { V1_CALL_SCHEMAS } from './calls.js';
+import { forwardCalls } from './forward-calls.js';
+import { argsFromObject, invokeCall } from './invoke-call.js';
+
+/** A HAL whose every method records its name and arguments and answers them back. */
+function recordingHal(): { hal: HardwareAbstractionLayer; calls: [string, unknown[]][] } {
+  const calls: [string, unknown[]][] = [];
+  const subsystems = forwardCalls((spec, args) => {
+    calls.push([`${spec.subsystem}.${spec.method}`, args]);
+    return Promise.resolve({ ran: spec.name, args });
+  });
+  return { hal: subsystems as unknown as HardwareAbstractionLayer, calls };
+}
+
+describe('HAL_CALL_TABLE', () => {
+  it('lists every call of the call schemas exactly once, with a unique tool name', () => {
+    const names = HAL_CALL_TABLE.map((spec) => spec.name);
+    expect([...names].sort()).toEqual(Object.keys(V1_CALL_SCHEMAS).sort());
+    const tools = HAL_CALL_TABLE.map((spec) => spec.tool.name);
+    expect(new Set(tools).size).toBe(tools.length);
+  });
+
+  it('refers to the call schemas themselves rather than copies', () => {
+    for (const spec of HAL_CALL_TABLE) {
+      expect(spec.paramsSchema(V1_ROBOT)).toBe(spec.paramsSchema(V1_ROBOT));
+      expect(
+        Object.keys((spec.paramsSchema(V1_ROBOT) as unknown as { shape: object }).shape),
+      ).toEqual([...spec.params]);
+    }
+    expect(findCall('moveTo')?.params).toEqual(['x', 'y', 'z', 'speed']);
+  });
+
+  it('puts stop and the e-stop in the safety lane, open to every client', () => {
+    const safety = HAL_CALL_TABLE.filter((spec) => spec.lane === 'safety').map((s) => s.name);
+    expect(safety.sort()).toEqual(['emergencyStop', 'stop']);
+    for (const name of safety) expect(findCall(name)?.controllerOnly).toBe(false);
+  });
+
+  it('derives MOTION_CALLS from the calls of kind motion', () => {
+    expect([...MOTION_CALLS].sort()).toEqual(
+      ['drive', 'moveBackward', 'moveForward', 'moveTo', 'rotate'].sort(),
+    );
+  });
+});
+
+describe('invokeCall', () => {
+  it('calls the right method with the arguments in order', async () => {
+    const { hal, calls } = recordingHal();
+    await invokeCall(hal, 'setLED', [1, 2, 3, 'blink']);
+    await invokeCall(hal, 'moveTo', [0.5, -0.25, 0]);
+    expect(calls).toEqual([
+      ['communication.setLED', [1, 2, 3, 'blink']],
+      ['locomotion.moveTo', [0.5, -0.25, 0]],
+    ]);
+  });
+
+  it('answers nothing for a void call', async () => {
+    const { hal } = recordingHal();
+    await expect(invokeCall(hal, 'log', ['hello', 'info'])).resolves.toBeUndefined();
+  });
+
+  it('rejects an unknown call with INVALID_PARAMETER, naming it', async () => {
+    const { hal, calls } = recordingHal();
+    await expect(invokeCall(hal, 'selfDestruct', [])).rejects.toMatchObject({
+      code: 'INVALID_PARAMETER',
+      message: expect.stringContaining('selfDestruct') as unknown,
+    });
+    expect(calls).toEqual([]);
+  });
+
+  it('rejects NOT_IMPLEMENTED when the HAL lacks the method', async () => {
+    const hal = { locomotion: {} } as unknown as HardwareAbstractionLayer;
+    await expect(invokeCall(hal, 'moveForward', [10])).rejects.toMatchObject({
+      code: 'NOT_IMPLEMENTED',
+    });
+  });
+});
+
+describe('argsFromObject', () => {
+  it('orders named arguments as the call takes them and drops trailing omissions', () => {
+    const drive = findCall('drive');
+    if (drive === undefined) throw new Error('drive is in the table');
+    expect(argsFromObject(drive, { right: 20, left: 10 })).toEqual([10, 20]);
+    expect(argsFromObject(drive, { right: 20, left: 10, durationMs: 500 })).toEqual([10, 20, 500]);
+  });
+});
