@@ -1,0 +1,23 @@
+export { McapRecorder } from './recorder.js';
+export type { RecorderOptions, RecorderStats } from './recorder.js';
+export { recordHal, RECORDER_VERSION } from './record-hal.js';
+export type { RecordHalOptions } from './record-hal.js';
+export { memorySink, openFileSink } from './file-sink.js';
+export type { RecordingSink } from './file-sink.js';
+export { readRecording, readRecordingFile } from './read-recording.js';
+export type { RecordedMessage, Recording } from './read-recording.js';
+export type { ChunkCompression } from './compression.js';
+export type { RecorderLogger } from './logger.js';
+export {
+  CALL_RECORD,
+  HAL_POSE,
+  HalCallRecordSchema,
+  RECORDER_LOSS,
+  RecorderLossSchema,
+  SAFETY_EVENT,
+  SafetyEventSchema,
+  TOPICS,
+} from './messages.js';
+export type { HalCallRecord, RecorderLoss, SafetyEvent } from './messages.js';
+export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
+export type { NamedJsonSchema } from './foxglove-schemas.js';
