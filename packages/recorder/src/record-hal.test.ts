@@ -3,6 +3,7 @@ import { CAPABILITIES, HalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { memorySink } from './file-sink.js';
+import type { RecordingSink } from './file-sink.js';
 import type { HalCallRecord, SafetyEvent } from './messages.js';
 import { TOPICS } from './messages.js';
 import { readRecording } from './read-recording.js';
@@ -173,5 +174,29 @@ describe('recordHal', () => {
     expect(inner.isReady()).toBe(true);
     expect(await hal.locomotion.getPose()).toEqual(await inner.locomotion.getPose());
     await hal.cleanup();
+  });
+
+  it('keeps the robot moving and stopping as asked when the disk refuses every write, and counts the loss', async () => {
+    const refusing: RecordingSink = {
+      position: () => 0n,
+      write: () => Promise.reject(new Error('EIO: i/o error')),
+      close: () => Promise.resolve(),
+    };
+    const warnings: string[] = [];
+    const recorder = await McapRecorder.create(refusing, {
+      logger: { warn: (message) => warnings.push(message) },
+    });
+    const hal = recordHal(new SimulationHAL(), recorder, { posePeriodMs: 0 });
+    await hal.initialize();
+    expect(await hal.locomotion.moveForward(10)).toMatchObject({ success: true });
+    expect(await hal.safety.emergencyStop('disk test')).toMatchObject({ success: true });
+    expect(await hal.locomotion.moveForward(10)).toMatchObject({ code: 'EMERGENCY_STOPPED' });
+    expect((await hal.locomotion.getPose()).position.x).toBeCloseTo(0.1, 3);
+    await hal.cleanup();
+    const stats = await recorder.close();
+    expect(stats.failure).toContain('EIO');
+    expect(stats.written).toBe(0);
+    expect(stats.dropped).toBeGreaterThan(5);
+    expect(warnings.join('\n')).toContain('EIO');
   });
 });
