@@ -25,6 +25,8 @@ export interface RecordHalOptions {
   version?: string;
   /** Where the recorder's own warnings go. */
   logger?: RecorderLogger;
+  /** Stops the pose sampling when aborted (it also stops on `cleanup()` through the proxy). */
+  signal?: AbortSignal;
 }
 
 /** The version written into recordings. */
@@ -43,6 +45,16 @@ function isPromiseLike(value: unknown): value is PromiseLike<unknown> {
     typeof value === 'object' &&
     value !== null &&
     typeof (value as { then?: unknown }).then === 'function'
+  );
+}
+
+/** A HALToolResult, as motion, stop, e-stop and the other action calls answer. */
+function isToolResult(value: unknown): boolean {
+  return (
+    typeof value === 'object' &&
+    value !== null &&
+    typeof (value as { success?: unknown }).success === 'boolean' &&
+    typeof (value as { mode?: unknown }).mode === 'string'
   );
 }
 
@@ -181,6 +193,21 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     });
   }
 
+  function onReady(): void {
+    writeRobot();
+    if (posePeriodMs > 0 && timer === undefined && !options.signal?.aborted) {
+      timer = setInterval(sample, posePeriodMs);
+      (timer as { unref?: () => void }).unref?.();
+    }
+    sample();
+  }
+
+  function stopSampling(): void {
+    if (timer !== undefined) clearInterval(timer);
+    timer = undefined;
+  }
+  options.signal?.addEventListener('abort', stopSampling, { once: true });
+
   function afterCall(
     info: CallInfo,
     value: unknown,
@@ -189,18 +216,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     now: bigint,
   ): void {
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
-    if (name === 'initialize' && ok) {
-      writeRobot();
-      if (posePeriodMs > 0 && timer === undefined) {
-        timer = setInterval(sample, posePeriodMs);
-        (timer as { unref?: () => void }).unref?.();
-      }
-      sample();
-    }
-    if (name === 'cleanup' && timer !== undefined) {
-      clearInterval(timer);
-      timer = undefined;
-    }
+    if (name === 'initialize' && ok) onReady();
+    if (name === 'cleanup') stopSampling();
     if (name === 'vision.captureFrame' && ok && typeof value === 'string') {
       const comma = value.indexOf(',');
       const format = /^data:image\/(\w+)/.exec(value)?.[1] ?? 'jpeg';
@@ -259,7 +276,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     value: unknown,
   ): void {
     try {
-      const now = recorder.clock();
+      const durationMs = Math.max(0, performance.now() - startMs);
       const failed = outcome === 'rejected' || outcome === 'threw';
       const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
       const entry: HalCallRecord = {
@@ -269,10 +286,27 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         ...status,
         ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),
         start_ns: start.toString(),
-        duration_ms: Math.max(0, performance.now() - startMs),
+        duration_ms: durationMs,
       };
-      recorder.write(TOPICS.calls, entry, now);
-      afterCall(info, value, status.success, status.code, now);
+      const finish = (poseAfter?: Pose): void => {
+        recorder.write(
+          TOPICS.calls,
+          poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
+        );
+        afterCall(info, value, status.success, status.code, recorder.clock());
+      };
+      if (info.subsystem !== undefined && isToolResult(value) && safe(() => hal.isReady(), false)) {
+        // the pose this call left, read from the HAL itself, goes with the call (for replay)
+        hal.locomotion.getPose().then(
+          (pose) => {
+            writePose(pose);
+            finish(pose);
+          },
+          () => finish(),
+        );
+      } else {
+        finish();
+      }
     } catch (error) {
       safeWarn(options.logger, `recorder could not record ${info.method}: ${String(error)}`);
     }
@@ -342,5 +376,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     });
   }
 
+  // a HAL handed over already initialised (as the `hal` command opens its targets)
+  if (safe(() => hal.isReady(), false)) onReady();
   return wrapObject(hal, undefined);
 }

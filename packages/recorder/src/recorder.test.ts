@@ -64,10 +64,10 @@ describe('McapRecorder', () => {
       const plain = memorySink();
       const again = await McapRecorder.create(plain, { compression });
       again.channel(TOPICS.calls, CALL_RECORD);
-      for (let n = 0; n < 200; n += 1) again.write(TOPICS.calls, call(n));
+      for (let n = 0; n < 2000; n += 1) again.write(TOPICS.calls, call(n));
       await again.close();
       sizes[compression] = plain.bytes().byteLength;
-      expect((await readRecording(plain.bytes())).messages).toHaveLength(201);
+      expect((await readRecording(plain.bytes())).messages).toHaveLength(2001);
     }
     expect(sizes['zstd']).toBeLessThan(sizes['none']! / 4);
   });
