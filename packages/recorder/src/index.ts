@@ -21,3 +21,8 @@ export {
 export type { HalCallRecord, RecorderLoss, SafetyEvent } from './messages.js';
 export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
+export { summarizeRecording } from './summary.js';
+export type { RecordingSummary } from './summary.js';
+export { replayRecording } from './replay.js';
+export type { ReplayedCall, ReplayReport } from './replay.js';
+export { trajectorySvg } from './trajectory-svg.js';
