@@ -37,6 +37,7 @@ describe('recordHal', () => {
       await hal.locomotion.moveForward(10);
       await hal.locomotion.rotate('left', 90);
       await hal.locomotion.moveForward(Number.NaN);
+      await hal.locomotion.moveTo(0.1, 0.1, 0, undefined);
     });
     const list = calls(recording);
     expect(list.map((c) => c.call)).toEqual([
@@ -44,8 +45,11 @@ describe('recordHal', () => {
       'locomotion.moveForward',
       'locomotion.rotate',
       'locomotion.moveForward',
+      'locomotion.moveTo',
       'cleanup',
     ]);
+    // an omitted optional argument is left out, so a replay calls it the same way
+    expect(list[4]).toMatchObject({ args: [0.1, 0.1, 0], success: true });
     expect(list[1]).toMatchObject({ args: [10], outcome: 'resolved', success: true });
     expect(list[1]!.duration_ms).toBeGreaterThanOrEqual(0);
     expect(list[1]!.result).toMatchObject({ success: true, mode: 'simulation' });
@@ -53,6 +57,7 @@ describe('recordHal', () => {
     const poses = recording.messages.filter((m) => m.topic === TOPICS.halPose);
     const last = poses.at(-1)?.value as { position: { x: number; y: number } } | undefined;
     expect(last?.position.x).toBeCloseTo(0.1, 3);
+    expect(last?.position.y).toBeCloseTo(0.1, 3);
     expect(recording.channels.get(TOPICS.pose)?.schemaName).toBe('foxglove.PoseInFrame');
     expect(recording.channels.get(TOPICS.tf)?.messageCount).toBe(poses.length);
     // after the left turn the base_link faces +y: yaw pi/2 is the quaternion (0, 0, sin 45, cos 45)

@@ -48,6 +48,13 @@ function isPromiseLike(value: unknown): value is PromiseLike<unknown> {
   );
 }
 
+/** The arguments as given, less trailing `undefined`s (an omitted optional argument). */
+function withoutTrailingUndefined(args: readonly unknown[]): unknown[] {
+  let end = args.length;
+  while (end > 0 && args[end - 1] === undefined) end -= 1;
+  return args.slice(0, end);
+}
+
 /** A HALToolResult, as motion, stop, e-stop and the other action calls answer. */
 function isToolResult(value: unknown): boolean {
   return (
@@ -281,7 +288,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
       const entry: HalCallRecord = {
         call: info.subsystem ? `${info.subsystem}.${info.method}` : info.method,
-        args: (jsonSafe(info.args) as unknown[] | undefined) ?? [],
+        args: (jsonSafe(withoutTrailingUndefined(info.args)) as unknown[] | undefined) ?? [],
         outcome,
         ...status,
         ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),

@@ -12,6 +12,9 @@ import { registerTest } from './test.js';
 import { registerFleet } from './fleet.js';
 import { registerCalibrate } from './calibrate.js';
 import { registerAgent } from './agent.js';
+import { registerRecord } from './record.js';
+import { registerInspect } from './inspect.js';
+import { registerReplay } from './replay.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -35,4 +38,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerDiscover,
   registerTest,
   registerFleet,
+  registerRecord,
+  registerInspect,
+  registerReplay,
 ];
