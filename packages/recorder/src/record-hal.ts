@@ -33,6 +33,8 @@ export interface RecordHalOptions {
 export const RECORDER_VERSION = '0.1.0';
 
 const SUBSYSTEMS = ['locomotion', 'vision', 'manipulation', 'communication', 'safety'] as const;
+/** The subsystems whose action calls can move the robot: the pose is read after each of them. */
+const MOVING_SUBSYSTEMS: ReadonlySet<string> = new Set(['locomotion', 'manipulation', 'safety']);
 
 interface CallInfo {
   subsystem: string | undefined;
@@ -221,6 +223,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     ok: boolean,
     code: string | undefined,
     now: bigint,
+    latchedAfter: boolean,
   ): void {
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
     if (name === 'initialize' && ok) onReady();
@@ -255,8 +258,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       );
     }
     if (name === 'safety.emergencyStop' || name === 'safety.resetEmergencyStop') {
-      const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
-      lastLatched = latched;
+      const latched = latchedAfter;
       const reason = info.args[0];
       const event: SafetyEvent = {
         event: name === 'safety.emergencyStop' ? 'emergency_stop' : 'reset',
@@ -282,8 +284,36 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     outcome: HalCallRecord['outcome'],
     value: unknown,
   ): void {
+    const durationMs = Math.max(0, performance.now() - startMs);
+    // The pose this call left is asked for now, before the caller can start another motion; the
+    // record itself is made off the call's path, so the caller has its answer first.
+    let poseAfter: Promise<Pose> | undefined;
     try {
-      const durationMs = Math.max(0, performance.now() - startMs);
+      if (MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value) && hal.isReady()) {
+        poseAfter = hal.locomotion.getPose();
+        poseAfter.catch(() => undefined);
+      }
+    } catch {
+      poseAfter = undefined;
+    }
+    const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
+    // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
+    // a change any other call finds is a trip (rare, so written at once)
+    if (info.subsystem === 'safety') lastLatched = latched;
+    else watchLatch();
+    recorder.defer(() => recordNow(info, start, durationMs, outcome, value, poseAfter, latched));
+  }
+
+  function recordNow(
+    info: CallInfo,
+    start: bigint,
+    durationMs: number,
+    outcome: HalCallRecord['outcome'],
+    value: unknown,
+    poseAfter: Promise<Pose> | undefined,
+    latchedAfter: boolean,
+  ): Promise<void> | undefined {
+    try {
       const failed = outcome === 'rejected' || outcome === 'threw';
       const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
       const entry: HalCallRecord = {
@@ -300,23 +330,23 @@ export function recordHal<T extends HardwareAbstractionLayer>(
           TOPICS.calls,
           poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
         );
-        afterCall(info, value, status.success, status.code, recorder.clock());
+        afterCall(info, value, status.success, status.code, recorder.clock(), latchedAfter);
       };
-      if (info.subsystem !== undefined && isToolResult(value) && safe(() => hal.isReady(), false)) {
+      if (poseAfter !== undefined) {
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
-        hal.locomotion.getPose().then(
+        return poseAfter.then(
           (pose) => {
             writePose(pose);
             finish(pose);
           },
           () => finish(),
         );
-      } else {
-        finish();
       }
+      finish();
     } catch (error) {
       safeWarn(options.logger, `recorder could not record ${info.method}: ${String(error)}`);
     }
+    return undefined;
   }
 
   function wrapMethod(

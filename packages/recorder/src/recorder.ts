@@ -65,6 +65,7 @@ export class McapRecorder {
   readonly #channels = new Map<string, number>();
   readonly #schemas = new Map<string, number>();
   readonly #pendingTopics = new Set<string>();
+  readonly #deferred = new Set<Promise<void>>();
   #queuedBytes = 0;
   #written = 0;
   #dropped = 0;
@@ -178,6 +179,19 @@ export class McapRecorder {
     });
   }
 
+  /**
+   * Runs `task` off the caller's path: after the current turn of the event loop, so the caller
+   * (the robot's next command) goes first and the recording work overlaps its wait for the
+   * robot. {@link close} waits for deferred tasks (at most 2 s). A task that throws is ignored.
+   */
+  defer(task: () => void | PromiseLike<void>): void {
+    const run = new Promise<void>((resolve) => setImmediate(resolve))
+      .then(task)
+      .catch(() => undefined);
+    this.#deferred.add(run);
+    void run.finally(() => this.#deferred.delete(run));
+  }
+
   /** What has been written and lost so far. */
   stats(): RecorderStats {
     return {
@@ -201,6 +215,14 @@ export class McapRecorder {
     if (this.#closed) {
       await this.drained();
       return this.stats();
+    }
+    // what was deferred before close is part of the recording (a task may defer another)
+    const deadline = performance.now() + 2000;
+    while (this.#deferred.size > 0 && performance.now() < deadline) {
+      await Promise.race([
+        Promise.all([...this.#deferred]),
+        new Promise((resolve) => setTimeout(resolve, Math.max(0, deadline - performance.now()))),
+      ]);
     }
     this.channel(TOPICS.loss, RECORDER_LOSS);
     const lossLater = (): Record<string, unknown> => ({
