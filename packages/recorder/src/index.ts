@@ -9,6 +9,8 @@ export type { RecordedMessage, Recording } from './read-recording.js';
 export type { ChunkCompression } from './compression.js';
 export type { RecorderLogger } from './logger.js';
 export {
+  AGENT_EVENT,
+  AgentEventRecordSchema,
   CALL_RECORD,
   HAL_POSE,
   HalCallRecordSchema,

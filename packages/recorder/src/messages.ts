@@ -64,6 +64,13 @@ export const RecorderLossSchema = z
   .describe('hal.RecorderLoss: the messages the recorder dropped');
 export type RecorderLoss = z.infer<typeof RecorderLossSchema>;
 
+/** One event of an agent run (a model turn, a tool call and its result, token usage, the end). */
+export const AgentEventRecordSchema = z
+  .looseObject({
+    type: z.string().describe("the event's kind, as @hal/agent names it (tool_call, usage, ...)"),
+  })
+  .describe('hal.AgentEvent: one event of an agent run, as @hal/agent reports it');
+
 function named(name: string, schema: z.ZodType): NamedJsonSchema {
   return { name, schema: z.toJSONSchema(schema, { io: 'input', unrepresentable: 'any' }) };
 }
@@ -72,6 +79,7 @@ export const CALL_RECORD: NamedJsonSchema = named('hal.CallRecord', HalCallRecor
 export const SAFETY_EVENT: NamedJsonSchema = named('hal.SafetyEvent', SafetyEventSchema);
 export const RECORDER_LOSS: NamedJsonSchema = named('hal.RecorderLoss', RecorderLossSchema);
 export const HAL_POSE: NamedJsonSchema = named('hal.Pose', PoseSchema);
+export const AGENT_EVENT: NamedJsonSchema = named('hal.AgentEvent', AgentEventRecordSchema);
 
 /** The topics a recording of one robot holds. */
 export const TOPICS = Object.freeze({
@@ -83,4 +91,5 @@ export const TOPICS = Object.freeze({
   log: '/hal/log',
   safety: '/hal/safety',
   loss: '/recorder/loss',
+  agent: '/agent/events',
 });
