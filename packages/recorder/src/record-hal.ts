@@ -95,10 +95,12 @@ function errorOf(error: unknown): { code?: string; error: string } {
  * synchronous. Every method of the HAL and of its subsystems is wrapped generically (no list of
  * calls), so a call added to the HAL is recorded with no change here.
  *
- * Recorded: every call (`/hal/calls`), the pose at `posePeriodMs` and after every locomotion or
- * safety call (`/hal/pose`, `/tf`, `/hal/pose/raw`), camera frames (`/hal/camera`), log lines
- * (`/hal/log`), e-stops, resets and trips (`/hal/safety`), and the robot's metadata (`hal.robot`)
- * once it has initialised. Recording never delays a call: the recorder only queues.
+ * Recorded: every call (`/hal/calls`), the pose at `posePeriodMs` and after every locomotion,
+ * manipulation or safety action (`/hal/pose`, `/tf`, `/hal/pose/raw`), camera frames
+ * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), and the
+ * robot's metadata (`hal.robot`) once it is ready. A call answers its caller first: only the
+ * latch and (after an action that can move) the pose are read at once; the record is made a turn
+ * later and queued, never waiting for the disk.
  */
 export function recordHal<T extends HardwareAbstractionLayer>(
   hal: T,
@@ -164,15 +166,20 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     watchLatch();
     if (sampling || !safe(() => hal.isReady(), false)) return;
     sampling = true;
-    hal.locomotion.getPose().then(
-      (pose) => {
-        sampling = false;
-        writePose(pose);
-      },
-      () => {
-        sampling = false;
-      },
-    );
+    try {
+      hal.locomotion.getPose().then(
+        (pose) => {
+          sampling = false;
+          writePose(pose);
+        },
+        () => {
+          sampling = false;
+        },
+      );
+    } catch {
+      // a HAL whose getPose throws at once: nothing to sample this time
+      sampling = false;
+    }
   }
 
   function watchLatch(): void {
