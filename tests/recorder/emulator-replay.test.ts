@@ -28,7 +28,7 @@ async function halJson(argv: string[]): Promise<{ code: number; value: Record<st
 
 describe('a run of the emulated cube, recorded and replayed', () => {
   it('records the motions and the e-stop, and replays them on the simulator within 0.2 mm, steps equal', async () => {
-    const emulator = await startEmulator({ pty: false, timeScale: 8 });
+    const emulator = await startEmulator({ pty: false, timeScale: 8, deviceId: 'cube-rec' });
     const file = join(dir, 'cube.mcap');
     try {
       const { value: recorded } = await halJson([
@@ -68,7 +68,10 @@ describe('a run of the emulated cube, recorded and replayed', () => {
 
     const recording = await readRecordingFile(file);
     expect(recording.complete).toBe(true);
-    expect(recording.metadata.get('hal.robot')).toMatchObject({ mode: 'physical' });
+    expect(recording.metadata.get('hal.robot')).toMatchObject({
+      mode: 'physical',
+      device_id: 'cube-rec',
+    });
 
     const { value: inspected } = await halJson(['inspect', file]);
     expect(inspected).toMatchObject({

@@ -19,6 +19,8 @@ import type { McapRecorder } from './recorder.js';
 export interface RecordHalOptions {
   /** Pose sample period while the HAL is ready, ms; 0 samples only after motions. Default 100. */
   posePeriodMs?: number;
+  /** The robot's id for the metadata, when it is not the HAL's own `getDeviceInfo().id`. */
+  deviceId?: string;
   /** The map the robot runs in (any JSON), for the metadata record `hal.robot`. */
   map?: unknown;
   /** The project's version, for the metadata (default this package's). */
@@ -199,7 +201,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     robotWritten = true;
     const info = safe(() => hal.getDeviceInfo(), undefined);
     recorder.metadata('hal.robot', {
-      device_id: info?.id ?? '',
+      device_id: options.deviceId ?? info?.id ?? '',
       type: info?.type ?? '',
       mode: String(hal.mode),
       capabilities: JSON.stringify(info?.capabilities ?? []),

@@ -167,8 +167,10 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         target,
         io,
         { ...connect, json, role: 'control' },
-        async ({ hal: opened }) => {
-          const hal = recorder ? recordHal(opened, recorder, { signal: sampling.signal }) : opened;
+        async ({ hal: opened, deviceId }) => {
+          const hal = recorder
+            ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
+            : opened;
           const tools =
             choice.kind === 'endpoint' && choice.tools !== undefined
               ? // the loop stops the robot with `stop` at the end of a run: always keep it

@@ -52,10 +52,11 @@ export const registerRecord: RegisterCommand = (program, { io, global }) => {
     const sampling = new AbortController();
     let stats: RecorderStats;
     try {
-      await withTarget(target, io, { ...connect, json }, async ({ hal: opened }) => {
+      await withTarget(target, io, { ...connect, json }, async ({ hal: opened, deviceId }) => {
         const map = target.kind === 'sim' ? { name: target.map } : undefined;
         const hal = recordHal(opened, recorder, {
           signal: sampling.signal,
+          deviceId,
           ...(map ? { map } : {}),
         });
         for (const [i, action] of steps.entries()) {

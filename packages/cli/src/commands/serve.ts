@@ -134,7 +134,7 @@ async function serveTarget(
     await recording?.close();
     throw error;
   });
-  const hal = recording?.wrap(opened.hal) ?? opened.hal;
+  const hal = recording?.wrap(opened.hal, options.device ?? opened.deviceId) ?? opened.hal;
   let gateway: HalGateway | undefined;
   let server: HalServer | undefined;
   let announcer: TafyNodeAnnouncer | undefined;
@@ -232,7 +232,7 @@ async function startRecording(
   io: CliIO,
   json: boolean,
 ): Promise<{
-  wrap(served: HardwareAbstractionLayer): HardwareAbstractionLayer;
+  wrap(served: HardwareAbstractionLayer, deviceId: string): HardwareAbstractionLayer;
   close(): Promise<RecorderStats & { file: string }>;
 }> {
   const log = cliLogger(io, json);
@@ -246,7 +246,7 @@ async function startRecording(
   });
   const sampling = new AbortController();
   return {
-    wrap: (served) => recordHal(served, recorder, { signal: sampling.signal }),
+    wrap: (served, deviceId) => recordHal(served, recorder, { signal: sampling.signal, deviceId }),
     close: async () => {
       sampling.abort();
       return { file, ...(await recorder.close()) };
