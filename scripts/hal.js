@@ -3,8 +3,9 @@
 // fraction of the time the sources take through tsx. The bundle is rebuilt (esbuild, about a
 // second) when it is missing or when any file it was built from is newer than it; the list of
 // those files is esbuild's own metafile, so the check is exact and costs a few stat calls.
-// Packages with a native addon (serialport's bindings) stay outside the bundle, imported by the
-// absolute path resolved at build time, so their prebuilt binaries load as they always do.
+// Packages with a native addon (serialport's bindings) or a WebAssembly file stay outside the
+// bundle, imported by the absolute path resolved at build time, so their prebuilt binaries (and
+// .wasm files) load as they always do.
 import {
   existsSync,
   mkdirSync,
@@ -51,7 +52,10 @@ function isFresh() {
   return true;
 }
 
-/** True for a package with a native addon, found by its manifest (it loads files by path). */
+/**
+ * True for a package with a native addon or a WebAssembly module, found by its manifest: it
+ * loads files from beside its own, by path, so it stays outside the bundle.
+ */
 function isNative(resolvedFile) {
   for (let dir = dirname(resolvedFile); dir !== dirname(dir); dir = dirname(dir)) {
     let manifest;
@@ -62,7 +66,9 @@ function isNative(resolvedFile) {
     }
     if (manifest.name === undefined) continue; // a nested {"type": "module"} marker
     const deps = { ...manifest.dependencies, ...manifest.optionalDependencies };
-    return manifest.gypfile === true || NATIVE_LOADERS.some((name) => name in deps);
+    // a WebAssembly module (zstd for the recorder) is loaded from beside its script, by path
+    const wasm = (manifest.files ?? []).some((file) => file.endsWith('.wasm'));
+    return manifest.gypfile === true || wasm || NATIVE_LOADERS.some((name) => name in deps);
   }
   return false;
 }

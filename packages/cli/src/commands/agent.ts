@@ -9,6 +9,7 @@ import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@
 import type { LocalChatProvider } from '@hal/agent-local';
 import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
 import type { LeashCliOptions } from '@hal/mcp/leash-options';
+import { AGENT_EVENT, McapRecorder, recordHal, TOPICS } from '@hal/recorder';
 import { integerArg, positiveArg } from '@hal/remote/cli';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
@@ -26,6 +27,7 @@ import type { RegisterCommand } from './index.js';
 
 interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
   maxTime?: number;
+  record?: string;
   timeout?: number;
 }
 
@@ -104,6 +106,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     )
     .addOption(
       new Option(
+        '--record <file>',
+        "record the run into this MCAP file: the robot's calls and pose, and the agent's events",
+      ),
+    )
+    .addOption(
+      new Option(
         '--context <tokens>',
         'context window of the local model (default 2048)',
       ).argParser(integerArg('--context', 256, 131_072)),
@@ -130,6 +138,21 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         `model ${local.modelFile} (${local.gpu === false ? 'CPU' : local.gpu})`,
       );
     }
+    // a file that cannot be written is refused before any robot is touched
+    const recorder =
+      options.record === undefined
+        ? undefined
+        : await McapRecorder.toFile(options.record, {
+            logger,
+          }).catch(async (error: unknown) => {
+            await local?.dispose().catch(() => undefined);
+            throw new CliError(
+              'USAGE',
+              `--record: cannot write ${options.record}: ${error instanceof Error ? error.message : String(error)}`,
+            );
+          });
+    recorder?.channel(TOPICS.agent, AGENT_EVENT);
+    const sampling = new AbortController();
     try {
       const connect =
         options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
@@ -137,7 +160,10 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         target,
         io,
         { ...connect, json, role: 'control' },
-        async ({ hal }) => {
+        async ({ hal: opened, deviceId }) => {
+          const hal = recorder
+            ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
+            : opened;
           const tools =
             choice.kind === 'endpoint' && choice.tools !== undefined
               ? // the loop stops the robot with `stop` at the end of a run: always keep it
@@ -175,7 +201,11 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
               ...(options.maxTime === undefined ? {} : { maxMs: options.maxTime * 1000 }),
             },
             signal: io.signal,
-            onEvent: (event) => (json ? io.out(`${JSON.stringify(event)}\n`) : print(event)),
+            onEvent: (event) => {
+              recorder?.write(TOPICS.agent, event);
+              if (json) io.out(`${JSON.stringify(event)}\n`);
+              else print(event);
+            },
             logger,
           });
           let pose: Pose | undefined;
@@ -187,6 +217,8 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
           return { outcome: run, pose };
         },
       );
+      sampling.abort();
+      const recorded = await recorder?.close();
       const summary = {
         type: 'outcome',
         reason: outcome.reason,
@@ -194,6 +226,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         elapsedMs: outcome.elapsedMs,
         text: outcome.text,
         ...(pose === undefined ? {} : { pose }),
+        ...(recorded === undefined ? {} : { recording: { file: options.record, ...recorded } }),
         ...(outcome.error === undefined
           ? {}
           : { error: { code: outcome.error.code, message: outcome.error.message } }),
@@ -214,6 +247,8 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         );
       }
     } finally {
+      sampling.abort();
+      await recorder?.close().catch(() => undefined);
       await local?.dispose().catch(() => undefined);
     }
   });

@@ -13,6 +13,9 @@ import { registerFleet } from './fleet.js';
 import { registerCalibrate } from './calibrate.js';
 import { registerAgent } from './agent.js';
 import { registerEval } from './eval.js';
+import { registerRecord } from './record.js';
+import { registerInspect } from './inspect.js';
+import { registerReplay } from './replay.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -37,4 +40,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerDiscover,
   registerTest,
   registerFleet,
+  registerRecord,
+  registerInspect,
+  registerReplay,
 ];

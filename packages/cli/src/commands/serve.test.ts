@@ -1,3 +1,7 @@
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { readRecordingFile } from '@hal/recorder';
 import { describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import { runHal } from '../program.js';
@@ -102,5 +106,49 @@ describe('hal serve on WebSocket', () => {
     const io = captureIO();
     expect(await runHal(['--json', 'serve', '--sim', '--nats', 'nats://127.0.0.1:1'], io)).toBe(1);
     expect(JSON.parse(io.stderr())).toMatchObject({ error: { code: 'NOT_CONNECTED' } });
+  });
+});
+
+describe('hal serve --record', () => {
+  it("records every client's calls into the file, and says what it wrote when stopped", async () => {
+    const dir = mkdtempSync(join(tmpdir(), 'hal-serve-record-'));
+    try {
+      const file = join(dir, 'served.mcap');
+      const io = captureIO();
+      const serving = runHal(
+        ['--json', 'serve', '--sim', '--time-scale', '20', '--ws-port', '0', '--record', file],
+        io,
+      );
+      await waitForOutput(io, (o) => o.jsonLines().length > 0);
+      const { ws } = io.jsonLines()[0] as { ws: { url: string } };
+      expect(await runHal(['drive', 'forward', '0.05', '--ws', ws.url], captureIO())).toBe(0);
+      expect(await runHal(['drive', 'estop', 'served', '--ws', ws.url], captureIO())).toBe(0);
+      io.abort();
+      expect(await serving).toBe(0);
+      expect(io.jsonLines().at(-1)).toMatchObject({
+        event: 'stopped',
+        recording: { file, dropped: 0, written: expect.any(Number) },
+      });
+      const recording = await readRecordingFile(file);
+      expect(recording.complete).toBe(true);
+      const calls = recording.messages
+        .filter((m) => m.topic === '/hal/calls')
+        .map((m) => (m.value as { call: string }).call);
+      expect(calls).toContain('locomotion.moveForward');
+      expect(calls).toContain('safety.emergencyStop');
+      expect(recording.metadata.get('hal.robot')).toMatchObject({ mode: 'simulation' });
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  }, 30_000);
+
+  it('refuses a file it cannot write before touching the robot', async () => {
+    const io = captureIO();
+    const code = await runHal(
+      ['serve', '--sim', '--ws-port', '0', '--record', '/nonexistent-dir/run.mcap'],
+      io,
+    );
+    expect(code).toBe(2);
+    expect(io.stderr()).toContain('--record: cannot write /nonexistent-dir/run.mcap');
   });
 });

@@ -5,12 +5,16 @@ import { Command, Option } from 'commander';
 import { TAFY_NODE_TYPE } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
 import { openConnection, refuseServedTwice, serveHalOnNats } from '@hal/nats';
+import { McapRecorder, recordHal } from '@hal/recorder';
+import type { RecorderStats } from '@hal/recorder';
+import type { HardwareAbstractionLayer } from '@hal/types';
 import type { HalGateway } from '@hal/nats';
 import { checkBinding, integerArg } from '@hal/remote/cli';
 import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
+import type { CliIO } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import { announceGateway } from '../serve/announce-node.js';
 import { servePlan, servedSubjects } from '../serve/where.js';
@@ -78,6 +82,12 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
         'drop a silent WebSocket client (and stop its motion) after this long (default 2000)',
       ).argParser(integerArg('--heartbeat-timeout', 100, 10_000)),
     );
+  command.addOption(
+    new Option(
+      '--record <file>',
+      "record the served robot's run (every call from every client) into this MCAP file",
+    ),
+  );
   addNatsOptions(command);
   addTargetOptions(command, SERVED_KINDS);
   command.action(async (options: ServeCliOptions & TargetCliOptions) => {
@@ -111,12 +121,20 @@ async function serveTarget(
   target: Target,
   nc: NatsConnection | undefined,
 ): Promise<void> {
+  // a file that cannot be written is refused before the robot is touched
+  const recording =
+    options.record === undefined
+      ? undefined
+      : await startRecording(options.record, io, global().json);
   const opened = await openTarget(target, io, {
     json: global().json,
     ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
     ...(options.device === undefined ? {} : { deviceId: options.device }),
+  }).catch(async (error: unknown) => {
+    await recording?.close();
+    throw error;
   });
-  const { hal } = opened;
+  const hal = recording?.wrap(opened.hal, options.device ?? opened.deviceId) ?? opened.hal;
   let gateway: HalGateway | undefined;
   let server: HalServer | undefined;
   let announcer: TafyNodeAnnouncer | undefined;
@@ -196,5 +214,42 @@ async function serveTarget(
     await gateway?.close().catch(() => undefined);
     await opened.close();
   }
-  emit(io, global(), { event: 'stopped' }, () => 'stopped');
+  const recorded = await recording?.close();
+  emit(
+    io,
+    global(),
+    { event: 'stopped', ...(recorded === undefined ? {} : { recording: recorded }) },
+    () =>
+      recorded === undefined
+        ? 'stopped'
+        : `stopped; recorded ${recorded.written} messages to ${recorded.file}${recorded.dropped > 0 ? `, ${recorded.dropped} dropped` : ''}`,
+  );
+}
+
+/** --record: the served HAL, recorded into `file`, and how to finish the file. */
+async function startRecording(
+  file: string,
+  io: CliIO,
+  json: boolean,
+): Promise<{
+  wrap(served: HardwareAbstractionLayer, deviceId: string): HardwareAbstractionLayer;
+  close(): Promise<RecorderStats & { file: string }>;
+}> {
+  const log = cliLogger(io, json);
+  const recorder = await McapRecorder.toFile(file, {
+    logger: log,
+  }).catch((error: unknown) => {
+    throw new CliError(
+      'USAGE',
+      `--record: cannot write ${file}: ${error instanceof Error ? error.message : String(error)}`,
+    );
+  });
+  const sampling = new AbortController();
+  return {
+    wrap: (served, deviceId) => recordHal(served, recorder, { signal: sampling.signal, deviceId }),
+    close: async () => {
+      sampling.abort();
+      return { file, ...(await recorder.close()) };
+    },
+  };
 }

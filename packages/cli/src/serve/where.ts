@@ -15,6 +15,8 @@ export interface ServeCliOptions extends NatsCliOptions {
   host?: string;
   token?: string;
   heartbeatTimeout?: number;
+  /** --record: the MCAP file the served robot's run is recorded into. */
+  record?: string;
 }
 
 export interface ServePlan {

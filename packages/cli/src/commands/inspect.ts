@@ -1,0 +1,47 @@
+// `hal inspect run.mcap`: what a recording holds (duration, calls, errors, e-stops, the messages
+// of each channel, what the recorder dropped), read with MCAP's recovery if it was cut short.
+import { Command } from 'commander';
+import { readRecordingFile, summarizeRecording } from '@hal/recorder';
+import type { RecordingSummary } from '@hal/recorder';
+import { CliError } from '../cli-error.js';
+import { emit } from '../io.js';
+import type { RegisterCommand } from './index.js';
+
+function summaryText(file: string, s: RecordingSummary): string {
+  const robot = s.robot === undefined ? '' : ` of ${s.robot['device_id']} (${s.robot['mode']})`;
+  const codes = Object.entries(s.errorsByCode).map(([code, n]) => `${code} ${n}`);
+  return [
+    `${file}: a recording${robot}, ${s.durationS.toFixed(2)} s${s.complete ? '' : ' (cut short: read up to its last complete chunk)'}`,
+    `calls ${s.calls}, errors ${s.errors}${codes.length > 0 ? ` (${codes.join(', ')})` : ''}`,
+    `emergency stops ${s.emergencyStops}, trips ${s.trips}${s.dropped === undefined ? '' : `, dropped ${s.dropped}`}`,
+    ...Object.entries(s.channels).map(
+      ([topic, c]) => `  ${topic.padEnd(16)} ${String(c.messages).padStart(7)}  ${c.schema}`,
+    ),
+  ].join('\n');
+}
+
+/** Reads a recording for a command: NOT_FOUND when there is no such file, FAILED when not MCAP. */
+export async function readForCommand(file: string) {
+  try {
+    return await readRecordingFile(file);
+  } catch (error) {
+    const code = (error as { code?: unknown }).code;
+    if (code === 'ENOENT') throw new CliError('NOT_FOUND', `no recording at ${file}`);
+    throw new CliError(
+      'FAILED',
+      `${file} is not a readable MCAP recording: ${error instanceof Error ? error.message : String(error)}`,
+    );
+  }
+}
+
+export const registerInspect: RegisterCommand = (program, { io, global }) => {
+  program.addCommand(
+    new Command('inspect')
+      .description('sum up a recording: duration, calls, errors, e-stops, messages per channel')
+      .argument('<file>', 'an MCAP file written by hal record or @hal/recorder')
+      .action(async (file: string) => {
+        const summary = summarizeRecording(await readForCommand(file));
+        emit(io, global(), { file, ...summary }, () => summaryText(file, summary));
+      }),
+  );
+};

@@ -1,0 +1,94 @@
+// `hal record -o run.mcap STEPS...`: runs the steps on any robot the CLI names, recorded into an
+// MCAP file (calls, pose, e-stops: docs/recording.md). A refused step is recorded and the run goes
+// on, as a robot under test would; the summary says which.
+import { Command } from 'commander';
+import { McapRecorder, recordHal } from '@hal/recorder';
+import type { RecorderStats } from '@hal/recorder';
+import { CliError } from '../cli-error.js';
+import { actionText, callFor } from '../drive/actions.js';
+import { emit } from '../io.js';
+import { cliLogger } from '../logger.js';
+import { parseStep } from '../record/steps.js';
+import { addTargetOptions, describeTarget, resolveTarget } from '../target.js';
+import type { TargetCliOptions } from '../target.js';
+import { withTarget } from '../target-hal.js';
+import type { RegisterCommand } from './index.js';
+
+interface RecordOptions extends TargetCliOptions {
+  output: string;
+}
+
+interface StepOutcome {
+  step: string;
+  success: boolean;
+  code?: string;
+}
+
+export const registerRecord: RegisterCommand = (program, { io, global }) => {
+  const command = new Command('record')
+    .description('run steps on a robot and record the run to an MCAP file (see docs/recording.md)')
+    .requiredOption('-o, --output <file>', 'the MCAP file to write')
+    .argument(
+      '<steps...>',
+      'each one action: "forward M", "turn DEG", "move-to X Y", "wheels L R MS", stop, "estop [REASON]", reset-estop',
+    );
+  addTargetOptions(command).action(async (stepTexts: string[], options: RecordOptions) => {
+    const steps = stepTexts.map(parseStep);
+    const target = resolveTarget(options, io.env);
+    const json = global().json;
+    const logger = cliLogger(io, json);
+    const recorder = await McapRecorder.toFile(options.output, { logger }).catch(
+      (error: unknown) => {
+        throw new CliError(
+          'FAILED',
+          `cannot write ${options.output}: ${error instanceof Error ? error.message : String(error)}`,
+        );
+      },
+    );
+    const connect =
+      options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
+    const outcomes: StepOutcome[] = [];
+    const sampling = new AbortController();
+    let stats: RecorderStats;
+    try {
+      await withTarget(target, io, { ...connect, json }, async ({ hal: opened, deviceId }) => {
+        const map = target.kind === 'sim' ? { name: target.map } : undefined;
+        const hal = recordHal(opened, recorder, {
+          signal: sampling.signal,
+          deviceId,
+          ...(map ? { map } : {}),
+        });
+        for (const [i, action] of steps.entries()) {
+          if (io.signal.aborted) break;
+          const result = await callFor(hal, action);
+          outcomes.push({
+            step: stepTexts[i]!,
+            success: result.success,
+            ...(result.code === undefined ? {} : { code: result.code }),
+          });
+        }
+        await hal.locomotion.getPose().catch(() => undefined);
+        sampling.abort();
+      });
+    } finally {
+      sampling.abort();
+      stats = await recorder.close();
+    }
+    const summary = {
+      file: options.output,
+      target: describeTarget(target),
+      steps: outcomes,
+      recorder: stats,
+    };
+    emit(io, global(), summary, () =>
+      [
+        ...outcomes.map(
+          (o, i) =>
+            `${actionText(steps[i]!)}: ${o.success ? 'ok' : `refused (${o.code ?? 'failed'})`}`,
+        ),
+        `recorded ${stats.written} messages to ${options.output}${stats.dropped > 0 ? `, ${stats.dropped} dropped` : ''}`,
+      ].join('\n'),
+    );
+  });
+  program.addCommand(command);
+};

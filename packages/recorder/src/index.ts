@@ -1,0 +1,29 @@
+export { McapRecorder } from './recorder.js';
+export type { RecorderOptions, RecorderStats } from './recorder.js';
+export { recordHal, RECORDER_VERSION } from './record-hal.js';
+export type { RecordHalOptions } from './record-hal.js';
+export { memorySink, openFileSink } from './file-sink.js';
+export type { RecordingSink } from './file-sink.js';
+export { readRecording, readRecordingFile } from './read-recording.js';
+export type { RecordedMessage, Recording } from './read-recording.js';
+export type { ChunkCompression } from './compression.js';
+export {
+  AGENT_EVENT,
+  AgentEventRecordSchema,
+  CALL_RECORD,
+  HAL_POSE,
+  HalCallRecordSchema,
+  RECORDER_LOSS,
+  RecorderLossSchema,
+  SAFETY_EVENT,
+  SafetyEventSchema,
+  TOPICS,
+} from './messages.js';
+export type { HalCallRecord, RecorderLoss, SafetyEvent } from './messages.js';
+export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
+export type { NamedJsonSchema } from './foxglove-schemas.js';
+export { summarizeRecording } from './summary.js';
+export type { RecordingSummary } from './summary.js';
+export { replayRecording } from './replay.js';
+export type { ReplayedCall, ReplayReport } from './replay.js';
+export { trajectorySvg } from './trajectory-svg.js';

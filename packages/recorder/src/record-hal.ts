@@ -1,0 +1,429 @@
+import { scoped, silentLogger } from '@hal/types';
+import type { HardwareAbstractionLayer, Logger, Pose } from '@hal/types';
+import {
+  COMPRESSED_IMAGE,
+  FOXGLOVE_LOG_LEVEL,
+  FRAME_TRANSFORM,
+  LOG,
+  POSE_IN_FRAME,
+  foxgloveTime,
+  quaternionFromEuler,
+} from './foxglove-schemas.js';
+import { jsonSafe } from './json-safe.js';
+import { CALL_RECORD, HAL_POSE, SAFETY_EVENT, TOPICS } from './messages.js';
+import type { HalCallRecord, SafetyEvent } from './messages.js';
+import type { McapRecorder } from './recorder.js';
+
+/** What `recordHal` records besides the calls. */
+export interface RecordHalOptions {
+  /** Pose sample period while the HAL is ready, ms; 0 samples only after motions. Default 100. */
+  posePeriodMs?: number;
+  /** The robot's id for the metadata, when it is not the HAL's own `getDeviceInfo().id`. */
+  deviceId?: string;
+  /** The map the robot runs in (any JSON), for the metadata record `hal.robot`. */
+  map?: unknown;
+  /** The project's version, for the metadata (default this package's). */
+  version?: string;
+  /** Where the recorder's own warnings go. */
+  logger?: Logger;
+  /** Stops the pose sampling when aborted (it also stops on `cleanup()` through the proxy). */
+  signal?: AbortSignal;
+}
+
+/** The version written into recordings. */
+export const RECORDER_VERSION = '0.1.0';
+
+const SUBSYSTEMS = ['locomotion', 'vision', 'manipulation', 'communication', 'safety'] as const;
+/** The subsystems whose action calls can move the robot: the pose is read after each of them. */
+const MOVING_SUBSYSTEMS: ReadonlySet<string> = new Set(['locomotion', 'manipulation', 'safety']);
+
+interface CallInfo {
+  subsystem: string | undefined;
+  method: string;
+  args: unknown[];
+}
+
+function isPromiseLike(value: unknown): value is PromiseLike<unknown> {
+  return (
+    typeof value === 'object' &&
+    value !== null &&
+    typeof (value as { then?: unknown }).then === 'function'
+  );
+}
+
+/** The arguments as given, less trailing `undefined`s (an omitted optional argument). */
+function withoutTrailingUndefined(args: readonly unknown[]): unknown[] {
+  let end = args.length;
+  while (end > 0 && args[end - 1] === undefined) end -= 1;
+  return args.slice(0, end);
+}
+
+/** A HALToolResult, as motion, stop, e-stop and the other action calls answer. */
+function isToolResult(value: unknown): boolean {
+  return (
+    typeof value === 'object' &&
+    value !== null &&
+    typeof (value as { success?: unknown }).success === 'boolean' &&
+    typeof (value as { mode?: unknown }).mode === 'string'
+  );
+}
+
+function failureOf(value: unknown): { success: boolean; code?: string; error?: string } {
+  if (typeof value === 'object' && value !== null && 'success' in value) {
+    const result = value as { success: unknown; code?: unknown; error?: unknown };
+    if (result.success === false) {
+      return {
+        success: false,
+        ...(typeof result.code === 'string' ? { code: result.code } : {}),
+        ...(typeof result.error === 'string' ? { error: result.error } : {}),
+      };
+    }
+  }
+  return { success: true };
+}
+
+function errorOf(error: unknown): { code?: string; error: string } {
+  const code = (error as { code?: unknown } | null)?.code;
+  return {
+    ...(typeof code === 'string' ? { code } : {}),
+    error: error instanceof Error ? error.message : String(error),
+  };
+}
+
+/**
+ * Wraps `hal` so that everything passing through it is recorded into `recorder`, and otherwise
+ * behaves exactly as `hal` does: the same results, the same errors, synchronous calls still
+ * synchronous. Every method of the HAL and of its subsystems is wrapped generically (no list of
+ * calls), so a call added to the HAL is recorded with no change here.
+ *
+ * Recorded: every call (`/hal/calls`), the pose at `posePeriodMs` and after every locomotion,
+ * manipulation or safety action (`/hal/pose`, `/tf`, `/hal/pose/raw`), camera frames
+ * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), and the
+ * robot's metadata (`hal.robot`) once it is ready. A call answers its caller first: only the
+ * latch and (after an action that can move) the pose are read at once; the record is made a turn
+ * later and queued, never waiting for the disk.
+ */
+export function recordHal<T extends HardwareAbstractionLayer>(
+  hal: T,
+  recorder: McapRecorder,
+  options: RecordHalOptions = {},
+): T {
+  const posePeriodMs = options.posePeriodMs ?? 100;
+  for (const [topic, schema] of [
+    [TOPICS.calls, CALL_RECORD],
+    [TOPICS.pose, POSE_IN_FRAME],
+    [TOPICS.halPose, HAL_POSE],
+    [TOPICS.tf, FRAME_TRANSFORM],
+    [TOPICS.camera, COMPRESSED_IMAGE],
+    [TOPICS.log, LOG],
+    [TOPICS.safety, SAFETY_EVENT],
+  ] as const) {
+    recorder.channel(topic, schema);
+  }
+
+  let timer: ReturnType<typeof setInterval> | undefined;
+  let sampling = false;
+  let lastLatched = safe(() => hal.safety.isEmergencyStopped(), false);
+  let robotWritten = false;
+
+  function safe<R>(read: () => R, fallback: R): R {
+    try {
+      return read();
+    } catch {
+      return fallback;
+    }
+  }
+
+  function writePose(pose: Pose): void {
+    const now = recorder.clock();
+    const timestamp = foxgloveTime(now);
+    const { x, y, z } = pose.position;
+    const orientation = quaternionFromEuler(
+      pose.rotation.yaw,
+      pose.rotation.pitch,
+      pose.rotation.roll,
+    );
+    recorder.write(
+      TOPICS.pose,
+      { timestamp, frame_id: 'world', pose: { position: { x, y, z }, orientation } },
+      now,
+    );
+    recorder.write(
+      TOPICS.tf,
+      {
+        timestamp,
+        parent_frame_id: 'world',
+        child_frame_id: 'base_link',
+        translation: { x, y, z },
+        rotation: orientation,
+      },
+      now,
+    );
+    recorder.write(TOPICS.halPose, jsonSafe(pose), now);
+  }
+
+  /** Reads the pose and the latch from the HAL itself (not through the recorded calls). */
+  function sample(): void {
+    watchLatch();
+    if (sampling || !safe(() => hal.isReady(), false)) return;
+    sampling = true;
+    try {
+      hal.locomotion.getPose().then(
+        (pose) => {
+          sampling = false;
+          writePose(pose);
+        },
+        () => {
+          sampling = false;
+        },
+      );
+    } catch {
+      // a HAL whose getPose throws at once: nothing to sample this time
+      sampling = false;
+    }
+  }
+
+  function watchLatch(): void {
+    const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
+    if (latched === lastLatched) return;
+    lastLatched = latched;
+    const event: SafetyEvent = {
+      event: latched ? 'latched' : 'cleared',
+      success: true,
+      emergency_stopped: latched,
+    };
+    recorder.write(TOPICS.safety, event);
+  }
+
+  function writeRobot(): void {
+    if (robotWritten) return;
+    robotWritten = true;
+    const info = safe(() => hal.getDeviceInfo(), undefined);
+    recorder.metadata('hal.robot', {
+      device_id: options.deviceId ?? info?.id ?? '',
+      type: info?.type ?? '',
+      mode: String(hal.mode),
+      capabilities: JSON.stringify(info?.capabilities ?? []),
+      robot_config: JSON.stringify(jsonSafe(hal.robotConfig) ?? null),
+      version: options.version ?? RECORDER_VERSION,
+      map: JSON.stringify(jsonSafe(options.map) ?? null),
+    });
+  }
+
+  function onReady(): void {
+    writeRobot();
+    if (posePeriodMs > 0 && timer === undefined && !options.signal?.aborted) {
+      timer = setInterval(sample, posePeriodMs);
+      (timer as { unref?: () => void }).unref?.();
+    }
+    sample();
+  }
+
+  function stopSampling(): void {
+    if (timer !== undefined) clearInterval(timer);
+    timer = undefined;
+  }
+  options.signal?.addEventListener('abort', stopSampling, { once: true });
+
+  function afterCall(
+    info: CallInfo,
+    value: unknown,
+    ok: boolean,
+    code: string | undefined,
+    now: bigint,
+    latchedAfter: boolean,
+  ): void {
+    const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
+    if (name === 'initialize' && ok) onReady();
+    if (name === 'cleanup') stopSampling();
+    if (name === 'vision.captureFrame' && ok && typeof value === 'string') {
+      const comma = value.indexOf(',');
+      const format = /^data:image\/(\w+)/.exec(value)?.[1] ?? 'jpeg';
+      recorder.write(
+        TOPICS.camera,
+        {
+          timestamp: foxgloveTime(now),
+          frame_id: 'camera',
+          data: comma >= 0 ? value.slice(comma + 1) : value,
+          format,
+        },
+        now,
+      );
+    }
+    if (name === 'communication.log') {
+      const [message, level] = info.args;
+      recorder.write(
+        TOPICS.log,
+        {
+          timestamp: foxgloveTime(now),
+          level: FOXGLOVE_LOG_LEVEL[level as keyof typeof FOXGLOVE_LOG_LEVEL] ?? 2,
+          message: String(message),
+          name: safe(() => hal.getDeviceInfo().id, 'hal'),
+          file: '',
+          line: 0,
+        },
+        now,
+      );
+    }
+    if (name === 'safety.emergencyStop' || name === 'safety.resetEmergencyStop') {
+      const latched = latchedAfter;
+      const reason = info.args[0];
+      const event: SafetyEvent = {
+        event: name === 'safety.emergencyStop' ? 'emergency_stop' : 'reset',
+        ...(name === 'safety.emergencyStop' && typeof reason === 'string' ? { reason } : {}),
+        success: ok,
+        ...(code !== undefined ? { code } : {}),
+        emergency_stopped: latched,
+      };
+      recorder.write(TOPICS.safety, event, now);
+    }
+    if (
+      (info.subsystem === 'locomotion' && info.method !== 'getPose') ||
+      info.subsystem === 'safety'
+    ) {
+      if (info.method !== 'isEmergencyStopped' && info.method !== 'getSafetyStatus') sample();
+    }
+  }
+
+  function record(
+    info: CallInfo,
+    start: bigint,
+    startMs: number,
+    outcome: HalCallRecord['outcome'],
+    value: unknown,
+  ): void {
+    const durationMs = Math.max(0, performance.now() - startMs);
+    // The pose this call left is asked for now, before the caller can start another motion; the
+    // record itself is made off the call's path, so the caller has its answer first.
+    let poseAfter: Promise<Pose> | undefined;
+    try {
+      if (MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value) && hal.isReady()) {
+        poseAfter = hal.locomotion.getPose();
+        poseAfter.catch(() => undefined);
+      }
+    } catch {
+      poseAfter = undefined;
+    }
+    const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
+    // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
+    // a change any other call finds is a trip (rare, so written at once)
+    if (info.subsystem === 'safety') lastLatched = latched;
+    else watchLatch();
+    recorder.defer(() => recordNow(info, start, durationMs, outcome, value, poseAfter, latched));
+  }
+
+  function recordNow(
+    info: CallInfo,
+    start: bigint,
+    durationMs: number,
+    outcome: HalCallRecord['outcome'],
+    value: unknown,
+    poseAfter: Promise<Pose> | undefined,
+    latchedAfter: boolean,
+  ): Promise<void> | undefined {
+    try {
+      const failed = outcome === 'rejected' || outcome === 'threw';
+      const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
+      const entry: HalCallRecord = {
+        call: info.subsystem ? `${info.subsystem}.${info.method}` : info.method,
+        args: (jsonSafe(withoutTrailingUndefined(info.args)) as unknown[] | undefined) ?? [],
+        outcome,
+        ...status,
+        ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),
+        start_ns: start.toString(),
+        duration_ms: durationMs,
+      };
+      const finish = (poseAfter?: Pose): void => {
+        recorder.write(
+          TOPICS.calls,
+          poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
+        );
+        afterCall(info, value, status.success, status.code, recorder.clock(), latchedAfter);
+      };
+      if (poseAfter !== undefined) {
+        // the pose this call left, read from the HAL itself, goes with the call (for replay)
+        return poseAfter.then(
+          (pose) => {
+            writePose(pose);
+            finish(pose);
+          },
+          () => finish(),
+        );
+      }
+      finish();
+    } catch (error) {
+      scoped(options.logger ?? silentLogger, 'hal:recorder').warn(
+        `recorder could not record ${info.method}: ${String(error)}`,
+      );
+    }
+    return undefined;
+  }
+
+  function wrapMethod(
+    fn: (...args: unknown[]) => unknown,
+    owner: object,
+    subsystem: string | undefined,
+    method: string,
+  ) {
+    return function recorded(...args: unknown[]): unknown {
+      const info: CallInfo = { subsystem, method, args };
+      const start = recorder.clock();
+      const startMs = performance.now();
+      let out: unknown;
+      try {
+        out = fn.apply(owner, args);
+      } catch (error) {
+        record(info, start, startMs, 'threw', error);
+        throw error;
+      }
+      if (!isPromiseLike(out)) {
+        record(info, start, startMs, 'returned', out);
+        return out;
+      }
+      return Promise.resolve(out).then(
+        (value) => {
+          record(info, start, startMs, 'resolved', value);
+          return value;
+        },
+        (error: unknown) => {
+          record(info, start, startMs, 'rejected', error);
+          throw error;
+        },
+      );
+    };
+  }
+
+  /** A proxy whose function properties are recorded; everything else reads through unchanged. */
+  function wrapObject<O extends object>(target: O, subsystem: string | undefined): O {
+    const wrapped = new Map<PropertyKey, { fn: unknown; wrapper: unknown }>();
+    return new Proxy(target, {
+      get(obj, prop) {
+        // Read with the real object as receiver: getters and #private fields need it.
+        const value: unknown = Reflect.get(obj, prop, obj);
+        if (
+          subsystem === undefined &&
+          typeof prop === 'string' &&
+          (SUBSYSTEMS as readonly string[]).includes(prop)
+        ) {
+          if (typeof value !== 'object' || value === null) return value;
+          const cached = wrapped.get(prop);
+          if (cached?.fn === value) return cached.wrapper;
+          const wrapper = wrapObject(value, prop);
+          wrapped.set(prop, { fn: value, wrapper });
+          return wrapper;
+        }
+        if (typeof value !== 'function' || typeof prop !== 'string' || prop === 'constructor')
+          return value;
+        const cached = wrapped.get(prop);
+        if (cached?.fn === value) return cached.wrapper;
+        const wrapper = wrapMethod(value as (...args: unknown[]) => unknown, obj, subsystem, prop);
+        wrapped.set(prop, { fn: value, wrapper });
+        return wrapper;
+      },
+    });
+  }
+
+  // a HAL handed over already initialised (as the `hal` command opens its targets)
+  if (safe(() => hal.isReady(), false)) onReady();
+  return wrapObject(hal, undefined);
+}
