@@ -75,7 +75,7 @@ describe('examples/llm-agent', () => {
     expect(run.stdout).toMatch(/model: .*SmolLM2-135M-Instruct\.Q4_1\.gguf \(in this process\)/);
     expect(run.stdout).toMatch(/done: (completed|max_steps) after 1 steps/);
     expect(run.stdout).toMatch(/pose: x -?\d/);
-  });
+  }, 150_000); // the app's own bound is 120 s: loading the model and one generation on a busy CPU
 
   it('refuses a missing model file at once, naming it', async () => {
     const run = await runApp({ HAL_MODEL_FILE: '/nonexistent/model.gguf' }, 'Anything.');
