@@ -25,3 +25,5 @@ export type {
   TurnRun,
   WheelGeometry,
 } from './calibrate/calibration-math.js';
+export { deviceFactories } from './fleet/device-factories.js';
+export type { FleetDeviceFactories } from './fleet/device-factories.js';

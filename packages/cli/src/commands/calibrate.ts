@@ -13,7 +13,7 @@ import {
   writeCalibrationFile,
 } from '@hal/physical';
 import type { CalibrationSource } from '@hal/physical';
-import { positiveArg } from '@hal/remote/cli';
+import { positiveArg } from '../values.js';
 import { HalError } from '@hal/types';
 import { canPrompt, prompter } from '../calibrate/prompt.js';
 import { runCalibration, TURN_DEG } from '../calibrate/run-calibration.js';

@@ -12,6 +12,7 @@ import { registerTest } from './test.js';
 import { registerFleet } from './fleet.js';
 import { registerCalibrate } from './calibrate.js';
 import { registerAgent } from './agent.js';
+import { registerMcp } from './mcp.js';
 
 /** What a command module gets when it registers. */
 export interface CommandContext {
@@ -30,6 +31,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerTeleop,
   registerCalibrate,
   registerAgent,
+  registerMcp,
   registerServe,
   registerEmulate,
   registerDiscover,
