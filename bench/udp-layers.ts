@@ -15,7 +15,8 @@
 import { randomBytes } from 'node:crypto';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
-import { MessageCodec, PhysicalHAL, silentLogger, udpTransport } from '@hal/physical';
+import { PhysicalHAL, silentLogger, udpTransport } from '@hal/physical';
+import { MessageCodec } from '@hal/physical/protocol';
 // the session is internal to the package: this tool reaches it where it lies
 import { Session } from '../packages/physical/src/session.js';
 import { startEmulator } from '../tests/physical/emulator.js';

@@ -6,7 +6,8 @@
 import { createSocket } from 'node:dgram';
 import type { Socket } from 'node:dgram';
 import { PhysicalHAL, udpTransport } from '@hal/physical';
-import type { Logger, LogLevel, TransportFactory, UdpTransport, WireReply } from '@hal/physical';
+import type { Logger, LogLevel, TransportFactory, UdpTransport } from '@hal/physical';
+import type { WireReply } from '@hal/physical/protocol';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 import type { Emulator } from './emulator.js';
