@@ -22,7 +22,7 @@ import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
   maxTime?: number;

@@ -24,7 +24,7 @@ import type { CliIO } from '../io.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface CalibrateOptions extends TargetCliOptions {
   distanceCm: number;

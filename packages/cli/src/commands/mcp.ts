@@ -14,7 +14,7 @@ import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
 import { createRobot } from '../mcp/robot.js';
 import { aborted } from '../wait.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 /** Resolves when `stdin` ends (the MCP client went away) or `signal` is aborted. */
 function clientGone(stdin: Readable, signal: AbortSignal): Promise<void> {

@@ -20,7 +20,7 @@ import type { Target, TargetCliOptions } from '../target.js';
 import { cliLogger } from '../logger.js';
 import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
-import type { CommandContext, RegisterCommand } from './index.js';
+import type { CommandContext, RegisterCommand } from './context.js';
 
 const SERVED_KINDS = ['sim', 'udp', 'serial'] as const;
 

@@ -9,7 +9,7 @@ import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import { sleep } from '../wait.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface StatusOptions extends TargetCliOptions {
   watch: boolean;

@@ -12,7 +12,7 @@ import { TELEOP_HELP } from '../teleop/keys.js';
 import { runTeleop } from '../teleop/session.js';
 import { withStatusLine } from '../teleop/status-line.js';
 import { requireTerminal, withRawMode } from '../teleop/terminal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface TeleopCliOptions extends TargetCliOptions {
   power: number;
