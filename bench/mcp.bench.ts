@@ -1,4 +1,4 @@
-// Latency of one tool call (get_pose) through the MCP server, over stdio (the hal-mcp process,
+// Latency of one tool call (get_pose) through the MCP server, over stdio (the `hal mcp` process,
 // its embedded simulator) and over streamable HTTP on 127.0.0.1 (this process, the same HAL as
 // the direct call), beside a direct `locomotion.getPose()` on the HAL. Interleaved: each round
 // makes one call of each kind, so load on the machine falls on all three alike.
@@ -26,7 +26,7 @@ const stdio = new Client({ name: 'bench', version: '1.0.0' });
 await stdio.connect(
   new StdioClientTransport({
     command: process.execPath,
-    args: ['--conditions=@hal/source', '--import', 'tsx', 'packages/mcp/src/bin.ts'],
+    args: ['--conditions=@hal/source', '--import', 'tsx', 'packages/cli/src/main.ts', 'mcp'],
     cwd: root,
     stderr: 'ignore',
   }),

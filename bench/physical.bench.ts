@@ -7,7 +7,8 @@
 // alone, streaming against one-shot.
 import { createHash } from 'node:crypto';
 import { PerformanceObserver } from 'node:perf_hooks';
-import { decodeFrame, encodeFrame, FrameDecoder, PhysicalHAL } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { decodeFrame, encodeFrame, FrameDecoder } from '@hal/physical/protocol';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { openRawUdpClient, setLedJson } from './raw-udp-client.js';
 import { percentile, reportFigure, reportPoint } from './report/figures.js';

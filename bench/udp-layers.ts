@@ -15,7 +15,8 @@
 import { randomBytes } from 'node:crypto';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
-import { MessageCodec, PhysicalHAL, udpTransport } from '@hal/physical';
+import { PhysicalHAL, udpTransport } from '@hal/physical';
+import { MessageCodec } from '@hal/physical/protocol';
 import { silentLogger } from '@hal/types';
 // the session is internal to the package: this tool reaches it where it lies
 import { Session } from '../packages/physical/src/session.js';

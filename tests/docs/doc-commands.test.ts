@@ -10,7 +10,7 @@
 // and every other block runs. The reason is listed as a test of its own, so nothing is skipped
 // silently. A block that another test already runs may say so instead of running twice, but only
 // by naming that test's file: `<!-- not run: covered by tests/cli/readme.test.ts -->` (the file
-// must exist). Long-running commands (`pnpm start`, `hal serve`, `hal teleop`, hal-mcp, ...; see
+// must exist). Long-running commands (`pnpm start`, `hal serve`, `hal teleop`, `hal mcp`, ...; see
 // long-running.ts) are started, checked for their ready line and stopped with Ctrl-C at the end of
 // their block. `hal` is on PATH as docs/cli.md sets it up from a checkout (scripts/hal.js). A
 // block that names nats://127.0.0.1:4222 gets a nats-server there, started by this test; a block

@@ -32,14 +32,8 @@ export const LONG_RUNNING: readonly LongRunning[] = [
     ready: 'pose',
   },
   {
-    name: 'hal-serve (@hal/remote)',
-    command: /^(?:hal-serve\b|pnpm --filter @hal\/remote serve\b)/,
-    ready: 'listening ws://',
-    defaultPorts: [8765],
-  },
-  {
-    name: 'hal-mcp',
-    command: /^(?:hal-mcp\b|pnpm --filter @hal\/mcp start\b)/,
+    name: 'hal mcp',
+    command: new RegExp(String.raw`^${hal} mcp\b`),
     ready: 'MCP over (stdio|HTTP)',
     defaultPorts: [3333],
   },

@@ -83,7 +83,7 @@ describe('longRunning', () => {
     );
     expect(longRunning('HAL_KEY=00 hal serve --udp 192.168.4.1')?.name).toBe('hal serve');
     expect(longRunning('hal teleop --sim')?.tty).toBe(true);
-    expect(longRunning('pnpm --filter @hal/mcp start -- --http')?.name).toBe('hal-mcp');
+    expect(longRunning('pnpm hal mcp --http')?.name).toBe('hal mcp');
     expect(longRunning('pnpm start    # the demo')?.name).toBe('the browser demo (vite)');
     expect(longRunning('hal status --ws ws://127.0.0.1:8765 --watch')?.name).toBe(
       'hal status --watch',
@@ -106,7 +106,7 @@ describe('blockPorts', () => {
     expect(
       blockPorts({
         language: 'sh',
-        text: 'hal serve --sim --ws-port 8765 --nats nats://127.0.0.1:4222\npnpm --filter @hal/mcp start',
+        text: 'hal serve --sim --ws-port 8765 --nats nats://127.0.0.1:4222\npnpm hal mcp',
       }).sort(),
     ).toEqual([3333, 4222, 8765]);
   });

@@ -1,10 +1,10 @@
-// The browser demo's Remote robot card in Chromium: hal-serve (the one command) serves PhysicalHAL
+// The browser demo's Remote robot card in Chromium: `hal serve --ws-port` serves PhysicalHAL
 // to the emulated robot with a token; the page connects with the URL and token fields, drives it
 // through a HybridHAL whose twin is the page's simulated robot, and shows their divergence.
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
-import { startHalServe, stopAllHalServes } from '../remote/hal-serve.js';
+import { startServe, stopAllServes } from '../remote/serve-command.js';
 import { openDemoInChromium } from './demo-browser.js';
 import type { DemoBrowser } from './demo-browser.js';
 
@@ -28,7 +28,7 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
 
   afterAll(async () => {
     await demo?.close();
-    stopAllHalServes();
+    stopAllServes();
     await stopAllEmulators();
   }, 30_000);
 
@@ -37,8 +37,8 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
   it('connects with URL and token, moves the emulated robot and its twin, and shows the divergence', async () => {
     const token = 'browser-demo-token-123';
     const emulator = await startEmulator({ pty: false, hostTimeoutMs: 10_000 });
-    const wsUrl = await startHalServe(
-      ['--udp', `127.0.0.1:${emulator.udpPort}`, '--device-id', 'cube-remote'],
+    const wsUrl = await startServe(
+      ['--udp', `127.0.0.1:${emulator.udpPort}`, '--device', 'cube-remote'],
       {
         HAL_SERVE_TOKEN: token,
       },

@@ -4,6 +4,7 @@
 // then the UDP robot is killed (a power cut): it goes offline, its calls fail at once with
 // NOT_CONNECTED and details { device, offline: true }, and the fleet e-stop still latches the
 // other two, the serial robot on the firmware itself.
+import { deviceFactories } from '@hal/cli';
 import { DeviceManager } from '@hal/fleet/node';
 import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
@@ -14,24 +15,28 @@ describe('physical devices in a managed fleet', () => {
   it('are driven with a simulated one, and one that dies goes offline while the e-stop latches the rest', async () => {
     const overUdp = await startEmulator({ pty: false, deviceId: 'cube-udp' });
     const overSerial = await startEmulator({ deviceId: 'cube-serial' });
-    const manager = new DeviceManager({
-      mode: 'synchronized',
-      telemetryRateHz: 4,
-      offlineAfterMs: 1500,
-      devices: [
-        { type: 'simulated', id: 'sim', clock: 'fast' },
-        {
-          type: 'physical',
-          id: 'cube-udp',
-          connection: { type: 'wifi', host: '127.0.0.1', udpPort: overUdp.udpPort },
-        },
-        {
-          type: 'physical',
-          id: 'cube-serial',
-          connection: { type: 'serial', port: overSerial.pty },
-        },
-      ],
-    });
+    const manager = new DeviceManager(
+      {
+        mode: 'synchronized',
+        telemetryRateHz: 4,
+        offlineAfterMs: 1500,
+        devices: [
+          { type: 'simulated', id: 'sim', clock: 'fast' },
+          {
+            type: 'physical',
+            id: 'cube-udp',
+            connection: { type: 'wifi', host: '127.0.0.1', udpPort: overUdp.udpPort },
+          },
+          {
+            type: 'physical',
+            id: 'cube-serial',
+            connection: { type: 'serial', port: overSerial.pty },
+          },
+        ],
+      },
+      // the builders the hal command gives it: SimulationHAL and PhysicalHAL
+      { devices: deviceFactories() },
+    );
     const offline: string[] = [];
     manager.on('offline', (e) => offline.push(e.device));
     try {

@@ -19,7 +19,7 @@ const configs = fencedBlocks(readFileSync(`${root}/docs/mcp.md`, 'utf8'), 'json'
 describe("docs/mcp.md's MCP client configurations", () => {
   it('show the checkout first, the packed tarballs next, and npx only as the published form', () => {
     const commands = configs.map((c) => Object.values(c.mcpServers)[0]?.command);
-    expect(commands).toEqual(['node', '/path/to/robot-app/node_modules/.bin/hal-mcp', 'npx']);
+    expect(commands).toEqual(['node', '/path/to/robot-app/node_modules/.bin/hal', 'npx']);
   });
 
   it('start a server from a checkout that lists the tools and drives the simulator', async () => {

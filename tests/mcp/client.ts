@@ -4,7 +4,7 @@ import type { Client } from '@modelcontextprotocol/sdk/client/index.js';
 
 export const REPO_ROOT = fileURLToPath(new URL('../..', import.meta.url));
 
-/** Runs the hal-mcp command from source, as `pnpm --filter @hal/mcp start` does. */
+/** Runs `hal mcp` from source, as `pnpm hal mcp` does. */
 export function serverCommand(args: string[] = []): {
   command: string;
   args: string[];
@@ -12,7 +12,14 @@ export function serverCommand(args: string[] = []): {
 } {
   return {
     command: process.execPath,
-    args: ['--conditions=@hal/source', '--import', 'tsx', 'packages/mcp/src/bin.ts', ...args],
+    args: [
+      '--conditions=@hal/source',
+      '--import',
+      'tsx',
+      'packages/cli/src/main.ts',
+      'mcp',
+      ...args,
+    ],
     cwd: REPO_ROOT,
   };
 }

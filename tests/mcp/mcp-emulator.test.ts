@@ -1,4 +1,4 @@
-// hal-mcp --udp against the firmware core running as the emulated robot: the whole chain an MCP
+// hal mcp --udp against the firmware core running as the emulated robot: the whole chain an MCP
 // client drives a real robot through, with the protocol 1.1 key.
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StdioClientTransport } from '@modelcontextprotocol/sdk/client/stdio.js';
@@ -10,7 +10,7 @@ afterAll(stopAllEmulators);
 
 const KEY = '00112233445566778899aabbccddeeff';
 
-describe('hal-mcp --udp against the emulated robot', () => {
+describe('hal mcp --udp against the emulated robot', () => {
   it('offers what the robot reported, moves it, reads its pose and e-stops it', async () => {
     const emulator = await startEmulator({ key: KEY, pty: false, hostTimeoutMs: 10_000 });
     const client = new Client({ name: 'hal-test', version: '1.0.0' });

@@ -66,7 +66,7 @@ function post(url: string, headers: Record<string, string>): Promise<number> {
   });
 }
 
-describe('hal-mcp over streamable HTTP on 127.0.0.1 (the SDK client)', () => {
+describe('hal mcp over streamable HTTP on 127.0.0.1 (the SDK client)', () => {
   it('lists the tools, moves, reads the pose, gets a frame, refuses bad arguments and e-stops', async () => {
     const { endpoint, hal } = await serve();
     expect(endpoint.url).toMatch(/^http:\/\/127\.0\.0\.1:\d+\/mcp$/);

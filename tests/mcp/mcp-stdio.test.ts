@@ -16,7 +16,7 @@ async function connect(args: string[] = []): Promise<Client> {
   return client;
 }
 
-describe('hal-mcp over stdio (the server process, the SDK client)', () => {
+describe('hal mcp over stdio (the server process, the SDK client)', () => {
   it('lists the tools, moves, reads the pose, gets a frame, refuses bad arguments and e-stops', async () => {
     await driveOverMcp(await connect());
   });

@@ -2,7 +2,8 @@
 import { createServer } from 'node:http';
 import type { Server, ServerResponse } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { MjpegCamera, MockRobot, PhysicalHAL } from '@hal/physical';
+import { MjpegCamera, PhysicalHAL } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import { afterEach, describe, expect, it } from 'vitest';
 
 const BOUNDARY = '123456789000000000000987654321';

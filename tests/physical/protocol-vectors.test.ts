@@ -1,5 +1,5 @@
 import { createSocket } from 'node:dgram';
-import { MockRobot } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import { afterAll, describe, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 import { PROTOCOL_CASES, runCase } from './protocol-vectors.js';

@@ -2,8 +2,8 @@
 // emulator over UDP, or the in-process mock robot), decoding every reply with @hal/physical's
 // codec and checking it against the reply schemas.
 import { readFileSync } from 'node:fs';
-import { MessageCodec, REPLY_SCHEMAS } from '@hal/physical';
-import type { WireReply } from '@hal/physical';
+import { MessageCodec, REPLY_SCHEMAS } from '@hal/physical/protocol';
+import type { WireReply } from '@hal/physical/protocol';
 import { HAL_ERROR_CODES } from '@hal/types';
 import { expect } from 'vitest';
 

@@ -8,7 +8,7 @@ import { spawn } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { encodeFrame, FrameDecoder, openSerialPort } from '@hal/physical';
+import { encodeFrame, FrameDecoder, openSerialPort } from '@hal/physical/protocol';
 import type { SerialPortLike } from '@hal/physical';
 import { seededRandom } from './fault-proxy.js';
 

@@ -1,6 +1,8 @@
 // The serial link on a real pseudo-terminal, through the `serialport` package, against the emulator.
-import { encodeFrame, FrameDecoder, openSerialPort, PhysicalHAL } from '@hal/physical';
-import type { Frame, SerialPortLike } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { encodeFrame, FrameDecoder, openSerialPort } from '@hal/physical/protocol';
+import type { SerialPortLike } from '@hal/physical';
+import type { Frame } from '@hal/physical/protocol';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 import type { Emulator } from './emulator.js';

@@ -6,7 +6,8 @@
 import { createSocket } from 'node:dgram';
 import type { Socket } from 'node:dgram';
 import { PhysicalHAL, udpTransport } from '@hal/physical';
-import type { TransportFactory, UdpTransport, WireReply } from '@hal/physical';
+import type { TransportFactory, UdpTransport } from '@hal/physical';
+import type { WireReply } from '@hal/physical/protocol';
 import type { Logger, LogLevel } from '@hal/types';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';

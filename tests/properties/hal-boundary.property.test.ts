@@ -1,5 +1,6 @@
 import { fc, it } from '@fast-check/vitest';
-import { MockRobot, PhysicalHAL } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { HalError, sanitizeEstopReason } from '@hal/types';

@@ -1,19 +1,19 @@
-// The one command: hal-serve, run as a user runs it, serving PhysicalHAL to the emulated robot
-// and the embedded simulator; RemoteHAL drives each over a real WebSocket.
+// `hal serve --ws-port`, run as a user runs it, serving PhysicalHAL to the emulated robot and
+// the embedded simulator; RemoteHAL drives each over a real WebSocket.
 import { RemoteHAL } from '@hal/remote';
 import { afterAll, afterEach, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
-import { startHalServe as serve, stopAllHalServes } from './hal-serve.js';
+import { startServe as serve, stopAllServes } from './serve-command.js';
 
 const hals: RemoteHAL[] = [];
 
 afterEach(async () => {
   await Promise.all(hals.splice(0).map((hal) => hal.cleanup()));
-  stopAllHalServes();
+  stopAllServes();
 });
 afterAll(stopAllEmulators);
 
-describe('hal-serve', () => {
+describe('hal serve on WebSocket', () => {
   it('serves PhysicalHAL to the emulated robot with one command', async () => {
     const emulator = await startEmulator({ timeScale: 20, hostTimeoutMs: 10_000, pty: false });
     const url = await serve([
@@ -21,7 +21,7 @@ describe('hal-serve', () => {
       `127.0.0.1:${emulator.udpPort}`,
       '--time-scale',
       '20',
-      '--device-id',
+      '--device',
       'cube-served',
     ]);
     const hal = new RemoteHAL({ url });
@@ -51,14 +51,14 @@ describe('hal-serve', () => {
   });
 
   it('refuses to listen beyond loopback without a token, and says why', async () => {
-    const error = await serve(['--host', '0.0.0.0']).catch((e: unknown) => e);
+    const error = await serve(['--sim', '--host', '0.0.0.0']).catch((e: unknown) => e);
     expect(error).toMatchObject({ exitCode: 1 });
     expect(String(error)).toMatch(/needs a token/);
   });
 
   it('refuses a malformed robot address with a usage error', async () => {
     const error = await serve(['--udp', 'robot:0']).catch((e: unknown) => e);
-    expect((error as { exitCode: number }).exitCode).not.toBe(0);
+    expect(error).toMatchObject({ exitCode: 2 });
     expect(String(error)).toMatch(/"--udp" must be HOST or HOST:PORT/);
   });
 });

@@ -8,17 +8,6 @@ import { importCircles, readImportGraph } from './import-graph.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 
-/**
- * The one circle allowed for now, by issue 19: the `hal` command's list of commands
- * (packages/cli/src/commands/index.ts) with the commands and helpers that import its types back.
- */
-function isKnownCliCircle(circle: readonly string[]): boolean {
-  return (
-    circle.includes('packages/cli/src/commands/index.ts') &&
-    circle.every((file) => file.startsWith('packages/cli/src/'))
-  );
-}
-
 describe('the source files of the packages', () => {
   const graph = readImportGraph(root);
 
@@ -30,9 +19,8 @@ describe('the source files of the packages', () => {
     );
   });
 
-  it('import one another without a circle, except the known one of the hal command (issue 19)', () => {
-    const circles = importCircles(graph).filter((circle) => !isKnownCliCircle(circle));
-    expect(circles.map((circle) => circle.join(' <-> '))).toStrictEqual([]);
+  it('import one another without a circle', () => {
+    expect(importCircles(graph).map((circle) => circle.join(' <-> '))).toStrictEqual([]);
   });
 });
 

@@ -6,7 +6,7 @@ import { make } from './dom.js';
 import type { ResultsLog } from './results-log.js';
 
 /*
- * The "Remote robot" card: connects to a HAL served over WebSocket (e.g. `hal-serve --udp ...` in
+ * The "Remote robot" card: connects to a HAL served over WebSocket (e.g. `hal serve --udp ... --ws-port 8765` in
  * front of the robot or its emulator), and drives it through a HybridHAL whose twin is this page's
  * simulated robot, so the twin moves beside the remote robot and their divergence is shown.
  */

@@ -2,7 +2,7 @@
 // --serial, --ws, or NATS (--device and/or --nats). Parsing only; target-hal.ts builds the HAL.
 import { Option } from 'commander';
 import type { Command } from 'commander';
-import { hexKeyArg, hostPortArg, integerArg, positiveArg } from '@hal/remote/cli';
+import { hexKeyArg, hostPortArg, integerArg, positiveArg } from './values.js';
 import type { NatsConnectOptions } from '@hal/nats';
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';

@@ -1,4 +1,5 @@
-import { MockRobot, PhysicalHAL } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import type { PhysicalHALOptions } from '@hal/physical';
 import { SimulationHAL } from '@hal/simulation';
 import type { SimulationHALOptions } from '@hal/simulation';

@@ -29,13 +29,13 @@ export type { StartPose, WorldMap, WorldMapInput } from './map.js';
 export { BUILTIN_MAPS } from './maps/index.js';
 export type { BuiltinMapName } from './maps/index.js';
 
-export { castRay, discContact, parseColor, rayEnter, solidsOf } from './shapes.js';
+export { castRay, discContact, solidsOf } from './shapes.js';
 export type { BoxSolid, CylinderSolid, Point, Rgb, Solid, SolidRole } from './shapes.js';
 
-export { rangeAlong, readDistanceSensors, readImu, scanAround } from './sensors.js';
+export { readDistanceSensors, readImu, scanAround } from './sensors.js';
 export type { RangeSensorOptions } from './sensors.js';
 
-export { cameraPose, renderRobotView } from './camera.js';
+export { renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';
 export { defaultJpegEncoder, encodeJpeg, jpegDataUrl, toBase64 } from './jpeg.js';
 export { canvasJpegEncoder, jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';

@@ -1,4 +1,5 @@
-import { MockRobot, PhysicalHAL } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import { SimulationHAL } from '@hal/simulation';
 import { HalBoundary, V1_ROBOT } from '@hal/types';
 import type { CallName, HardwareAbstractionLayer, RobotConfig } from '@hal/types';

@@ -1,4 +1,5 @@
-import { MockRobot, PhysicalHAL } from '@hal/physical';
+import { PhysicalHAL } from '@hal/physical';
+import { MockRobot } from '@hal/physical/testing';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { describe, expect, it } from 'vitest';

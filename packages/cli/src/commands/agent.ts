@@ -7,10 +7,10 @@ import { runAgent } from '@hal/agent';
 import type { AgentOutcome, ChatProvider, RunAgentOptions } from '@hal/agent';
 import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
-import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
-import type { LeashCliOptions } from '@hal/mcp/leash-options';
+import { addLeashOptions, leashFromOptions } from '../leash-options.js';
+import type { LeashCliOptions } from '../leash-options.js';
 import { AGENT_EVENT, McapRecorder, recordHal, TOPICS } from '@hal/recorder';
-import { integerArg, positiveArg } from '@hal/remote/cli';
+import { integerArg, positiveArg } from '../values.js';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
@@ -23,7 +23,7 @@ import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
   maxTime?: number;

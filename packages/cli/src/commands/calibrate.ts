@@ -13,7 +13,7 @@ import {
   writeCalibrationFile,
 } from '@hal/physical';
 import type { CalibrationSource } from '@hal/physical';
-import { positiveArg } from '@hal/remote/cli';
+import { positiveArg } from '../values.js';
 import { HalError } from '@hal/types';
 import { canPrompt, prompter } from '../calibrate/prompt.js';
 import { runCalibration, TURN_DEG } from '../calibrate/run-calibration.js';
@@ -24,7 +24,7 @@ import type { CliIO } from '../io.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface CalibrateOptions extends TargetCliOptions {
   distanceCm: number;

@@ -6,7 +6,7 @@ import { formatRobots } from '../discover/format.js';
 import { intInRange, ipv4Arg } from '../discover/options.js';
 import { emit, progress } from '../io.js';
 import { cliLogger } from '../logger.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface DiscoverCliOptions {
   timeout: number;

@@ -12,7 +12,7 @@ import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget, targetArgs } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 function outcomeText(action: DriveAction, { result, pose, stoppedByUser }: DriveOutcome): string {
   const time =

@@ -11,7 +11,7 @@ import type { ReadyLine } from '../emulate/emulator-process.js';
 import { locateEmulator } from '../emulate/locate-emulator.js';
 import { emit, progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 /** Announces the emulator unless its device id is already announced on the network. */
 async function announce(ready: ReadyLine, mdns: MdnsOptions): Promise<Announcer> {

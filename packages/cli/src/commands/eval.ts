@@ -11,14 +11,14 @@ import {
   TASK_GROUPS,
 } from '@hal/eval';
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
-import { addLeashOptions, leashFromOptions } from '@hal/mcp/leash-options';
-import type { LeashCliOptions } from '@hal/mcp/leash-options';
-import { integerArg } from '@hal/remote/cli';
+import { addLeashOptions, leashFromOptions } from '../leash-options.js';
+import type { LeashCliOptions } from '../leash-options.js';
+import { integerArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface EvalCliOptions extends LeashCliOptions {
   latency?: number;

@@ -13,7 +13,7 @@ import { resolveRunMode, RUN_MODES } from '../fleet/run-mode.js';
 import type { RunMode } from '../fleet/run-mode.js';
 import { emit } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
-import type { CommandContext, RegisterCommand } from './index.js';
+import type { CommandContext, RegisterCommand } from './context.js';
 
 function positiveNumber(value: string): number {
   const n = Number(value);

@@ -1,7 +1,6 @@
 // Every subcommand of `hal`, one module each. A module adds its command to the program; the
-// options shared by all (--json) are read through `global()` when it runs.
-import type { Command } from 'commander';
-import type { CliIO, GlobalOptions } from '../io.js';
+// options shared by all (--json) are read through `global()` when it runs (context.ts).
+import type { RegisterCommand } from './context.js';
 import { registerDrive } from './drive.js';
 import { registerServe } from './serve.js';
 import { registerStatus } from './status.js';
@@ -17,15 +16,7 @@ import { registerRecord } from './record.js';
 import { registerInspect } from './inspect.js';
 import { registerReplay } from './replay.js';
 
-/** What a command module gets when it registers. */
-export interface CommandContext {
-  io: CliIO;
-  /** The root program's shared options, as parsed (read it inside the action, not at registration). */
-  global(): GlobalOptions;
-}
-
-/** A subcommand: adds itself (and its options and action) to `program`. */
-export type RegisterCommand = (program: Command, ctx: CommandContext) => void;
+import { registerMcp } from './mcp.js';
 
 /** The subcommands, in the order `hal --help` lists them. */
 export const COMMANDS: readonly RegisterCommand[] = [
@@ -35,6 +26,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerCalibrate,
   registerAgent,
   registerEval,
+  registerMcp,
   registerServe,
   registerEmulate,
   registerDiscover,

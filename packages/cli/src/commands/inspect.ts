@@ -5,7 +5,7 @@ import { readRecordingFile, summarizeRecording } from '@hal/recorder';
 import type { RecordingSummary } from '@hal/recorder';
 import { CliError } from '../cli-error.js';
 import { emit } from '../io.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 function summaryText(file: string, s: RecordingSummary): string {
   const robot = s.robot === undefined ? '' : ` of ${s.robot['device_id']} (${s.robot['mode']})`;

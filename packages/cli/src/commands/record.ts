@@ -12,7 +12,7 @@ import { parseStep } from '../record/steps.js';
 import { addTargetOptions, describeTarget, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface RecordOptions extends TargetCliOptions {
   output: string;

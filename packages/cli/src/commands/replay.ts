@@ -10,7 +10,7 @@ import type { BuiltinMapName } from '@hal/simulation';
 import type { RobotConfig } from '@hal/types';
 import { emit } from '../io.js';
 import { readForCommand } from './inspect.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 function parsed<T>(text: string | undefined): T | undefined {
   try {

@@ -9,8 +9,8 @@ import { McapRecorder, recordHal } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { HalGateway } from '@hal/nats';
-import { checkBinding, integerArg } from '@hal/remote/cli';
-import { serveHal } from '@hal/remote/server';
+import { integerArg } from '../values.js';
+import { checkBinding, serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
@@ -24,7 +24,7 @@ import type { Target, TargetCliOptions } from '../target.js';
 import { cliLogger } from '../logger.js';
 import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
-import type { CommandContext, RegisterCommand } from './index.js';
+import type { CommandContext, RegisterCommand } from './context.js';
 
 const SERVED_KINDS = ['sim', 'udp', 'serial'] as const;
 

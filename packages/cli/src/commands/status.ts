@@ -1,7 +1,7 @@
 // `hal status`: one robot's identity, capabilities, pose, safety state and health; `--watch`
 // streams updates at a rate until Ctrl-C.
 import { Command, Option } from 'commander';
-import { positiveArg } from '@hal/remote/cli';
+import { positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { emit } from '../io.js';
 import { readStatus, statusLine, statusText } from '../status/snapshot.js';
@@ -9,7 +9,7 @@ import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import { sleep } from '../wait.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface StatusOptions extends TargetCliOptions {
   watch: boolean;

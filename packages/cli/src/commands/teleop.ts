@@ -1,7 +1,7 @@
 // `hal teleop`: drive a robot from the keyboard, with a live pose line. Needs a terminal: the
 // terminal is put in raw mode and restored on every way out.
 import { Command, Option } from 'commander';
-import { integerArg } from '@hal/remote/cli';
+import { integerArg } from '../values.js';
 import { HalError } from '@hal/types';
 import { emit, progress } from '../io.js';
 import { poseText } from '../pose-text.js';
@@ -12,7 +12,7 @@ import { TELEOP_HELP } from '../teleop/keys.js';
 import { runTeleop } from '../teleop/session.js';
 import { withStatusLine } from '../teleop/status-line.js';
 import { requireTerminal, withRawMode } from '../teleop/terminal.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 interface TeleopCliOptions extends TargetCliOptions {
   power: number;

@@ -4,7 +4,7 @@ import { SPEC_CAPABILITIES } from '@hal/compliance';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import { runTestHal } from '../test-hal/run-test-hal.js';
 import { capabilityArg, judgeArg, samplesArg } from '../test-hal/args.js';
-import type { RegisterCommand } from './index.js';
+import type { RegisterCommand } from './context.js';
 
 export const registerTest: RegisterCommand = (program, ctx) => {
   const command = program

@@ -10,6 +10,7 @@ import { progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { natsConnectOptions } from '../nats-options.js';
 import type { NatsCliOptions } from '../nats-options.js';
+import { deviceFactories } from './device-factories.js';
 
 /** Options every `hal fleet` subcommand takes. */
 export interface FleetCliOptions extends NatsCliOptions {
@@ -101,10 +102,10 @@ async function openConfiguredSession(
     ? await openConnection(natsConnectOptions(options, io.env, 'hal-fleet'))
     : undefined;
   try {
-    const manager = new DeviceManager(
-      config,
-      connection === undefined ? {} : { natsConnection: { connection } },
-    );
+    const manager = new DeviceManager(config, {
+      devices: deviceFactories(io.env),
+      ...(connection === undefined ? {} : { natsConnection: { connection } }),
+    });
     progress(io, global, `connecting to ${config.devices.length} device(s)...`);
     await manager.start();
     return {

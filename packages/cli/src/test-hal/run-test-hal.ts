@@ -10,7 +10,7 @@ import type { ComplianceReport, ProgressEvent, SpecCapability } from '@hal/compl
 import { openConnection } from '@hal/nats';
 import { HalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
-import type { CommandContext } from '../commands/index.js';
+import type { CommandContext } from '../commands/context.js';
 import { emit, progress } from '../io.js';
 import { natsConnectOptions } from '../nats-options.js';
 import type { NatsCliOptions } from '../nats-options.js';

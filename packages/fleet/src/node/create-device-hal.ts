@@ -1,50 +1,61 @@
 import { NatsHAL } from '@hal/nats';
 import type { NatsConnectionSource } from '@hal/nats';
-import { calibrationSource, PhysicalHAL } from '@hal/physical';
-import type { World } from '@hal/simulation';
-import { SimulationHAL } from '@hal/simulation';
-import { HalError, robotConfig } from '@hal/types';
+import { HalError } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger } from '@hal/types';
-import type { DeviceConfig } from './device-config.js';
+import type { DeviceConfig, PhysicalDeviceConfig, SimulatedDeviceConfig } from './device-config.js';
+
+/**
+ * How the HALs of simulated and physical devices are built. The fleet package builds only NATS
+ * devices itself: a simulator or a robot's PhysicalHAL (with its serial port's native binding)
+ * comes from the program that uses it, so a user of NATS devices installs neither. The `hal`
+ * command gives both (`deviceFactories()` of @hal/cli).
+ */
+export interface DeviceFactories {
+  /** A SimulationHAL (or any HAL) for a simulated device; devices naming one `world` share it. */
+  simulated?: (config: SimulatedDeviceConfig) => HardwareAbstractionLayer;
+  /** A PhysicalHAL (or any HAL) for a physical device. */
+  physical?: (config: PhysicalDeviceConfig) => HardwareAbstractionLayer;
+  /** Called when the manager has stopped and released every device (stop shared worlds' clocks). */
+  released?: () => void;
+}
 
 /** What the router needs besides a device's own config. */
 export interface DeviceHALContext {
-  /** The world a simulated device named `name` lives in (one per name, shared). */
-  world(name: string): World;
+  /** The builders of simulated and physical devices. */
+  devices?: DeviceFactories;
   /** How NatsHALs reach NATS (one shared connection, usually). */
   nats?: NatsConnectionSource;
   natsLogger?: Logger;
 }
 
+/** INVALID_PARAMETER: a device of a type nobody gave a builder for. */
+function noFactory(config: DeviceConfig): HalError {
+  return new HalError(
+    'INVALID_PARAMETER',
+    `device "${config.id}" is ${config.type}: no builder for ${config.type} devices was given (option "devices.${config.type}")`,
+    { details: { device: config.id, parameter: `devices.${config.type}` } },
+  );
+}
+
 /**
- * Routes a device to its implementation: `simulated` to a SimulationHAL in its named world,
- * `physical` to a PhysicalHAL over UDP or serial, `nats` to a NatsHAL. The HAL is not initialised.
+ * Routes a device to its HAL: `simulated` and `physical` to the builders of `context.devices`,
+ * `nats` to a NatsHAL. The HAL is not initialised. INVALID_PARAMETER when a builder is missing.
  */
 export function createDeviceHAL(
   config: DeviceConfig,
   context: DeviceHALContext,
 ): HardwareAbstractionLayer {
   switch (config.type) {
-    case 'simulated':
-      return new SimulationHAL({
-        world: context.world(config.world),
-        deviceId: config.id,
-        clock: config.clock,
-        realtimeSpeed: config.realtimeSpeed,
-        ...(config.start === undefined ? {} : { start: config.start }),
-        ...(config.robot === undefined ? {} : { robot: robotConfig(definedFields(config.robot)) }),
-      });
-    case 'physical':
-      return new PhysicalHAL(
-        {
-          mode: 'physical',
-          deviceId: config.id,
-          connection: config.connection,
-          ...(config.robot === undefined ? {} : { robot: config.robot }),
-        },
-        // the robot's calibration file (hal calibrate), sent after every hello
-        { calibration: calibrationSource(undefined, process.env) },
-      );
+    case 'simulated': {
+      const build = context.devices?.simulated;
+      if (build === undefined) throw noFactory(config);
+      return build(config);
+    }
+    case 'physical': {
+      const build = context.devices?.physical;
+      if (build === undefined) throw noFactory(config);
+      return build(config);
+    }
     case 'nats': {
       if (context.nats === undefined) {
         throw new HalError(

@@ -1,10 +1,41 @@
 import { NatsHAL } from '@hal/nats';
-import { PhysicalHAL } from '@hal/physical';
-import { SimulationHAL } from '@hal/simulation';
+import { SimulationHAL, World } from '@hal/simulation';
 import { describe, expect, it } from 'vitest';
 import { createDeviceHAL } from './create-device-hal.js';
+import type { DeviceFactories } from './create-device-hal.js';
 import { parseFleetConfig } from './device-config.js';
+import type { PhysicalDeviceConfig } from './device-config.js';
 import { DeviceManager } from './device-manager.js';
+
+/** Builders as a program gives them: simulators in shared worlds; physical devices recorded. */
+function factories() {
+  const worlds = new Map<string, World>();
+  const world = (name = 'default') => {
+    if (!worlds.has(name)) worlds.set(name, new World());
+    return worlds.get(name)!;
+  };
+  const physical: PhysicalDeviceConfig[] = [];
+  let released = 0;
+  const devices: DeviceFactories = {
+    simulated: (c) =>
+      new SimulationHAL({
+        world: world(c.world),
+        deviceId: c.id,
+        clock: c.clock,
+        realtimeSpeed: c.realtimeSpeed,
+        ...(c.start === undefined ? {} : { start: c.start }),
+      }),
+    physical: (c) => {
+      physical.push(c);
+      return new SimulationHAL({ deviceId: c.id });
+    },
+    released: () => {
+      released += 1;
+      for (const w of worlds.values()) w.stopRealtime();
+    },
+  };
+  return { devices, world, physical, released: () => released };
+}
 
 const sim = (id: string, y: number) => ({
   type: 'simulated' as const,
@@ -39,43 +70,54 @@ describe('fleet config', () => {
 });
 
 describe('createDeviceHAL routing', () => {
-  it('routes simulated, physical and NATS devices to their HALs', () => {
-    const worlds = new DeviceManager();
-    const ctx = {
-      world: (name: string) => worlds.world(name),
-      nats: { servers: 'nats://127.0.0.1:1' },
-    };
+  it('routes simulated and physical devices to the builders given, NATS devices to NatsHAL', () => {
+    const built = factories();
+    const ctx = { devices: built.devices, nats: { servers: 'nats://127.0.0.1:1' } };
     const s = createDeviceHAL(parseFleetConfig({ devices: [sim('s', 0)] }).devices[0]!, ctx);
     expect(s).toBeInstanceOf(SimulationHAL);
-    expect((s as SimulationHAL).world).toBe(worlds.world('default'));
+    expect((s as SimulationHAL).world).toBe(built.world('default'));
+    const connection = { type: 'wifi' as const, host: '127.0.0.1', udpPort: 4210 };
     const p = createDeviceHAL(
-      parseFleetConfig({
-        devices: [
-          {
-            type: 'physical',
-            id: 'p',
-            connection: { type: 'wifi', host: '127.0.0.1', udpPort: 4210 },
-          },
-        ],
-      }).devices[0]!,
+      parseFleetConfig({ devices: [{ type: 'physical', id: 'p', connection }] }).devices[0]!,
       ctx,
     );
-    expect(p).toBeInstanceOf(PhysicalHAL);
+    expect(p.getDeviceInfo().id).toBe('p');
+    expect(built.physical).toMatchObject([{ id: 'p', connection }]);
     const n = createDeviceHAL({ type: 'nats', id: 'n' }, ctx);
     expect(n).toBeInstanceOf(NatsHAL);
     expect(n.getDeviceInfo().id).toBe('n');
-    expect(() => createDeviceHAL({ type: 'nats', id: 'n' }, { world: ctx.world })).toThrow(
+    expect(() => createDeviceHAL({ type: 'nats', id: 'n' }, { devices: built.devices })).toThrow(
       /no NATS servers/,
+    );
+  });
+
+  it('refuses a simulated or physical device nobody gave a builder for, naming the option', () => {
+    const config = parseFleetConfig({
+      devices: [
+        sim('s', 0),
+        { type: 'physical', id: 'p', connection: { type: 'serial', port: '/dev/x' } },
+      ],
+    });
+    expect(() => createDeviceHAL(config.devices[0]!, {})).toThrow(
+      /device "s" is simulated: no builder for simulated devices was given \(option "devices.simulated"\)/,
+    );
+    const onlySimulated: DeviceFactories = { simulated: factories().devices.simulated! };
+    expect(() => createDeviceHAL(config.devices[1]!, { devices: onlySimulated })).toThrow(
+      /device "p" is physical: no builder/,
+    );
+    expect(() => new DeviceManager({ devices: [sim('a', 0)] })).toThrow(
+      expect.objectContaining({ code: 'INVALID_PARAMETER' }),
     );
   });
 });
 
 describe('DeviceManager with simulated devices', () => {
   it('connects every device, reports health and telemetry, and drives them in the fleet modes', async () => {
-    const manager = new DeviceManager({
-      telemetryRateHz: 10,
-      devices: [sim('a', 0), sim('b', 0.3), sim('c', 0.6)],
-    });
+    const built = factories();
+    const manager = new DeviceManager(
+      { telemetryRateHz: 10, devices: [sim('a', 0), sim('b', 0.3), sim('c', 0.6)] },
+      { devices: built.devices },
+    );
     const online: string[] = [];
     manager.on('online', (e) => online.push(e.device));
     try {
@@ -90,7 +132,7 @@ describe('DeviceManager with simulated devices', () => {
       // one world for all three
       expect(
         (manager.createDeviceHAL('a') as unknown as { inner: SimulationHAL }).inner.world,
-      ).toBe(manager.world());
+      ).toBe(built.world());
       const report = await manager.fleet.synchronized({ kind: 'moveForward', distanceCm: 2 });
       expect(report.succeeded).toEqual(['a', 'b', 'c']);
       const telemetry = await new Promise<number>((resolve) => {
@@ -103,13 +145,15 @@ describe('DeviceManager with simulated devices', () => {
       });
       expect(telemetry).toBeCloseTo(0.02, 3);
       // the configured speed: the world runs 20x faster than the wall clock
-      expect(manager.world().realtimeSpeed).toBe(20);
+      expect(built.world().realtimeSpeed).toBe(20);
       const estop = await manager.emergencyStop('test');
       expect(estop.success).toBe(true);
       expect(manager.health().every((h) => h.emergencyStopped)).toBe(true);
     } finally {
       await manager.stop();
     }
+    // the builders are told once every device is released
+    expect(built.released()).toBe(1);
   });
 
   it('logs a listener that throws and still brings every device online for the others', async () => {
@@ -143,7 +187,7 @@ describe('DeviceManager with simulated devices', () => {
   });
 
   it('refuses to register a bad or duplicate device and answers an unknown id clearly', () => {
-    const manager = new DeviceManager({ devices: [sim('a', 0)] });
+    const manager = new DeviceManager({ devices: [sim('a', 0)] }, { devices: factories().devices });
     expect(() => manager.register(sim('a', 1))).toThrow(/already registered/);
     expect(() => manager.register({ type: 'simulated' })).toThrow(/id/);
     expect(() => manager.register({ type: 'nats', id: 'n' })).toThrow(/no NATS servers/);
@@ -152,7 +196,7 @@ describe('DeviceManager with simulated devices', () => {
   });
 
   it('fails calls to a device that is not online yet with NOT_CONNECTED, offline: true', async () => {
-    const manager = new DeviceManager({ devices: [sim('a', 0)] });
+    const manager = new DeviceManager({ devices: [sim('a', 0)] }, { devices: factories().devices });
     const result = await manager.createDeviceHAL('a').locomotion.moveForward(1);
     expect(result).toMatchObject({
       code: 'NOT_CONNECTED',

@@ -1,11 +1,11 @@
 import { openConnection } from '@hal/nats';
 import type { NatsConnectionSource } from '@hal/nats';
-import { World } from '@hal/simulation';
 import { HalError, forwardCalls, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import { Fleet } from '../fleet.js';
 import type { FleetOptions } from '../fleet.js';
 import { createDeviceHAL, definedFields } from './create-device-hal.js';
+import type { DeviceFactories } from './create-device-hal.js';
 import { parseDeviceConfig, parseFleetConfig } from './device-config.js';
 import type { DeviceConfig, FleetConfig, FleetConfigInput } from './device-config.js';
 import type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
@@ -13,6 +13,8 @@ import { OfflineGuardHAL } from './offline-guard.js';
 import { boundedWait } from './bounded-wait.js';
 
 export interface DeviceManagerOptions {
+  /** Builders of the simulated and physical devices (NATS devices need none). */
+  devices?: DeviceFactories;
   /** An open NATS connection for the "nats" devices (not closed by the manager). */
   natsConnection?: NatsConnectionSource;
   logger?: Logger;
@@ -38,8 +40,8 @@ interface Managed {
 type Listener<E extends keyof DeviceManagerEvents> = (event: DeviceManagerEvents[E]) => void;
 
 /**
- * The fleet's devices, from config: each routed to its HAL (SimulationHAL, PhysicalHAL or
- * NatsHAL), read at `telemetryRateHz` (pose, safety), seen online or offline (events), and
+ * The fleet's devices, from config: each routed to its HAL (NatsHAL, or what the `devices`
+ * builders make of a simulated or physical device), read at `telemetryRateHz` (pose, safety), seen online or offline (events), and
  * driven in the fleet modes through {@link fleet}. A call to an offline device fails at once
  * with NOT_CONNECTED, details `{ device, offline: true }`; the fleet e-stop reaches every device.
  */
@@ -48,7 +50,6 @@ export class DeviceManager {
   /** The fleet modes over the managed devices (their offline-guarded HALs). */
   readonly fleet: Fleet;
   readonly #devices = new Map<string, Managed>();
-  readonly #worlds = new Map<string, World>();
   readonly #events: TypedEmitter<DeviceManagerEvents>;
   readonly #log: ScopedLogger;
   readonly #options: DeviceManagerOptions;
@@ -80,16 +81,6 @@ export class DeviceManager {
   /** The managed device ids, in registration order. */
   get devices(): string[] {
     return [...this.#devices.keys()];
-  }
-
-  /** The shared world `name` of the simulated devices (created on first use). */
-  world(name = 'default'): World {
-    let world = this.#worlds.get(name);
-    if (world === undefined) {
-      world = new World();
-      this.#worlds.set(name, world);
-    }
-    return world;
   }
 
   /** Registers a device (checked: INVALID_PARAMETER naming the field); connected on the next round. */
@@ -201,7 +192,7 @@ export class DeviceManager {
         }),
       ),
     );
-    for (const world of this.#worlds.values()) world.stopRealtime();
+    this.#options.devices?.released?.();
     await this.#nats?.close?.();
     if (this.#nats?.close !== undefined) this.#nats = undefined;
   }
@@ -236,7 +227,7 @@ export class DeviceManager {
       m.config.type === 'nats' && nats === undefined
         ? placeholderHAL()
         : createDeviceHAL(m.config, {
-            world: (name) => this.world(name),
+            ...(this.#options.devices === undefined ? {} : { devices: this.#options.devices }),
             ...(nats === undefined ? {} : { nats }),
             ...(this.#options.natsLogger === undefined
               ? {}

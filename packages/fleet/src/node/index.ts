@@ -1,8 +1,8 @@
-// Node only: the device manager routes devices to SimulationHAL, PhysicalHAL and NatsHAL.
+// Node only: the device manager routes devices to NatsHAL and to the builders it is given.
 export { DeviceManager } from './device-manager.js';
 export type { DeviceManagerOptions } from './device-manager.js';
 export { createDeviceHAL } from './create-device-hal.js';
-export type { DeviceHALContext } from './create-device-hal.js';
+export type { DeviceFactories, DeviceHALContext } from './create-device-hal.js';
 export {
   DeviceConfigSchema,
   FleetConfigSchema,

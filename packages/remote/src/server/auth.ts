@@ -12,7 +12,7 @@ export function checkBinding(host: string, token: string | undefined): void {
   if (!isLoopback(host) && (token === undefined || token.length === 0)) {
     throw new HalError(
       'INVALID_PARAMETER',
-      `serving on "${host}" (not loopback) needs a token: pass "token" (hal-serve --token), or bind to 127.0.0.1`,
+      `serving on "${host}" (not loopback) needs a token: pass "token" (hal serve --token), or bind to 127.0.0.1`,
       { details: { parameter: 'token', host } },
     );
   }

@@ -1,4 +1,4 @@
 export { serveHal } from './serve-hal.js';
 export { SERVE_DEFAULTS } from './options.js';
 export type { HalServer, ServeHalOptions } from './options.js';
-export { isLoopback } from './auth.js';
+export { checkBinding, isLoopback } from './auth.js';

@@ -1,11 +1,20 @@
-import { CommanderError } from 'commander';
+import { Command, CommanderError } from 'commander';
 import { describe, expect, it } from 'vitest';
-import { parseCli } from './cli.js';
+import { addMcpOptions, mcpOptions } from './options.js';
+import type { McpCliOptions } from './options.js';
 import { createRobot } from './robot.js';
+
+/** Parses `argv` as `hal mcp` does; usage errors are thrown as CommanderErrors. */
+function parseCli(argv: string[], env: Record<string, string | undefined>) {
+  const command = addMcpOptions(new Command('mcp'))
+    .exitOverride()
+    .configureOutput({ writeErr: () => undefined, writeOut: () => undefined });
+  return mcpOptions(command.parse(argv, { from: 'user' }).opts<McpCliOptions>(), env);
+}
 
 const quiet = { HAL_KEY: undefined, HAL_MCP_TOKEN: undefined };
 
-describe('parseCli', () => {
+describe('hal mcp options', () => {
   it('defaults to the simulator over stdio, HTTP on 127.0.0.1:3333 when asked', () => {
     expect(parseCli([], quiet)).toEqual({ http: false, host: '127.0.0.1', port: 3333, leash: {} });
     expect(parseCli(['--http', '--port', '0'], quiet)).toMatchObject({ http: true, port: 0 });
@@ -25,18 +34,8 @@ describe('parseCli', () => {
     });
   });
 
-  it('accepts the "--" that pnpm passes on before the options (pnpm start -- --map obstacles)', () => {
-    expect(parseCli(['--', '--map', 'obstacles'], quiet)).toMatchObject({ map: 'obstacles' });
-    expect(parseCli(['--', '--http'], quiet)).toMatchObject({ http: true });
-    expect(parseCli(['--', '--udp', '10.0.0.5', '--key', 'abcd'], quiet)).toMatchObject({
-      udp: '10.0.0.5',
-      key: 'abcd',
-    });
-  });
-
   it('still refuses arguments that are not options', () => {
     expect(() => parseCli(['obstacles'], quiet)).toThrow(CommanderError);
-    expect(() => parseCli(['--', 'obstacles'], quiet)).toThrow(CommanderError);
   });
 
   it('turns leash options into a leash', () => {
@@ -64,14 +63,14 @@ describe('parseCli', () => {
 
 describe('createRobot', () => {
   it('builds a simulator with its map, or a PhysicalHAL for --udp and --serial', () => {
-    const sim = createRobot({ map: 'obstacles' });
+    const sim = createRobot({ map: 'obstacles' }, {});
     expect(sim.hal.mode).toBe('simulation');
     expect(sim.world.map?.()).toMatchObject({ name: 'obstacles' });
-    const udp = createRobot({ udp: '127.0.0.1:4999' });
+    const udp = createRobot({ udp: '127.0.0.1:4999' }, {});
     expect(udp.hal.mode).toBe('physical');
     expect(udp.world.map).toBeUndefined();
-    expect(createRobot({ serial: '/dev/null' }).hal.mode).toBe('physical');
-    expect(() => createRobot({ udp: 'a:b:c' })).toThrow(/host or host:port/);
-    expect(() => createRobot({ udp: 'x', serial: 'y' })).toThrow(/not both/);
+    expect(createRobot({ serial: '/dev/null' }, {}).hal.mode).toBe('physical');
+    expect(() => createRobot({ udp: 'a:b:c' }, {})).toThrow(/host or host:port/);
+    expect(() => createRobot({ udp: 'x', serial: 'y' }, {})).toThrow(/not both/);
   });
 });

@@ -1,5 +1,5 @@
-// The leash on the command line: the options hal-mcp takes, shared with every command that
-// hands the robot to a model (`hal agent`). Parsing only; @hal/tools enforces the leash.
+// The leash on the command line: the options of every command that hands the robot to a model
+// (`hal mcp`, `hal agent`). Parsing only; @hal/tools enforces the leash.
 import type { Leash } from '@hal/tools';
 import { InvalidArgumentError } from 'commander';
 import type { Command } from 'commander';

@@ -1,23 +1,23 @@
-// Starts the hal-serve command as a user runs it, and makes sure it dies with the test.
+// Starts `hal serve --ws-port 0` as a user runs it, and makes sure it dies with the test.
 import { spawn } from 'node:child_process';
 import type { ChildProcess } from 'node:child_process';
 import { createInterface } from 'node:readline';
 import { fileURLToPath } from 'node:url';
 
-const CLI = fileURLToPath(new URL('../../packages/remote/src/cli/main.ts', import.meta.url));
+const CLI = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
 const running = new Set<ChildProcess>();
 process.on('exit', () => {
   for (const child of running) child.kill('SIGKILL');
 });
 
 /**
- * Starts hal-serve on a free port; resolves with its URL once it prints `listening`, or rejects
- * with its stderr (and `exitCode`) when it exits first.
+ * Starts `hal serve` on WebSocket on a free port; resolves with its URL once it prints
+ * `listening`, or rejects with its stderr (and `exitCode`) when it exits first.
  */
-export function startHalServe(args: string[], env: Record<string, string> = {}): Promise<string> {
+export function startServe(args: string[], env: Record<string, string> = {}): Promise<string> {
   const child = spawn(
     process.execPath,
-    ['--conditions=@hal/source', '--import', 'tsx', CLI, '--port', '0', ...args],
+    ['--conditions=@hal/source', '--import', 'tsx', CLI, 'serve', '--ws-port', '0', ...args],
     { stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, ...env } },
   );
   running.add(child);
@@ -25,9 +25,9 @@ export function startHalServe(args: string[], env: Record<string, string> = {}):
   let stderr = '';
   child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
   return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`hal-serve did not start: ${stderr}`)), 30_000);
+    const timer = setTimeout(() => reject(new Error(`hal serve did not start: ${stderr}`)), 30_000);
     createInterface({ input: child.stdout }).on('line', (line) => {
-      const match = /^listening (ws:\/\/\S+)/.exec(line);
+      const match = /^\s*listening (ws:\/\/\S+)/.exec(line);
       if (match !== null) {
         clearTimeout(timer);
         resolve(match[1]!);
@@ -40,7 +40,7 @@ export function startHalServe(args: string[], env: Record<string, string> = {}):
   });
 }
 
-/** Stops every hal-serve still running (SIGTERM: it stops the robot and exits). */
-export function stopAllHalServes(): void {
+/** Stops every `hal serve` still running (SIGTERM: it stops the robot and exits). */
+export function stopAllServes(): void {
   for (const child of running) child.kill('SIGTERM');
 }

@@ -1,8 +1,9 @@
+// The robot `hal mcp` serves: the embedded simulator, or a PhysicalHAL over UDP or serial.
 import { calibrationSource, PhysicalHAL } from '@hal/physical';
 import { SimulationHAL, World } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
 import type { HALConfig, HardwareAbstractionLayer } from '@hal/types';
-import type { RobotWorld } from './resources.js';
+import type { RobotWorld } from '@hal/mcp';
 
 /** Which robot the server drives: the embedded simulator (default), or one over UDP or serial. */
 export interface RobotTarget {
@@ -17,7 +18,10 @@ export interface RobotTarget {
 }
 
 /** A HAL for the target, not yet initialised, and what is known of its world. */
-export function createRobot(target: RobotTarget): {
+export function createRobot(
+  target: RobotTarget,
+  env: Readonly<Record<string, string | undefined>>,
+): {
   hal: HardwareAbstractionLayer;
   world: RobotWorld;
 } {
@@ -41,7 +45,7 @@ export function createRobot(target: RobotTarget): {
       connection = { type: 'serial', port: target.serial as string, ...key };
     }
     // the robot's calibration file (hal calibrate), sent after every hello
-    const calibration = calibrationSource(undefined, process.env);
+    const calibration = calibrationSource(undefined, env);
     const hal = new PhysicalHAL(
       { mode: 'physical', deviceId: 'robot', connection },
       { calibration },

@@ -1,4 +1,4 @@
-// Parsers for command-line values shared by hal-serve and the `hal` command (@hal/remote/cli):
+// Parsers for the `hal` command's option values:
 // each checks one kind of value and throws commander's InvalidArgumentError with a message that
 // names the option, so both programs refuse bad input the same way.
 import { InvalidArgumentError } from 'commander';

@@ -1,0 +1,85 @@
+// `hal mcp`: the MCP server of @hal/mcp for one robot (the embedded simulator unless --udp or
+// --serial names one), over stdio or streamable HTTP, until Ctrl-C (or, on stdio, until stdin
+// ends). Then the robot is cleaned up, which stops its motors. Its messages go to stderr: on
+// stdio, stdout carries the protocol.
+import { Writable } from 'node:stream';
+import type { Readable } from 'node:stream';
+import { Command } from 'commander';
+import { StdioServerTransport } from '@modelcontextprotocol/sdk/server/stdio.js';
+import { createRobotMcpServer, serveHttp } from '@hal/mcp';
+import { createToolExecutor, halTools } from '@hal/tools';
+import { CliError } from '../cli-error.js';
+import type { CliIO } from '../io.js';
+import { addMcpOptions, mcpOptions } from '../mcp/options.js';
+import type { McpCliOptions } from '../mcp/options.js';
+import { createRobot } from '../mcp/robot.js';
+import { aborted } from '../wait.js';
+import type { RegisterCommand } from './context.js';
+
+/** Resolves when `stdin` ends (the MCP client went away) or `signal` is aborted. */
+function clientGone(stdin: Readable, signal: AbortSignal): Promise<void> {
+  return Promise.race([
+    aborted(signal),
+    new Promise<void>((resolve) => {
+      if (stdin.readableEnded) resolve();
+      stdin.once('end', () => resolve());
+      stdin.once('close', () => resolve());
+    }),
+  ]);
+}
+
+/** stdout as the stream the SDK's transport writes, through the CLI's output. */
+function outStream(io: CliIO): Writable {
+  return new Writable({
+    write(chunk: Buffer | string, _encoding, done) {
+      io.out(chunk.toString());
+      done();
+    },
+  });
+}
+
+export const registerMcp: RegisterCommand = (program, { io }) => {
+  const command = new Command('mcp').description(
+    'MCP server for the robot: the HAL tools, its state, capabilities and map as resources ' +
+      '(the embedded simulator unless --udp or --serial names a robot)',
+  );
+  addMcpOptions(command);
+  command.action(async (raw: McpCliOptions) => {
+    const options = mcpOptions(raw, io.env);
+    const stdin = io.stdin as Readable | undefined;
+    if (!options.http && stdin === undefined) {
+      throw new CliError('USAGE', 'MCP over stdio needs a standard input: give --http');
+    }
+    const { hal, world } = createRobot(options, io.env);
+    await hal.initialize();
+    let close: () => Promise<void> = async () => undefined;
+    try {
+      const executor = createToolExecutor(hal, {
+        tools: halTools(hal),
+        leash: options.leash,
+        ...(options.timeoutMs === undefined ? {} : { timeoutMs: options.timeoutMs }),
+      });
+      const create = () => createRobotMcpServer(hal, executor, world);
+      if (options.http) {
+        const endpoint = await serveHttp(create, {
+          host: options.host,
+          port: options.port,
+          ...(options.token === undefined ? {} : { token: options.token }),
+        });
+        close = endpoint.close;
+        io.err(`hal mcp: ${hal.mode} robot, MCP over HTTP at ${endpoint.url}\n`);
+        await aborted(io.signal);
+      } else {
+        const server = create();
+        await server.connect(new StdioServerTransport(stdin, outStream(io)));
+        close = () => server.close();
+        io.err(`hal mcp: ${hal.mode} robot, MCP over stdio\n`);
+        await clientGone(stdin!, io.signal);
+      }
+    } finally {
+      await close().catch(() => undefined);
+      await hal.cleanup().catch(() => undefined);
+    }
+  });
+  program.addCommand(command);
+};

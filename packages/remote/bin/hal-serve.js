@@ -1,3 +1,0 @@
-#!/usr/bin/env node
-// The published command: runs the built CLI.
-import '../dist/cli/main.js';
