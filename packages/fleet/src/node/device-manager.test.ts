@@ -161,6 +161,7 @@ describe('DeviceManager with simulated devices', () => {
     const manager = new DeviceManager(
       { devices: [sim('a', 0), sim('b', 0.3)] },
       {
+        devices: factories().devices,
         logger: {
           log: (level, _namespace, _message, fields) => {
             if (level === 'error') errors.push(fields);
