@@ -3,8 +3,7 @@ import { basename } from 'node:path';
 import type { ChatProvider, ChatReply, ChatRequest, ChatTool, ChatTurn } from '@hal/agent';
 import { scoped } from '@hal/types';
 import type { Logger } from '@hal/types';
-import { getLlama, LlamaChat, LlamaLogLevel } from 'node-llama-cpp';
-import type { Llama, LlamaContext, LlamaGrammar, LlamaModel } from 'node-llama-cpp';
+import type { Llama, LlamaContext, LlamaGrammar, LlamaLogLevel, LlamaModel } from 'node-llama-cpp';
 import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
@@ -90,11 +89,14 @@ export async function createLocalChatProvider(
   const settings = checkOptions(options);
   const modelFile = options.modelFile ?? defaultModelFile(options.env);
   await checkModelFile(modelFile, options.modelFile === undefined);
+  // loaded here, not at import: a program that imports this package but runs no model (the `hal`
+  // command answering --help) does not load llama.cpp's bindings
+  const { getLlama, LlamaChat, LlamaLogLevel: Levels } = await import('node-llama-cpp');
   const log = (level: LlamaLogLevel, message: string) => {
     const text = message.trim();
     if (text === '' || options.logger === undefined) return;
     const logger = scoped(options.logger, 'hal:agent-local');
-    if (level === LlamaLogLevel.error || level === LlamaLogLevel.fatal)
+    if (level === Levels.error || level === Levels.fatal)
       logger.error(text, { source: 'llama.cpp' });
     else logger.warn(text, { source: 'llama.cpp' });
   };
@@ -103,7 +105,7 @@ export async function createLocalChatProvider(
     llama = await getLlama({
       gpu: options.gpu ?? 'auto',
       build: 'never', // the prebuilt binaries only: never download or compile at run time
-      logLevel: LlamaLogLevel.warn,
+      logLevel: Levels.warn,
       logger: log,
     });
   } catch (cause) {

@@ -1,4 +1,4 @@
-import * as zstd from '@foxglove/wasm-zstd';
+import type * as Zstd from '@foxglove/wasm-zstd';
 import type { DecompressHandlers } from '@mcap/core';
 
 /*
@@ -10,9 +10,19 @@ import type { DecompressHandlers } from '@mcap/core';
 /** The chunk compressions a recording can use. */
 export type ChunkCompression = 'zstd' | 'none';
 
-/** Resolves once the zstd WebAssembly module is ready (it loads asynchronously). */
+// Loaded on first use, not at import: a program that imports the recorder but records nothing
+// (the `hal` command answering --help) does not pay for compiling the WebAssembly module.
+let zstd: typeof Zstd | undefined;
+
+/** Loads the zstd WebAssembly module once, and resolves when it is ready. */
 export async function zstdReady(): Promise<void> {
+  zstd ??= await import('@foxglove/wasm-zstd');
   await zstd.isLoaded;
+}
+
+function loadedZstd(): typeof Zstd {
+  if (zstd === undefined) throw new Error('zstd is not loaded: await zstdReady() first');
+  return zstd;
 }
 
 /** The writer's `compressChunk` for a compression; call {@link zstdReady} first for zstd. */
@@ -20,10 +30,10 @@ export function chunkCompressor(
   compression: ChunkCompression,
 ): ((data: Uint8Array) => { compression: string; compressedData: Uint8Array }) | undefined {
   if (compression === 'none') return undefined;
-  return (data) => ({ compression: 'zstd', compressedData: zstd.compress(data, 3) });
+  return (data) => ({ compression: 'zstd', compressedData: loadedZstd().compress(data, 3) });
 }
 
 /** The reader's decompress handlers (call {@link zstdReady} first). */
 export const DECOMPRESS_HANDLERS: DecompressHandlers = {
-  zstd: (buffer, decompressedSize) => zstd.decompress(buffer, Number(decompressedSize)),
+  zstd: (buffer, decompressedSize) => loadedZstd().decompress(buffer, Number(decompressedSize)),
 };
