@@ -1,8 +1,8 @@
 // Announcing a robot that has no mDNS responder of its own (the emulator): publishes the TXT
 // entries it printed, built by the firmware core, under `_hal-cube._udp` on its port.
 import { HalError } from '@hal/types';
-import { openMdns } from './mdns-socket.js';
 import type { MdnsOptions } from './mdns-socket.js';
+import { publishService } from './publish-service.js';
 import { SERVICE_NAME, SERVICE_PROTOCOL } from './service.js';
 import { oversizeTxtEntry, parseAnnouncementTxt } from './txt-record.js';
 
@@ -44,46 +44,13 @@ export async function announceRobot(options: AnnounceOptions): Promise<Announcer
   }
   const name = options.name ?? parsed.announcement.deviceId;
   const timeoutMs = options.timeoutMs ?? 5000;
-  const mdns = openMdns(options.mdns);
-  // No probe: bonjour-service reports a name conflict on the console only. Device ids are the
-  // robots' unique addresses; `hal emulate` checks one is free before announcing it.
-  const service = mdns.bonjour.publish({
+  return publishService({
     name,
     type: SERVICE_NAME,
     protocol: SERVICE_PROTOCOL,
     port: options.port,
     txt: options.txt,
-    probe: false,
+    timeoutMs,
+    mdns: options.mdns,
   });
-  let timer: NodeJS.Timeout | undefined;
-  try {
-    await Promise.race([
-      mdns.failed,
-      new Promise<void>((resolve) => service.once('up', () => resolve())),
-      new Promise<never>((_, reject) => {
-        timer = setTimeout(
-          () =>
-            reject(new HalError('TIMEOUT', `the announcement did not go out in ${timeoutMs} ms`)),
-          timeoutMs,
-        );
-      }),
-    ]);
-  } catch (error) {
-    await mdns.close();
-    throw error;
-  } finally {
-    clearTimeout(timer);
-  }
-  let stopped: Promise<void> | undefined;
-  return {
-    name,
-    stop: () =>
-      (stopped ??= new Promise<void>((resolve) => {
-        const done = setTimeout(resolve, 1000); // the goodbye is best effort
-        service.stop?.(() => {
-          clearTimeout(done);
-          resolve();
-        });
-      }).then(() => mdns.close())),
-  };
 }

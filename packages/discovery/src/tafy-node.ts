@@ -5,6 +5,7 @@ import { HalError, parseCapability } from '@hal/types';
 import { z } from 'zod';
 import { openMdns } from './mdns-socket.js';
 import type { MdnsOptions } from './mdns-socket.js';
+import { publishService } from './publish-service.js';
 import { MAX_TXT_ENTRY_BYTES } from './service.js';
 
 /** The spec's service name (without the underscore bonjour-service adds) and transport. */
@@ -77,47 +78,16 @@ export async function announceTafyNode(node: TafyNodeAnnouncement): Promise<Tafy
   const txt = tafyNodeTxt(node);
   const name = node.name ?? node.deviceId;
   const timeoutMs = node.timeoutMs ?? 5000;
-  const mdns = openMdns(node.mdns);
-  const service = mdns.bonjour.publish({
+  const published = await publishService({
     name,
     type: TAFY_NODE_SERVICE,
     protocol: TAFY_NODE_PROTOCOL,
     port: node.port,
     txt,
-    probe: false,
+    timeoutMs,
+    mdns: node.mdns,
   });
-  let timer: NodeJS.Timeout | undefined;
-  try {
-    await Promise.race([
-      mdns.failed,
-      new Promise<void>((resolve) => service.once('up', () => resolve())),
-      new Promise<never>((_, reject) => {
-        timer = setTimeout(
-          () =>
-            reject(new HalError('TIMEOUT', `the announcement did not go out in ${timeoutMs} ms`)),
-          timeoutMs,
-        );
-      }),
-    ]);
-  } catch (error) {
-    await mdns.close();
-    throw error;
-  } finally {
-    clearTimeout(timer);
-  }
-  let stopped: Promise<void> | undefined;
-  return {
-    name,
-    txt,
-    stop: () =>
-      (stopped ??= new Promise<void>((resolve) => {
-        const done = setTimeout(resolve, 1000); // the goodbye is best effort
-        service.stop?.(() => {
-          clearTimeout(done);
-          resolve();
-        });
-      }).then(() => mdns.close())),
-  };
+  return { ...published, txt };
 }
 
 const TxtSchema = z
