@@ -1,4 +1,4 @@
-export { BUILTIN_TASKS, builtinTasks } from './builtin-tasks.js';
+export { builtinTasks } from './builtin-tasks.js';
 export {
   BudgetSchema,
   CheckSchema,
