@@ -17,17 +17,21 @@ export function encodeMessage(
   );
 }
 
+/** The message's bytes as JSON; MALFORMED when they are not. */
+function readJson(data: Uint8Array): unknown {
+  try {
+    return JSON.parse(decoder.decode(data));
+  } catch (cause) {
+    throw new HalError('MALFORMED', 'message is not JSON', { cause });
+  }
+}
+
 /** Decodes an envelope and checks its payload; MALFORMED for anything else. */
 export function decodeMessage<S extends z.ZodType>(
   data: Uint8Array,
   payload: S,
 ): Envelope<z.output<S>> {
-  let raw: unknown;
-  try {
-    raw = JSON.parse(decoder.decode(data));
-  } catch (cause) {
-    throw new HalError('MALFORMED', 'message is not JSON', { cause });
-  }
+  const raw = readJson(data);
   return parseEnvelope(raw, payload);
 }
 
@@ -44,12 +48,7 @@ export function decodeSpecMessage<S extends z.ZodType>(
   data: Uint8Array,
   payload: S,
 ): Envelope<z.output<S>> {
-  let raw: unknown;
-  try {
-    raw = JSON.parse(decoder.decode(data));
-  } catch (cause) {
-    throw new HalError('MALFORMED', 'message is not JSON', { cause });
-  }
+  const raw = readJson(data);
   if (typeof raw !== 'object' || raw === null || Array.isArray(raw) || looksLikeEnvelope(raw)) {
     return parseEnvelope(raw, payload);
   }
