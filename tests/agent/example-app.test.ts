@@ -125,7 +125,7 @@ describe('examples/llm-agent', () => {
       expect(run.stdout).toContain(`robot: robot at udp://127.0.0.1:${emulator.udpPort}`);
       expect(run.stdout).toContain('pose: x 0.100 m');
       // The robot itself moved: its firmware core reports one finished 10 cm move.
-      const moves = emulator.events.filter((e) => e.event === 'move_finished');
+      const moves = await emulator.waitForCount((e) => e.event === 'move_finished', 1);
       expect(moves).toHaveLength(1);
       const steps = distanceToSteps(10);
       expect(moves[0]).toMatchObject({ left_steps: steps, right_steps: steps });

@@ -111,7 +111,7 @@ describe('hal agent --base-url', () => {
       );
       expect(code, io.stderr()).toBe(0);
       expect((io.jsonLines() as Line[]).at(-1)).toMatchObject({ reason: 'completed' });
-      const moves = emulator.events.filter((e) => e.event === 'move_finished');
+      const moves = await emulator.waitForCount((e) => e.event === 'move_finished', 1);
       expect(moves).toHaveLength(1);
       const steps = distanceToSteps(10);
       expect(moves[0]).toMatchObject({ left_steps: steps, right_steps: steps });

@@ -34,7 +34,7 @@ describe('the @hal/hybrid README', () => {
       expect(logged[0]?.[0]).toBe(true);
       expect(logged[0]?.[1]).toEqual({ success: true });
       expect(logged[0]?.[2]).toMatchObject({ exceeded: false, positionM: expect.any(Number) });
-      expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
+      expect(await emulator.waitForCount((e) => e.event === 'move_finished', 1)).toHaveLength(1);
     } finally {
       await emulator.stop();
     }

@@ -62,7 +62,7 @@ describe('NavigationBridge through PhysicalHAL to the emulated robot', () => {
       const inside = p.x > 0.35 - 0.07 && p.x < 0.65 + 0.07 && Math.abs(p.y) < 0.3 + 0.07;
       expect(inside).toBe(false);
     }
-    expect(emulator.events.some((e) => e.event === 'move_finished')).toBe(true);
+    expect(await emulator.waitFor((e) => e.event === 'move_finished')).toBeDefined();
 
     const world = new World({ map });
     const simulated = new SimulationHAL({ world, clock: 'fast' });

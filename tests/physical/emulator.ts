@@ -38,6 +38,12 @@ export interface Emulator {
   events: EmulatorEvent[];
   /** Waits for an event that matches, up to `timeoutMs`. */
   waitFor(match: (e: EmulatorEvent) => boolean, timeoutMs?: number): Promise<EmulatorEvent>;
+  /** Waits until `count` events match and returns them all (see EventLines.waitForCount). */
+  waitForCount(
+    match: (e: EmulatorEvent) => boolean,
+    count: number,
+    timeoutMs?: number,
+  ): Promise<EmulatorEvent[]>;
   stop(): Promise<void>;
   /** Kills it at once (SIGKILL), as a power cut or a crash would: it prints nothing more. */
   kill(): Promise<void>;
@@ -84,7 +90,11 @@ export async function startEmulator(options: EmulatorOptions = {}): Promise<Emul
   if (options.pty === false) args.push('--no-pty');
   const child = spawn(EMULATOR_PATH, args, { stdio: ['pipe', 'pipe', 'pipe'] });
   running.add(child);
-  const { events, waitFor } = readEventLines<EmulatorEvent>(child, 'cube-emulator', 10_000);
+  const { events, waitFor, waitForCount } = readEventLines<EmulatorEvent>(
+    child,
+    'cube-emulator',
+    10_000,
+  );
   const exited = new Promise<void>((resolve) => child.once('exit', () => resolve()));
   child.once('exit', () => running.delete(child));
 
@@ -95,6 +105,7 @@ export async function startEmulator(options: EmulatorOptions = {}): Promise<Emul
     pty: String(ready['pty']),
     events,
     waitFor,
+    waitForCount,
     stop: async () => {
       if (child.exitCode === null && child.signalCode === null) {
         child.kill('SIGTERM');

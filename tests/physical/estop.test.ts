@@ -65,7 +65,7 @@ describe('emergencyStop() against the emulator over UDP', () => {
           expect(trial.estop.data?.['leftSteps']).toBeGreaterThan(0);
         }
         // latched, and nothing moved after the last stop
-        const finished = emulator.events.filter((e) => e.event === 'move_finished');
+        const finished = await emulator.waitForCount((e) => e.event === 'move_finished', TRIALS);
         expect(finished).toHaveLength(TRIALS);
         expect(finished.every((e) => e['outcome'] === 'estop')).toBe(true);
         expect(emulator.events.filter((e) => e.event === 'move_started')).toHaveLength(TRIALS);

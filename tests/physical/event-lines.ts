@@ -12,6 +12,12 @@ export interface EventLines<E> {
   events: E[];
   /** Waits for an event that matches, up to `timeoutMs`; rejects early when the child exits. */
   waitFor(match: (e: E) => boolean, timeoutMs?: number): Promise<E>;
+  /**
+   * Waits until `count` events match, up to `timeoutMs`, and returns every one that matches.
+   * A child's stdout can arrive after the reply its event belongs to, so a test that counts the
+   * events of calls it has just made waits for them with this.
+   */
+  waitForCount(match: (e: E) => boolean, count: number, timeoutMs?: number): Promise<E[]>;
 }
 
 /** Reads `child`'s events; `name` and `defaultTimeoutMs` shape its errors and waits. */
@@ -61,5 +67,14 @@ export function readEventLines<E extends { event: string }>(
       waiters.add(check);
       check();
     });
-  return { events, waitFor };
+  const waitForCount = async (match: (e: E) => boolean, count: number, timeoutMs?: number) => {
+    try {
+      await waitFor(() => events.filter(match).length >= count, timeoutMs);
+    } catch (error) {
+      const seen = events.filter(match).length;
+      throw new Error(`${(error as Error).message} (${seen} of ${count} matching events)`);
+    }
+    return events.filter(match);
+  };
+  return { events, waitFor, waitForCount };
 }

@@ -47,7 +47,7 @@ describe('the @hal/physical README', () => {
         position: { x: expect.closeTo(0.1, 3) },
         confirmed: true,
       });
-      expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
+      expect(await emulator.waitForCount((e) => e.event === 'move_finished', 1)).toHaveLength(1);
     } finally {
       await emulator.stop();
     }

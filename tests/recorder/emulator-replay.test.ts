@@ -60,7 +60,7 @@ describe('a run of the emulated cube, recorded and replayed', () => {
       ]);
       expect(recorded['recorder']).toMatchObject({ dropped: 0 });
       expect(
-        emulator.events.filter((e) => e.event === 'move_finished').length,
+        (await emulator.waitForCount((e) => e.event === 'move_finished', 5)).length,
       ).toBeGreaterThanOrEqual(5);
     } finally {
       await emulator.stop();

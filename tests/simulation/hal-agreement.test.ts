@@ -41,12 +41,14 @@ describe('SimulationHAL and PhysicalHAL on the emulated robot', () => {
     try {
       await physical.initialize();
       await simulated.initialize();
+      let movesSent = 0;
       for (const [call, run] of SCRIPT) {
         const real = await run(physical);
         const sim = await run(simulated);
         expect(real.success, `${call} on the emulator: ${JSON.stringify(real)}`).toBe(true);
         expect(sim.success, `${call} in simulation: ${JSON.stringify(sim)}`).toBe(true);
         expect(sim.data?.['moves'], call).toEqual(real.data?.['moves']);
+        movesSent += typeof real.data?.['moves'] === 'number' ? real.data['moves'] : 1;
         for (const key of ['leftSteps', 'rightSteps', 'leftSps', 'rightSps']) {
           const want = real.data?.[key];
           if (want === undefined) continue;
@@ -64,7 +66,11 @@ describe('SimulationHAL and PhysicalHAL on the emulated robot', () => {
         expect(Math.abs(b.position.y - a.position.y), `${call}: y`).toBeLessThan(0.001);
         expect(Math.abs(b.rotation.yaw - a.rotation.yaw), `${call}: yaw`).toBeLessThan(0.002);
       }
-      const last = [...emulator.events].reverse().find((e) => e.event === 'move_finished');
+      // The emulator prints its events on its own stdout, which can arrive after the UDP reply:
+      // wait for the line of the last move before reading where the wheels ended.
+      const finished = await emulator.waitForCount((e) => e.event === 'move_finished', movesSent);
+      expect(finished).toHaveLength(movesSent);
+      const last = finished.at(-1);
       expect(
         Math.abs(simulated.robot.leftSteps - Number(last?.['left_position'])),
       ).toBeLessThanOrEqual(2);
