@@ -342,7 +342,12 @@ describe('priority and repeats', () => {
         const long = call('long', 'locomotion.moveForward', [20]).then(
           (r) => (finished.push('long'), r),
         );
-        await new Promise((resolve) => setTimeout(resolve, 200));
+        // the long move is under way before the others queue behind it
+        await expect
+          .poll(async () => (await device.hal.locomotion.getPose()).velocity.linear, {
+            timeout: 5000,
+          })
+          .toBeGreaterThan(0);
         const queued = [1, 2, 3].map((i) =>
           call(`queued-${i}`, 'locomotion.moveForward', [1]).then(
             (r) => (finished.push(`queued-${i}`), r),

@@ -90,7 +90,10 @@ for (const link of ['udp', 'serial'] as const) {
       await start();
       const move = hal.locomotion.moveForward(30);
       await emulator.waitFor((e) => e.event === 'move_started');
-      await new Promise((resolve) => setTimeout(resolve, 150));
+      // stopped once the wheels have turned, so the stop lands mid-move
+      await expect
+        .poll(async () => (await hal.refreshStatus()).move_left_steps, { timeout: 5000 })
+        .toBeGreaterThan(0);
       expect((await hal.locomotion.stop()).success).toBe(true);
       const result = await move;
       expect(result.code).toBe('INTERRUPTED');

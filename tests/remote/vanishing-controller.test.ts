@@ -51,7 +51,6 @@ const finished = (e: EmulatorEvent) => e.event === 'move_finished';
 describe('a controller that vanishes, against the emulated robot', () => {
   it('has the robot stopped when its socket is destroyed mid-drive', async () => {
     const { emulator, socket } = await rig();
-    await new Promise((r) => setTimeout(r, 200));
     const cut = Date.now();
     socket.terminate();
     const done = await emulator.waitFor(finished, 3000);
