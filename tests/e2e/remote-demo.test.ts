@@ -89,7 +89,7 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     expect(state?.divergence).toMatchObject({ exceeded: false });
     expect(state?.divergence?.positionM).toBeLessThan(0.005);
     await expect(page.locator('#remote-info').textContent()).resolves.toMatch(/Twin divergence\d/);
-    expect(emulator.events.filter((e) => e.event === 'move_finished')).toHaveLength(1);
+    expect(await emulator.waitForCount((e) => e.event === 'move_finished', 1)).toHaveLength(1);
 
     // The e-stop button latches the remote robot; the badge says so.
     await page.locator('[data-remote="estop"]').click();
