@@ -127,6 +127,12 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
+export { ForwardingHAL, UNKNOWN_SAFETY } from './forwarding/forwarding-hal.js';
+export type {
+  ForwardingHALOptions,
+  HostLatchPolicy,
+  SendOptions,
+} from './forwarding/forwarding-hal.js';
 export {
   DEFAULT_ESTOP_REASON,
   ESTOP_REASON_MAX_BYTES,
