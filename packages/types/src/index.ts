@@ -171,3 +171,9 @@ export { TypedEmitter } from './vocabulary/typed-emitter.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
+
+// The server side shared by every server of a HAL (WebSocket, NATS).
+export { ControllerWatch } from './serving/controller-watch.js';
+export type { ControllerWatchOptions } from './serving/controller-watch.js';
+export { ServedCalls } from './serving/served-calls.js';
+export type { ServedCallsOptions } from './serving/served-calls.js';
