@@ -191,7 +191,11 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
     this.#initialized = false;
     if (this.stopsOnCleanup()) {
       const stop = specOf(this.#calls, 'stop');
-      await this.send(stop, [], { timeoutMs: STOP_ON_CLEANUP_MS }).catch(() => undefined);
+      try {
+        await this.send(stop, [], { timeoutMs: STOP_ON_CLEANUP_MS });
+      } catch {
+        // best effort: a robot that cannot be reached cannot be stopped from here
+      }
     }
     await this.close();
   }
@@ -215,37 +219,41 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
     return status;
   }
 
+  // The bodies below are plain functions returning promises, not async ones: every forwarded call
+  // comes through here, and the boundary already turns a throw into a failure or a rejection.
   #result(spec: CallSpec, args: unknown[], options?: SendOptions): Promise<HALToolResult> {
-    return this.#boundary.forward(spec.name as CallName, async () => {
+    return this.#boundary.forward(spec.name as CallName, () => {
       const down = this.linkDown();
       if (down !== undefined) throw down;
       return this.#sendResult(spec, args, options);
     });
   }
 
-  async #sendResult(spec: CallSpec, args: unknown[], options?: SendOptions) {
-    const parsed = HALToolResultSchema.safeParse(await this.send(spec, args, options));
-    if (!parsed.success) {
-      throw new HalError('MALFORMED', `the served "${spec.name}" answer is not a HALToolResult`);
-    }
-    return parsed.data as HALToolResult;
+  #sendResult(spec: CallSpec, args: unknown[], options?: SendOptions): Promise<HALToolResult> {
+    return this.send(spec, args, options).then((answer) => {
+      const parsed = HALToolResultSchema.safeParse(answer);
+      if (!parsed.success) {
+        throw new HalError('MALFORMED', `the served "${spec.name}" answer is not a HALToolResult`);
+      }
+      return parsed.data as HALToolResult;
+    });
   }
 
   #value(spec: CallSpec, args: unknown[]): Promise<unknown> {
-    return this.#boundary.read(spec.name as CallName, objectFromArgs(spec, args), async () => {
+    return this.#boundary.read(spec.name as CallName, objectFromArgs(spec, args), () => {
       const down = this.linkDown();
       if (down !== undefined) throw down;
-      const parsed = spec.data.safeParse(await this.send(spec, args));
-      if (!parsed.success) {
-        throw new HalError(
-          'MALFORMED',
-          `the served "${spec.name}" answer does not match its schema`,
-          {
-            details: { issue: parsed.error.issues[0]?.message },
-          },
-        );
-      }
-      return parsed.data;
+      return this.send(spec, args).then((answer) => {
+        const parsed = spec.data.safeParse(answer);
+        if (!parsed.success) {
+          throw new HalError(
+            'MALFORMED',
+            `the served "${spec.name}" answer does not match its schema`,
+            { details: { issue: parsed.error.issues[0]?.message } },
+          );
+        }
+        return parsed.data;
+      });
     });
   }
 
