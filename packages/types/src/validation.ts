@@ -158,12 +158,17 @@ function sharedCallSchemas(config: RobotConfig): SharedSchemas {
 export class HalBoundary {
   readonly #options: HalBoundaryOptions;
   readonly #now: () => number;
+  /** The calls gated by the e-stop: the table's motions and an extended table's. */
+  readonly #motion: ReadonlySet<string>;
   #schemasFor: RobotConfig | undefined;
   #shared: SharedSchemas | undefined;
 
   constructor(options: HalBoundaryOptions) {
     this.#options = options;
     this.#now = options.now ?? Date.now;
+    // once, not per call: an extended table would otherwise be searched on every call
+    const extended = (options.calls ?? []).filter((entry) => entry.kind === 'motion');
+    this.#motion = new Set([...MOTION_CALLS, ...extended.map((entry) => entry.name)]);
   }
 
   #current(): SharedSchemas {
@@ -216,8 +221,7 @@ export class HalBoundary {
   }
 
   #isMotion(call: CallName): boolean {
-    if (MOTION_CALLS.includes(call)) return true;
-    return this.#options.calls?.find((entry) => entry.name === call)?.kind === 'motion';
+    return this.#motion.has(call);
   }
 
   /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
