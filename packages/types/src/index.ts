@@ -127,7 +127,7 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
-export { ForwardingHAL, UNKNOWN_SAFETY } from './forwarding/forwarding-hal.js';
+export { ForwardingHAL } from './forwarding/forwarding-hal.js';
 export type {
   ForwardingHALOptions,
   HostLatchPolicy,

@@ -45,7 +45,7 @@ export interface SendOptions {
 }
 
 /** The safety status reported before the served HAL has said its own. */
-export const UNKNOWN_SAFETY: SafetyStatus = Object.freeze({
+const UNKNOWN_SAFETY: SafetyStatus = Object.freeze({
   emergencyStopped: false,
   batteryLevel: 100,
   errors: [],
