@@ -136,7 +136,8 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
   protected abstract close(): Promise<void>;
   /**
    * Sends one call and answers what the served HAL answered: a HALToolResult (motion and result
-   * calls) or a value (value calls); rejects with a HalError when it has no answer.
+   * calls) or a value (value calls); rejects with a HalError when it has no answer (a rejected
+   * promise, never a synchronous throw).
    */
   protected abstract send(spec: CallSpec, args: unknown[], options?: SendOptions): Promise<unknown>;
   /** Sends a log message, unanswered; reports its own failures through its logger. */
