@@ -1,7 +1,9 @@
 import {
+  ControllerWatch,
   HalError,
+  ServedCalls,
   V1_ROBOT,
-  invokeSpec,
+  findCall,
   isHalError,
   sanitizeEstopReason,
   scoped,
@@ -9,7 +11,9 @@ import {
   toHalError,
 } from '@hal/types';
 import type {
+  CallSpec,
   CallTable,
+  HALToolResult,
   HalErrorPayload,
   HardwareAbstractionLayer,
   Logger,
@@ -18,8 +22,6 @@ import type {
 } from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
 import { decodeArgs, decodeMessage, decodeSpecMessage, encodeMessage } from './codec.js';
-import { CommandQueue } from './command-queue.js';
-import { ControllerWatchdog } from './controller-watchdog.js';
 import { CpuMeter } from './cpu-meter.js';
 import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
@@ -105,7 +107,7 @@ export async function serveHalOnNats(
 
 class Gateway implements HalGateway {
   readonly deviceId: string;
-  readonly #queue = new CommandQueue();
+  readonly #served: ServedCalls;
   readonly #subs: Subscription[] = [];
   readonly #timers: NodeJS.Timeout[] = [];
   readonly #replies = new Map<string, Promise<Uint8Array>>();
@@ -113,7 +115,8 @@ class Gateway implements HalGateway {
   readonly #isDefault: boolean;
   readonly #robot: RobotConfig;
   readonly #log: ScopedLogger;
-  readonly #watchdog: ControllerWatchdog;
+  /** The controller of an open-ended drive, whose silence stops it. */
+  readonly #controllers: ControllerWatch;
   readonly #cpu = new CpuMeter();
   readonly #calls: Readonly<Record<string, NatsCall>>;
   #streaming = false;
@@ -131,9 +134,15 @@ class Gateway implements HalGateway {
     this.#log = scoped(options.logger ?? silentLogger, 'hal:nats:gateway');
     this.#calls = natsCalls(options.calls);
     subjectFor('call', this.deviceId); // refuses a bad device id before anything is served
-    this.#watchdog = new ControllerWatchdog(options.controllerTimeoutMs ?? 3000, (client) => {
-      this.#log.warn('controller went quiet during an open-ended drive: stopping', { client });
-      void this.hal.locomotion.stop();
+    this.#served = new ServedCalls(hal, { calls: options.calls, order: 'ordered' });
+    this.#controllers = new ControllerWatch(hal, {
+      timeoutMs: options.controllerTimeoutMs ?? 3000,
+      log: this.#log,
+      onSilent: (client, silentMs) =>
+        void this.#controllers.stopFor(
+          client,
+          `went silent for ${silentMs} ms during an open-ended drive`,
+        ),
     });
   }
 
@@ -147,7 +156,7 @@ class Gateway implements HalGateway {
     this.#serve('cameraFrame', (m) => this.#onCamera(m));
     this.#serve('log', (m) => this.#onLog(m));
     this.#serve('heartbeat', async (m) => {
-      this.#watchdog.heard(decodeSpecMessage(m.data, z.looseObject({})).device_id);
+      this.#controllers.heard(decodeSpecMessage(m.data, z.looseObject({})).device_id);
     });
     const rate = this.options.stateRateHz ?? 20;
     if (rate !== 0 && !(rate >= 10 && rate <= 100)) {
@@ -166,7 +175,7 @@ class Gateway implements HalGateway {
   async close(): Promise<void> {
     if (this.#closed) return;
     this.#closed = true;
-    this.#watchdog.close();
+    this.#controllers.close();
     for (const timer of this.#timers) clearInterval(timer);
     for (const sub of this.#subs) sub.unsubscribe();
     if (this.owned) await this.nc.close();
@@ -224,7 +233,7 @@ class Gateway implements HalGateway {
     const envelope = decodeMessage(msg.data, HalCallSchema);
     const call = envelope.payload;
     const id = call.request_id;
-    this.#watchdog.heard(envelope.device_id);
+    this.#controllers.heard(envelope.device_id);
     let reply = this.#replies.get(id);
     if (reply === undefined) {
       this.#watch(envelope.device_id, call.call, call.args.length < 3);
@@ -263,22 +272,18 @@ class Gateway implements HalGateway {
         ...safety(),
       };
     }
-    const run = async (): Promise<Omit<HalCallReply, 'request_id'>> => {
-      try {
-        const out = await invokeSpec(this.hal, spec.spec, args);
-        return spec.kind === 'result' ? { result: out, ...safety() } : { value: out, ...safety() };
-      } catch (thrown) {
-        return { error: errorPayload(thrown), ...safety() };
-      }
-    };
-    if (spec.lane === 'queue') return this.#queue.run(run, priority);
-    return run();
+    try {
+      const out = await this.#served.run(spec.spec, args, { priority });
+      return spec.kind === 'result' ? { result: out, ...safety() } : { value: out, ...safety() };
+    } catch (thrown) {
+      return { error: errorPayload(thrown), ...safety() };
+    }
   }
 
   async #onDrive(msg: Msg): Promise<void> {
     const envelope = decodeSpecMessage(msg.data, DifferentialCommandSchema);
     const command = envelope.payload;
-    this.#watchdog.heard(envelope.device_id);
+    this.#controllers.heard(envelope.device_id);
     const { left, right } = wheelPowersFor(command, this.#robot);
     const stop = left === 0 && right === 0 && command.duration_ms === undefined;
     this.#watch(
@@ -286,12 +291,11 @@ class Gateway implements HalGateway {
       stop ? 'locomotion.stop' : 'locomotion.drive',
       command.duration_ms === undefined,
     );
-    const result = await (stop
-      ? this.hal.locomotion.stop()
-      : this.#queue.run(
-          () => this.hal.locomotion.drive(left, right, command.duration_ms),
-          this.#priority(msg),
-        ));
+    const result = (await (stop
+      ? this.#served.run(callSpec('stop'), [])
+      : this.#served.run(callSpec('drive'), [left, right, command.duration_ms], {
+          priority: this.#priority(msg),
+        }))) as HALToolResult;
     if (!result.success) {
       throw new HalError(result.code ?? 'HARDWARE_ERROR', result.error ?? 'drive failed', {
         details: result.details ?? {},
@@ -302,10 +306,12 @@ class Gateway implements HalGateway {
 
   /** Keeps the watchdog on an open-ended drive, and off once any other motion or stop replaces it. */
   #watch(client: string, call: string, noDuration: boolean): void {
-    if (call === 'locomotion.drive' && noDuration) this.#watchdog.openEnded(client);
-    else if (call.startsWith('locomotion.') && call !== 'locomotion.getPose')
-      this.#watchdog.ended();
-    else if (call === 'safety.emergencyStop') this.#watchdog.ended();
+    if (call === 'locomotion.drive' && noDuration) {
+      this.#controllers.forget(); // one open-ended drive at a time: the latest
+      this.#controllers.watch(client);
+    } else if (call.startsWith('locomotion.') && call !== 'locomotion.getPose') {
+      this.#controllers.forget();
+    } else if (call === 'safety.emergencyStop') this.#controllers.forget();
   }
 
   async #onEstop(msg: Msg): Promise<void> {
@@ -418,6 +424,13 @@ class Gateway implements HalGateway {
       this.#streaming = false;
     }
   }
+}
+
+/** A call of the HAL's own table (the spec's drive subject maps onto drive and stop). */
+function callSpec(name: 'drive' | 'stop'): CallSpec {
+  const spec = findCall(name);
+  if (spec === undefined) throw new HalError('HARDWARE_ERROR', `the call table has no "${name}"`);
+  return spec;
 }
 
 /** The spec's error shape for anything thrown. */

@@ -10,7 +10,6 @@ export { SUBJECTS, subjectFor } from './subjects.js';
 export type { SubjectName } from './subjects.js';
 export { wheelPowersFor, wheelVelocities } from './drive-mapping.js';
 export type { WheelPowers } from './drive-mapping.js';
-export { CommandQueue } from './command-queue.js';
 export { encodeMessage, decodeMessage } from './codec.js';
 export { errorFromPayload } from './device-link.js';
 export {

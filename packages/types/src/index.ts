@@ -127,6 +127,12 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
+export { ForwardingHAL } from './forwarding/forwarding-hal.js';
+export type {
+  ForwardingHALOptions,
+  HostLatchPolicy,
+  SendOptions,
+} from './forwarding/forwarding-hal.js';
 export {
   DEFAULT_ESTOP_REASON,
   ESTOP_REASON_MAX_BYTES,
@@ -165,3 +171,9 @@ export { TypedEmitter } from './vocabulary/typed-emitter.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
+
+// The server side shared by every server of a HAL (WebSocket, NATS).
+export { ControllerWatch } from './serving/controller-watch.js';
+export type { ControllerWatchOptions } from './serving/controller-watch.js';
+export { ServedCalls } from './serving/served-calls.js';
+export type { ServedCallsOptions } from './serving/served-calls.js';

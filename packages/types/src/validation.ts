@@ -87,7 +87,7 @@ function rejectAsHalError(thrown: unknown): never {
 
 /** What a {@link HalBoundary} needs to know about the HAL it guards. */
 export interface HalBoundaryOptions {
-  /** Which world the HAL drives (stamped on every result). */
+  /** Which world the HAL drives, stamped on every result (read each time: a getter may follow it). */
   mode: HALMode;
   /** The robot's current configuration; limits are read from it on every call. */
   config: () => RobotConfig;
@@ -102,6 +102,12 @@ export interface HalBoundaryOptions {
    * parameter schemas (and gated as motion when they are). Default none.
    */
   calls?: CallTable;
+  /**
+   * Whether parameters are validated here. Default true; false for a HAL that forwards its calls
+   * to another HAL (over a link), whose own boundary validates them with the robot's own limits:
+   * the limits of a robot elsewhere are not this process's to guess.
+   */
+  validateParams?: boolean;
 }
 
 /** The call schemas of a configuration, and the same compiled by zod (schemas/compiled.ts). */
@@ -152,12 +158,17 @@ function sharedCallSchemas(config: RobotConfig): SharedSchemas {
 export class HalBoundary {
   readonly #options: HalBoundaryOptions;
   readonly #now: () => number;
+  /** The calls gated by the e-stop: the table's motions and an extended table's. */
+  readonly #motion: ReadonlySet<string>;
   #schemasFor: RobotConfig | undefined;
   #shared: SharedSchemas | undefined;
 
   constructor(options: HalBoundaryOptions) {
     this.#options = options;
     this.#now = options.now ?? Date.now;
+    // once, not per call: an extended table would otherwise be searched on every call
+    const extended = (options.calls ?? []).filter((entry) => entry.kind === 'motion');
+    this.#motion = new Set([...MOTION_CALLS, ...extended.map((entry) => entry.name)]);
   }
 
   #current(): SharedSchemas {
@@ -181,6 +192,7 @@ export class HalBoundary {
    * to zod's ordinary parser, which gives the issues.
    */
   validate<N extends CallName>(call: N, args: unknown): CallParams<N> {
+    if (this.#options.validateParams === false) return args as CallParams<N>;
     const shared = this.#current();
     if (!Object.hasOwn(shared.compiled, call)) return this.#validateExtended(call, args);
     const parsed = (shared.compiled[call] as z.ZodType).safeParse(args);
@@ -209,8 +221,7 @@ export class HalBoundary {
   }
 
   #isMotion(call: CallName): boolean {
-    if (MOTION_CALLS.includes(call)) return true;
-    return this.#options.calls?.find((entry) => entry.name === call)?.kind === 'motion';
+    return this.#motion.has(call);
   }
 
   /** Throws unless the HAL may take this call now (ready; not emergency-stopped for motion). */
@@ -293,6 +304,23 @@ export class HalBoundary {
       (data) => this.#succeeded(started, data),
       (thrown: unknown) => this.#failed(started, thrown),
     );
+  }
+
+  /**
+   * Guards a call that another HAL runs (a forwarding HAL's): the same readiness and e-stop gate
+   * as {@link call}, then `body`'s result as the other HAL gave it (its data, timing and codes).
+   * Whatever `body` throws becomes a failure result; never rejects.
+   */
+  forward(call: CallName, body: () => Promise<HALToolResult>): Promise<HALToolResult> {
+    const started = this.#now();
+    let pending: Promise<HALToolResult>;
+    try {
+      this.checkAllowed(call);
+      pending = body();
+    } catch (thrown) {
+      return Promise.resolve(this.#failed(started, thrown));
+    }
+    return pending.then(undefined, (thrown: unknown) => this.#failed(started, thrown));
   }
 
   #succeeded(started: number, data: Record<string, unknown> | void): HALToolResult {

@@ -5,13 +5,19 @@ import { randomUUID } from 'node:crypto';
 import { createServer } from 'node:http';
 import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { HAL_CALL_TABLE, HalError, scoped, silentLogger, toHalError } from '@hal/types';
+import {
+  ControllerWatch,
+  HalError,
+  ServedCalls,
+  scoped,
+  silentLogger,
+  toHalError,
+} from '@hal/types';
 import type { HalErrorCode, HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import { WebSocketServer } from 'ws';
 import type { RawData, WebSocket } from 'ws';
 import {
   MESSAGE_SCHEMAS,
-  controllerCalls,
   decodeArgs,
   decodeMessage,
   encodeMessage,
@@ -20,7 +26,6 @@ import {
 import type { MessageSchema, Role } from '../protocol.js';
 import { checkBinding, presentedToken, tokenMatches } from './auth.js';
 import type { ClientSession } from './client-session.js';
-import { dispatchCall, findRemoteCall } from './dispatch.js';
 import { SERVE_DEFAULTS } from './options.js';
 import type { HalServer, ServeHalOptions } from './options.js';
 
@@ -52,8 +57,9 @@ export async function serveHal(
     caps: hal.getDeviceInfo().capabilities,
   });
 
-  const table = options.calls ?? HAL_CALL_TABLE;
-  const controllerOnly = controllerCalls(table);
+  // every call runs the moment it arrives: the HAL orders its own motions, and a stop or an
+  // e-stop never waits behind one
+  const served = new ServedCalls(hal, { calls: options.calls, order: 'concurrent' });
   const sessions = new Map<WebSocket, ClientSession>();
   let controller: ClientSession | undefined;
 
@@ -83,43 +89,43 @@ export async function serveHal(
     send(session, MESSAGE_SCHEMAS.control, { role, reason });
   };
 
-  /** Stops the robot on behalf of a controller that is gone. */
-  const stopFor = (session: ClientSession, why: string) => {
-    log('warn', `controller ${session.id} ${why}: stopping the robot`, { session: session.id });
-    hal.locomotion.stop().catch((e: unknown) => {
-      log('error', 'stop after a lost controller failed', { error: String(e) });
-    });
-  };
+  // A silent client is dropped, and the robot stopped if it was the controller.
+  const controllers: ControllerWatch = new ControllerWatch(hal, {
+    timeoutMs: heartbeatTimeoutMs,
+    log: scopedLog,
+    onSilent: (id, silentMs) => {
+      const session = [...sessions.values()].find((s) => s.id === id);
+      if (session === undefined) return;
+      release(session, `silent for ${silentMs} ms`);
+      session.socket.terminate();
+    },
+  });
 
   const release = (session: ClientSession, why: string) => {
     sessions.delete(session.socket);
+    controllers.forget(session.id);
     if (controller === session) {
       controller = undefined;
-      stopFor(session, why);
+      void controllers.stopFor(session.id, why);
     }
   };
 
   const runCall = (session: ClientSession, id: string, call: string, rawArgs: unknown[]) => {
-    const spec = findRemoteCall(call, table);
+    const spec = served.find(call);
     if (spec === undefined) {
       reply(session, id, null, errorOf('UNKNOWN_COMMAND', `unknown call "${call}"`, { call }));
       return;
     }
-    if (controllerOnly.has(call) && session.role !== 'controller') {
-      reply(
-        session,
-        id,
-        null,
-        errorOf('NOT_CONTROLLER', `"${call}" needs control: this client is watching`, {
-          call,
-          hint: 'send hal.remote.take_control first',
-        }),
-      );
+    const hint = 'send hal.remote.take_control first';
+    const refusal = served.refusal(spec, session.role === 'controller', hint);
+    if (refusal !== undefined) {
+      reply(session, id, null, refusal);
       return;
     }
     const motion = spec.kind === 'motion';
     if (motion) session.running += 1;
-    dispatchCall(hal, spec, decodeArgs(rawArgs))
+    served
+      .run(spec, decodeArgs(rawArgs))
       .then(
         (value) => reply(session, id, value),
         (e: unknown) => reply(session, id, null, toHalError(e)),
@@ -130,7 +136,7 @@ export async function serveHal(
   };
 
   const onMessage = (session: ClientSession, data: RawData, isBinary: boolean) => {
-    session.lastSeen = Date.now();
+    controllers.heard(session.id);
     const size = Array.isArray(data)
       ? data.reduce((n, b) => n + b.length, 0)
       : data instanceof ArrayBuffer
@@ -216,12 +222,12 @@ export async function serveHal(
       id: randomUUID().slice(0, 8),
       socket,
       role: controller === undefined && !watchOnly ? 'controller' : 'watcher',
-      lastSeen: Date.now(),
       subscribed: false,
       running: 0,
     };
     if (session.role === 'controller') controller = session;
     sessions.set(socket, session);
+    controllers.watch(session.id);
     log('info', `client ${session.id} connected as ${session.role}`);
     const info = hal.getDeviceInfo();
     send(session, MESSAGE_SCHEMAS.hello, {
@@ -239,19 +245,6 @@ export async function serveHal(
       log('warn', `client ${session.id} socket error`, { error: e.message }),
     );
   });
-
-  // The watchdog: a silent client is dropped (and its motion stopped if it controlled the robot).
-  const watchdog = setInterval(
-    () => {
-      const now = Date.now();
-      for (const session of sessions.values()) {
-        if (now - session.lastSeen <= heartbeatTimeoutMs) continue;
-        release(session, `silent for ${now - session.lastSeen} ms`);
-        session.socket.terminate();
-      }
-    },
-    Math.max(20, Math.min(250, heartbeatTimeoutMs / 5)),
-  );
 
   let streaming = false;
   const stream = setInterval(() => {
@@ -298,7 +291,7 @@ export async function serveHal(
     clientCount: () => sessions.size,
     close: () => {
       closed ??= (async () => {
-        clearInterval(watchdog);
+        controllers.close();
         clearInterval(stream);
         for (const session of [...sessions.values()]) {
           release(session, 'server closing');
