@@ -106,7 +106,8 @@ describe('SimRobot', () => {
       const error = thrown(() => robot.moveCm(200, 200));
       expect(isHalError(error) && error.code).toBe('RANGE_EXCEEDED');
       expect(robot.emergencyStopped).toBe(true);
-      expect(robot.emergencyStopReason).toBe('step_limit');
+      // the firmware's reason, word for word (cube_motion_commands.cpp)
+      expect(robot.emergencyStopReason).toBe('step limit: "left_cm" 43459 steps');
       expect(robot.lastTrip?.reason).toBe('step_limit');
       const refused = thrown(() => robot.moveCm(1, 1));
       expect(isHalError(refused) && refused.code).toBe('EMERGENCY_STOPPED');
