@@ -33,9 +33,12 @@ export interface MockRobotOptions {
 }
 
 /**
- * A fast, in-process robot that speaks protocol 1.1 (sessions, exactly-once retries, step-exact
- * motion from the firmware's own planner, odometry, e-stop, host timeout), for unit tests and for
- * trying the library without hardware. Each instance is its own robot: there is no shared state.
+ * A fast, in-process robot that speaks protocol 1.1, for unit tests and for trying the library
+ * without hardware. It is the wire and the session (messages and MACs, sessions and `hello`,
+ * exactly-once retries, the replies' fields) around `@hal/kinematics`' RobotModel, the
+ * simulator's model of the firmware's rules (step-exact motion from the firmware's planner,
+ * odometry, e-stop, step limit, host timeout, set_config ranges): it keeps no rule of its own.
+ * Each instance is its own robot: there is no shared state.
  * Test helpers: `requests` (every request received), `dropReplies(n)`, `unresponsive`,
  * `restart()`.
  */
