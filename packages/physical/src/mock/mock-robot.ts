@@ -98,7 +98,10 @@ export class MockRobot {
     this.#dropReplies += count;
   }
 
-  /** A power cycle: uptime, counters, motion, session and e-stop start over (the configuration is kept). */
+  /**
+   * A power cycle: uptime, counters, motion, session, e-stop and the record of trips start over
+   * (the configuration is kept).
+   */
   restart(): void {
     const state = this.#state;
     state.clock.reboot();

@@ -1,4 +1,5 @@
 import type { RobotModel } from '@hal/kinematics';
+import { HalError } from '@hal/types';
 import type { LedState, MoveOutcome } from '../protocol/schemas.js';
 import type { RobotClock } from './robot-clock.js';
 
@@ -14,7 +15,9 @@ export interface RobotState {
 export function moveOutcome(model: RobotModel): MoveOutcome {
   const outcome = model.motion?.outcome ?? 'none';
   // a collision needs a world to touch; the mock robot has none, so its model never reports one
-  if (outcome === 'collision') throw new Error('the mock robot reported a collision');
+  if (outcome === 'collision') {
+    throw new HalError('HARDWARE_ERROR', 'the mock robot has nothing to collide with');
+  }
   return outcome;
 }
 

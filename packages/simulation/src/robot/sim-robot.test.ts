@@ -162,6 +162,22 @@ describe('SimRobot', () => {
     });
   });
 
+  describe('#setConfig', () => {
+    it("refuses a setting outside the firmware's range with RANGE_EXCEEDED and keeps the configuration and the carry", () => {
+      const robot = new SimRobot({ id: 'r' });
+      robot.moveCm(10, 10); // carries 0.99 of a step per wheel
+      runToEnd(robot);
+      const error = thrown(() => robot.setConfig({ wheelBaseCm: 12, wheelDiameterCm: 80 }));
+      expect(isHalError(error) && error.code).toBe('RANGE_EXCEEDED');
+      expect(isHalError(error) && error.details).toMatchObject({
+        field: 'wheelDiameterCm',
+        max: 50,
+      });
+      expect(robot.config).toEqual(robotConfig());
+      expect(robot.moveCm(10, 10).report.plannedLeft).toBe(2173);
+    });
+  });
+
   describe('host timeout', () => {
     it('stops a drive exactly host_timeout_ms after the host fell silent and records a trip', () => {
       const robot = new SimRobot({ id: 'r', config: robotConfig({ hostTimeoutMs: 1000 }) });
