@@ -1,4 +1,4 @@
-import { RobotModel } from '@hal/kinematics';
+import { NOTHING_TO_TOUCH, RobotModel } from '@hal/kinematics';
 import { isHalError, robotConfig } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 import type { MessageAuthenticator } from '../protocol/auth.js';
@@ -204,6 +204,8 @@ export class MockRobot {
  */
 function poweredOn(config: RobotConfig): RobotModel {
   const model = new RobotModel({ config });
+  // nothing to touch, so no step needs a contact check: the steps are walked in bulk
+  model.setContactTest(() => undefined, NOTHING_TO_TOUCH);
   model.setHostSilent(true);
   return model;
 }
