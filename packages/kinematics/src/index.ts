@@ -17,3 +17,17 @@ export { MovePlan, VelocityPlan } from './planner.js';
 export type { StepPlan } from './planner.js';
 export { integrateOdometry, OdometryIntegrator } from './odometry.js';
 export type { PlanarPoseCm } from './odometry.js';
+export { RobotModel } from './robot-model/robot-model.js';
+export type { RobotModelOptions } from './robot-model/robot-model.js';
+export type { MotionHandle, MotionReport, MoveOutcome } from './robot-model/motion-report.js';
+export type { SafetyTrip } from './robot-model/robot-safety.js';
+export { checkSetting, FIRMWARE_SETTINGS } from './robot-model/settings.js';
+export type { FirmwareSetting, FirmwareSettingKey } from './robot-model/settings.js';
+export { MAX_DRIVE_DURATION_MS } from './robot-model/speed-limits.js';
+export { blockingContact, NOTHING_TO_TOUCH } from './robot-model/step-contact.js';
+export type {
+  ContactTest,
+  FreeSpace,
+  FreeSpaceTest,
+  StepContact,
+} from './robot-model/step-contact.js';

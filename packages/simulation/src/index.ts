@@ -14,7 +14,7 @@ export { SimRobot } from './robot/sim-robot.js';
 export type { LedState, SimRobotOptions } from './robot/sim-robot.js';
 export type { Contact, ContactTest } from './robot/contact.js';
 export type { MotionHandle, MotionReport, MoveOutcome } from './robot/motion-report.js';
-export type { SafetyTrip } from './robot/robot-safety.js';
+export type { SafetyTrip } from './robot/motion-report.js';
 
 export {
   BoxObstacleSchema,

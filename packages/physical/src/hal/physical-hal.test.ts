@@ -192,8 +192,10 @@ describe('PhysicalHAL', () => {
 
   describe('#moveTo', () => {
     it('splits a straight leg longer than one command allows into several moves', async () => {
-      const robot = new MockRobot({ timeScale: 200, hostTimeoutMs: 10_000 });
-      const hal = halOn(robot, { timeScale: 200 });
+      // x50, not faster: the robot's 10 s host timeout is 200 ms of real time, more than a loaded
+      // machine may hold back a heartbeat (at x200 it was 50 ms, and the move was sometimes cut)
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
+      const hal = halOn(robot);
       await hal.initialize();
       const result = await hal.locomotion.moveTo(0, 2.5, 0);
       expect(result.success, JSON.stringify(result)).toBe(true);

@@ -1,20 +1,17 @@
+import { checkSetting, FIRMWARE_SETTINGS } from '@hal/kinematics';
 import { sanitizeEstopReason } from '@hal/types';
-import {
-  DEVICE_SETTING_RANGES,
-  deviceGeometry,
-  MAX_STEPS_PER_COMMAND,
-} from '../protocol/device-config.js';
-import type { DeviceSettings } from '../protocol/device-config.js';
+import type { RobotConfig } from '@hal/types';
+import { deviceSettingsOf, MAX_STEPS_PER_COMMAND } from '../protocol/device-config.js';
 import { LED_PATTERNS } from '../protocol/schemas.js';
 import type { AuthScheme, DeviceConfig, ReplyDataOf } from '../protocol/schemas.js';
 import { drive, moveCm, moveSteps, rotateDeg } from './motion-commands.js';
-import { integerField, isAbsent, numberField, Refusal } from './refusal.js';
+import { integerField, numberField, isAbsent, Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
-import { emergencyStop, stopReport } from './robot-state.js';
+import { moveOutcome, stopReport } from './robot-state.js';
 import type { RobotState } from './robot-state.js';
 
 function configJson(state: RobotState): DeviceConfig {
-  return { ...state.settings, max_steps_per_command: MAX_STEPS_PER_COMMAND };
+  return { ...deviceSettingsOf(state.model.config), max_steps_per_command: MAX_STEPS_PER_COMMAND };
 }
 
 /** The reply data of `hello`, beside the session fields. */
@@ -30,7 +27,7 @@ export function helloData(
     auth,
     capabilities: [
       'locomotion.differential:v1.0',
-      `locomotion.stepper:v1.0:steps_per_rev=${state.settings.steps_per_revolution}`,
+      `locomotion.stepper:v1.0:steps_per_rev=${state.model.config.stepsPerRevolution}`,
       'communication.led:v1.0',
       'safety.estop:v1.0',
       'safety.host_timeout:v1.0',
@@ -40,51 +37,50 @@ export function helloData(
 }
 
 function status(state: RobotState): ReplyDataOf<'get_status'> {
-  const { motion } = state;
-  const pose = motion.pose;
-  const v = motion.velocity();
+  const { model } = state;
+  const pose = model.pose;
+  const v = model.wheelSpeeds();
+  const trip = model.lastTrip;
   return {
     x_cm: pose.xCm,
     y_cm: pose.yCm,
     heading_rad: pose.headingRad,
-    left_steps: motion.position.left,
-    right_steps: motion.position.right,
-    running: motion.running,
-    move_id: motion.moveId,
-    move_outcome: motion.outcome,
-    move_left_steps: motion.moveSteps.left,
-    move_right_steps: motion.moveSteps.right,
+    left_steps: model.leftSteps,
+    right_steps: model.rightSteps,
+    running: model.running,
+    move_id: model.motion?.moveId ?? 0,
+    move_outcome: moveOutcome(model),
+    move_left_steps: model.motion?.doneLeft ?? 0,
+    move_right_steps: model.motion?.doneRight ?? 0,
     left_sps: v.left,
     right_sps: v.right,
     uptime_ms: state.clock.uptimeMs(),
     safety: {
-      ...state.safety.report(),
-      host_timeout_ms: state.settings.host_timeout_ms,
-      ms_since_host: motion.msSinceHost(),
-      coils_on: motion.running,
+      estop: model.emergencyStopped,
+      estop_reason: model.emergencyStopReason,
+      trips: model.trips,
+      last_trip:
+        trip === undefined
+          ? null
+          : { reason: trip.reason, detail: trip.detail, uptime_ms: Math.floor(trip.atUs / 1000) },
+      host_timeout_ms: model.config.hostTimeoutMs,
+      ms_since_host: Math.max(0, Math.floor((model.nowUs - model.lastHostUs) / 1000)),
+      coils_on: model.running,
     },
     led: { ...state.led },
   };
 }
 
+/** `set_config`: each field read by its wire type, checked against the firmware's range. */
 function setConfig(state: RobotState, r: Json): ReplyDataOf<'set_config'> {
-  const next = { ...state.settings };
-  for (const [field, { min, max, integer }] of Object.entries(DEVICE_SETTING_RANGES) as Array<
-    [keyof DeviceSettings, (typeof DEVICE_SETTING_RANGES)[keyof DeviceSettings]]
-  >) {
-    if (isAbsent(r, field)) continue;
-    const value = integer ? integerField(r, field) : numberField(r, field);
-    if (value < min || value > max)
-      throw new Refusal('RANGE_EXCEEDED', `"${field}" must be ${min}..${max}`, {
-        field,
-        min,
-        max,
-        value,
-      });
-    next[field] = value;
+  const overrides: Partial<RobotConfig> = {};
+  for (const setting of FIRMWARE_SETTINGS) {
+    if (isAbsent(r, setting.field)) continue;
+    const value = setting.integer ? integerField(r, setting.field) : numberField(r, setting.field);
+    checkSetting(setting, value, setting.field);
+    overrides[setting.key] = value;
   }
-  state.settings = next;
-  state.motion.setGeometry(deviceGeometry(next));
+  state.model.setConfig(overrides);
   return { config: configJson(state) };
 }
 
@@ -109,15 +105,15 @@ function setLed(state: RobotState, r: Json): ReplyDataOf<'set_led'> {
 
 /**
  * Executes one command (any but `hello`) and returns its reply data; throws a {@link Refusal}
- * for the error reply.
+ * (or the robot model's HalError) for the error reply.
  */
 export function executeCommand(state: RobotState, cmd: string | undefined, r: Json): Json {
   switch (cmd) {
     case 'heartbeat':
       return {
         uptime_ms: state.clock.uptimeMs(),
-        running: state.motion.running,
-        estop: state.safety.estopped,
+        running: state.model.running,
+        estop: state.model.emergencyStopped,
       };
     case 'move_steps':
       return moveSteps(state, r);
@@ -128,7 +124,7 @@ export function executeCommand(state: RobotState, cmd: string | undefined, r: Js
     case 'drive':
       return drive(state, r);
     case 'stop': {
-      const stopped = state.motion.stop('stopped');
+      const stopped = state.model.stop();
       return { stopped, ...stopReport(state) };
     }
     case 'get_status':
@@ -140,16 +136,16 @@ export function executeCommand(state: RobotState, cmd: string | undefined, r: Js
     case 'estop': {
       // never refused: the same rule as every HAL's (and the firmware's) for the reason
       const reason = sanitizeEstopReason(r['reason']);
-      emergencyStop(state, reason, { reason: 'estop_command', detail: reason });
+      state.model.emergencyStop(reason);
       return {
         estop: true,
-        estop_reason: state.safety.reason,
-        estop_us: state.safety.latchedUs,
+        estop_reason: state.model.emergencyStopReason,
+        estop_us: state.model.emergencyStopUs,
         ...stopReport(state),
       };
     }
     case 'reset_estop': {
-      const was = state.safety.reset();
+      const was = state.model.resetEmergencyStop();
       return { estop: false, was_estopped: was };
     }
     default:

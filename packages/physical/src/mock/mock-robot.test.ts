@@ -121,4 +121,55 @@ describe('MockRobot', () => {
       expect(robot.position.left).toBe(stopped);
     });
   });
+  describe('the firmware rules (the robot model SimRobot uses too)', () => {
+    it('refuses a move_cm over the step limit before committing its distance: the e-stop latches and the carry is kept', () => {
+      let now = 0;
+      const robot = new MockRobot({ now: () => now, hostTimeoutMs: 10_000 });
+      const sid = openSession(robot);
+      let seq = 1;
+      const send = (request: Record<string, unknown>) =>
+        decode(robot.handle(encode({ ...request, seq: (seq += 1), sid })))!;
+      expect(send({ cmd: 'move_cm', left_cm: 10, right_cm: 10 })).toMatchObject({
+        left_steps: 2172,
+      });
+      now += 5000; // the move is over (about 3.1 s)
+      const refused = send({ cmd: 'move_cm', left_cm: 10, right_cm: 200 });
+      expect(refused['error']).toMatchObject({
+        code: 'RANGE_EXCEEDED',
+        message:
+          '"right_cm" gives 43460 steps; the limit is 40960 steps per command (emergency stop latched)',
+        details: { field: 'right_cm', value: 43460, estop: true },
+      });
+      const status = send({ cmd: 'get_status' });
+      expect(status['safety']).toMatchObject({
+        estop: true,
+        estop_reason: 'step limit: "right_cm" 43460 steps',
+        trips: 1,
+        last_trip: { reason: 'step_limit' },
+      });
+      expect(send({ cmd: 'reset_estop' })).toMatchObject({ ok: true, was_estopped: true });
+      // the 0.99 step carried by the first move is still there: the refused one added nothing
+      expect(send({ cmd: 'move_cm', left_cm: 10, right_cm: 10 })).toMatchObject({
+        left_steps: 2173,
+      });
+    });
+
+    it('refuses a set_config value outside the firmware range by its wire name and changes nothing', () => {
+      const robot = new MockRobot();
+      const sid = openSession(robot);
+      const refused = decode(
+        robot.handle(
+          encode({ cmd: 'set_config', seq: 2, sid, wheel_base_cm: 12, host_timeout_ms: 100 }),
+        ),
+      )!;
+      expect(refused['error']).toMatchObject({
+        code: 'RANGE_EXCEEDED',
+        details: { field: 'host_timeout_ms', min: 500, max: 10_000, value: 100 },
+      });
+      const status = decode(robot.handle(encode({ cmd: 'get_status', seq: 3, sid })))!;
+      expect(status['safety']).toMatchObject({ host_timeout_ms: 2000 });
+      const hello = decode(robot.handle(encode({ cmd: 'hello', seq: 4, nonce: 'm' })))!;
+      expect(hello['config']).toMatchObject({ wheel_base_cm: 10, host_timeout_ms: 2000 });
+    });
+  });
 });

@@ -1,16 +1,15 @@
-import { V1_ROBOT } from '@hal/types';
+import { NOTHING_TO_TOUCH, RobotModel } from '@hal/kinematics';
+import { isHalError, robotConfig } from '@hal/types';
+import type { RobotConfig } from '@hal/types';
 import type { MessageAuthenticator } from '../protocol/auth.js';
-import { deviceGeometry, deviceSettingsOf } from '../protocol/device-config.js';
 import type { TransportFactory } from '../transport/transport.js';
 import { executeCommand, helloData } from './command-handlers.js';
 import { mockTransport } from './mock-transport.js';
 import type { MockTransportOptions } from './mock-transport.js';
-import { MotionState } from './motion-state.js';
 import { Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
 import { RobotClock } from './robot-clock.js';
 import type { RobotState } from './robot-state.js';
-import { SafetyLatch } from './safety-latch.js';
 import { SessionMemory } from './session-memory.js';
 import { envelopeOf, MockWire, NO_ENVELOPE } from './wire.js';
 
@@ -34,9 +33,12 @@ export interface MockRobotOptions {
 }
 
 /**
- * A fast, in-process robot that speaks protocol 1.1 (sessions, exactly-once retries, step-exact
- * motion from the firmware's own planner, odometry, e-stop, host timeout), for unit tests and for
- * trying the library without hardware. Each instance is its own robot: there is no shared state.
+ * A fast, in-process robot that speaks protocol 1.1, for unit tests and for trying the library
+ * without hardware. It is the wire and the session (messages and MACs, sessions and `hello`,
+ * exactly-once retries, the replies' fields) around `@hal/kinematics`' RobotModel, the
+ * simulator's model of the firmware's rules (step-exact motion from the firmware's planner,
+ * odometry, e-stop, step limit, host timeout, set_config ranges): it keeps no rule of its own.
+ * Each instance is its own robot: there is no shared state.
  * Test helpers: `requests` (every request received), `dropReplies(n)`, `unresponsive`,
  * `restart()`.
  */
@@ -59,30 +61,21 @@ export class MockRobot {
     this.deviceId = options.deviceId ?? 'cube-mock';
     this.#wire = new MockWire(options.auth);
     const clock = new RobotClock(options.now ?? (() => performance.now()), options.timeScale ?? 1);
-    const settings = {
-      ...deviceSettingsOf(V1_ROBOT),
-      host_timeout_ms: options.hostTimeoutMs ?? 2000,
-    };
-    const safety = new SafetyLatch();
-    const motion = new MotionState({
-      clock,
-      geometry: deviceGeometry(settings),
-      hostTimeoutMs: () => this.#state.settings.host_timeout_ms,
-      onHostTimeout: () => {
-        const ms = this.#state.settings.host_timeout_ms;
-        safety.trip('host_timeout', `no request for ${ms} ms`, clock.uptimeMs());
-      },
-      onMotionStarted: () => {
-        this.motionsStarted += 1;
-      },
-    });
-    this.#state = { clock, motion, safety, settings, led: { r: 0, g: 0, b: 0, pattern: 'off' } };
+    const config = robotConfig({ hostTimeoutMs: options.hostTimeoutMs ?? 2000 });
+    this.#state = { clock, model: poweredOn(config), led: { r: 0, g: 0, b: 0, pattern: 'off' } };
+  }
+
+  /** The robot model brought up to the robot's clock (finishing or timing out its motion). */
+  #advance(): RobotModel {
+    const { model, clock } = this.#state;
+    model.advanceTo(clock.us());
+    return model;
   }
 
   /** The absolute wheel positions, steps. */
   get position(): { left: number; right: number } {
-    this.#state.motion.advance();
-    return this.#state.motion.position;
+    const model = this.#advance();
+    return { left: model.leftSteps, right: model.rightSteps };
   }
 
   /** The last request received, decoded (undefined before the first). */
@@ -92,7 +85,7 @@ export class MockRobot {
 
   /** Whether the emergency stop is latched. */
   get estopped(): boolean {
-    return this.#state.safety.estopped;
+    return this.#state.model.emergencyStopped;
   }
 
   /** Drops the next `count` requests before they reach the robot (lost requests). */
@@ -105,13 +98,15 @@ export class MockRobot {
     this.#dropReplies += count;
   }
 
-  /** A power cycle: uptime, counters, motion, session and e-stop start over (the configuration is kept). */
+  /**
+   * A power cycle: uptime, counters, motion, session, e-stop and the record of trips start over
+   * (the configuration is kept).
+   */
   restart(): void {
     const state = this.#state;
     state.clock.reboot();
     this.#session.forget();
-    state.motion.restart(deviceGeometry(state.settings));
-    state.safety.reset();
+    state.model = poweredOn(state.model.config);
   }
 
   /** A transport that talks to this robot in-process (through the real codec). */
@@ -139,30 +134,30 @@ export class MockRobot {
 
   /** Handles one request and returns the reply bytes (the protocol logic, no losses). */
   handle(bytes: Uint8Array): Uint8Array {
-    const { motion } = this.#state;
-    motion.advance();
+    const model = this.#advance();
     const request = this.#wire.read(bytes);
     if (request instanceof Refusal) return this.#wire.error(NO_ENVELOPE, request);
     this.requests.push(request);
     const envelope = envelopeOf(request);
     if (envelope.cmd === 'hello') {
-      motion.contact();
+      model.touchHost();
       return this.#hello(request, envelope.seq);
     }
     const admission = this.#session.admit(envelope, this.#wire.authenticated);
     if (admission.kind === 'refuse') return this.#wire.error(envelope, admission.refusal);
     if (admission.kind === 'overtaken') {
-      motion.contact();
+      model.touchHost();
       const refused = this.#wire.error(envelope, admission.refusal);
       this.#session.remember(envelope.seq!, refused);
       return refused;
     }
     if (admission.kind === 'replay') {
-      motion.contact();
+      model.touchHost();
       return admission.reply;
     }
-    if (admission.contact) motion.contact();
+    if (admission.contact) model.touchHost();
     const { seq, sid, cmd } = envelope;
+    const moveBefore = model.motion?.moveId;
     let reply: Uint8Array;
     try {
       reply = this.#wire.reply({
@@ -173,9 +168,9 @@ export class MockRobot {
         ...executeCommand(this.#state, cmd, request),
       });
     } catch (thrown) {
-      if (!(thrown instanceof Refusal)) throw thrown;
-      reply = this.#wire.error(envelope, thrown);
+      reply = this.#wire.error(envelope, refusalOf(thrown));
     }
+    if (model.motion?.moveId !== moveBefore) this.motionsStarted += 1;
     if (admission.remember) this.#session.remember(seq!, reply);
     return reply;
   }
@@ -192,7 +187,7 @@ export class MockRobot {
       );
     }
     const sid = this.#session.open(seq);
-    this.#state.motion.resetAccumulators();
+    this.#state.model.resetAccumulators();
     const reply: Json = { seq, sid, ok: true, cmd: 'hello' };
     if (nonce !== undefined) reply['nonce'] = nonce;
     const scheme = this.#wire.authenticated ? 'hmac-sha256' : 'none';
@@ -201,4 +196,23 @@ export class MockRobot {
     this.#session.openedBy(nonce, seq, bytes);
     return bytes;
   }
+}
+
+/**
+ * A robot just powered on: the firmware's rules over `config`, its host heard only at its
+ * requests (a test's host sends no heartbeat the robot does not receive).
+ */
+function poweredOn(config: RobotConfig): RobotModel {
+  const model = new RobotModel({ config });
+  // nothing to touch, so no step needs a contact check: the steps are walked in bulk
+  model.setContactTest(() => undefined, NOTHING_TO_TOUCH);
+  model.setHostSilent(true);
+  return model;
+}
+
+/** The error reply of a refused command: the wire's own refusal, or the robot model's HalError. */
+function refusalOf(thrown: unknown): Refusal {
+  if (thrown instanceof Refusal) return thrown;
+  if (isHalError(thrown)) return new Refusal(thrown.code, thrown.message, thrown.details ?? {});
+  throw thrown;
 }

@@ -1,32 +1,24 @@
-import type { DeviceSettings } from '../protocol/device-config.js';
-import type { LedState } from '../protocol/schemas.js';
-import type { MotionState } from './motion-state.js';
+import type { RobotModel } from '@hal/kinematics';
+import { HalError } from '@hal/types';
+import type { LedState, MoveOutcome } from '../protocol/schemas.js';
 import type { RobotClock } from './robot-clock.js';
-import type { SafetyLatch } from './safety-latch.js';
 
 /** Everything the mock robot's command handlers read and change. */
 export interface RobotState {
   readonly clock: RobotClock;
-  readonly motion: MotionState;
-  readonly safety: SafetyLatch;
-  /** The current configuration (`set_config` replaces it). */
-  settings: DeviceSettings;
+  /** The firmware's rules: motion, odometry, e-stop, step limit, host timeout, configuration. */
+  model: RobotModel;
   led: LedState;
 }
 
-/**
- * Stops the wheels at once, latches the e-stop and records the trip. While already latched it
- * only stops: the first reason and latch time are kept, and no trip is counted (protocol 1.1).
- */
-export function emergencyStop(
-  state: RobotState,
-  reason: string,
-  trip: { reason: string; detail: string },
-): void {
-  state.motion.stop('estop');
-  if (state.safety.estopped) return;
-  state.safety.latch(reason, state.clock.us());
-  state.safety.trip(trip.reason, trip.detail, state.clock.uptimeMs());
+/** The last motion's outcome as the wire says it ('none' before the first). */
+export function moveOutcome(model: RobotModel): MoveOutcome {
+  const outcome = model.motion?.outcome ?? 'none';
+  // a collision needs a world to touch; the mock robot has none, so its model never reports one
+  if (outcome === 'collision') {
+    throw new HalError('HARDWARE_ERROR', 'the mock robot has nothing to collide with');
+  }
+  return outcome;
 }
 
 /** What a `stop` or `estop` reply reports (protocol 1.1): the motion it ended, and when. */
@@ -40,15 +32,17 @@ export function stopReport(state: RobotState): {
   uptime_us: number;
   stopped_us: number;
 } {
-  const { motion } = state;
+  const { model } = state;
+  const motion = model.motion;
   return {
-    move_id: motion.moveId,
-    move_outcome: motion.outcome,
-    move_left_steps: motion.moveSteps.left,
-    move_right_steps: motion.moveSteps.right,
-    left_steps: motion.position.left,
-    right_steps: motion.position.right,
+    move_id: motion?.moveId ?? 0,
+    move_outcome: moveOutcome(model),
+    move_left_steps: motion?.doneLeft ?? 0,
+    move_right_steps: motion?.doneRight ?? 0,
+    left_steps: model.leftSteps,
+    right_steps: model.rightSteps,
     uptime_us: state.clock.us(),
-    stopped_us: motion.restUs,
+    // when the wheels last came to rest: the end of the last motion (0: never moved)
+    stopped_us: motion?.endedUs ?? 0,
   };
 }

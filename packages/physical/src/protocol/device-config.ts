@@ -1,3 +1,4 @@
+import { FIRMWARE_SETTINGS } from '@hal/kinematics';
 import { robotConfig } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 import type { DeviceConfig } from './schemas.js';
@@ -16,15 +17,19 @@ export interface SettingRange {
   unit: string;
 }
 
-/** Every field `set_config` takes and its range, as the firmware (cube_commands.cpp) checks it. */
-export const DEVICE_SETTING_RANGES: Readonly<Record<keyof DeviceSettings, SettingRange>> = {
-  wheel_diameter_cm: { min: 0.5, max: 50, integer: false, unit: 'cm' },
-  wheel_base_cm: { min: 1, max: 100, integer: false, unit: 'cm' },
-  steps_per_revolution: { min: 100, max: 100_000, integer: true, unit: 'steps' },
-  max_speed_steps_per_s: { min: 1, max: 2048, integer: true, unit: 'steps/s' },
-  acceleration_steps_per_s2: { min: 1, max: 100_000, integer: true, unit: 'steps/s^2' },
-  host_timeout_ms: { min: 500, max: 10_000, integer: true, unit: 'ms' },
-};
+/**
+ * Every field `set_config` takes and its range, by its wire name: the firmware's ranges
+ * (cube_commands.cpp), as `@hal/kinematics`' robot model holds them (`FIRMWARE_SETTINGS`).
+ */
+export const DEVICE_SETTING_RANGES: Readonly<Record<keyof DeviceSettings, SettingRange>> =
+  Object.freeze(
+    Object.fromEntries(
+      FIRMWARE_SETTINGS.map(({ field, min, max, integer, unit }) => [
+        field,
+        { min, max, integer, unit },
+      ]),
+    ) as Record<keyof DeviceSettings, SettingRange>,
+  );
 
 /** The wheel geometry of a device configuration, as the step math (`@hal/kinematics`) takes it. */
 export function deviceGeometry(

@@ -106,7 +106,8 @@ describe('SimRobot', () => {
       const error = thrown(() => robot.moveCm(200, 200));
       expect(isHalError(error) && error.code).toBe('RANGE_EXCEEDED');
       expect(robot.emergencyStopped).toBe(true);
-      expect(robot.emergencyStopReason).toBe('step_limit');
+      // the firmware's reason, word for word (cube_motion_commands.cpp)
+      expect(robot.emergencyStopReason).toBe('step limit: "left_cm" 43459 steps');
       expect(robot.lastTrip?.reason).toBe('step_limit');
       const refused = thrown(() => robot.moveCm(1, 1));
       expect(isHalError(refused) && refused.code).toBe('EMERGENCY_STOPPED');
@@ -158,6 +159,22 @@ describe('SimRobot', () => {
       expect(robot.drive(0, 0)).toBeUndefined();
       expect(robot.running).toBe(false);
       expect(robot.motion?.outcome).toBe('stopped');
+    });
+  });
+
+  describe('#setConfig', () => {
+    it("refuses a setting outside the firmware's range with RANGE_EXCEEDED and keeps the configuration and the carry", () => {
+      const robot = new SimRobot({ id: 'r' });
+      robot.moveCm(10, 10); // carries 0.99 of a step per wheel
+      runToEnd(robot);
+      const error = thrown(() => robot.setConfig({ wheelBaseCm: 12, wheelDiameterCm: 80 }));
+      expect(isHalError(error) && error.code).toBe('RANGE_EXCEEDED');
+      expect(isHalError(error) && error.details).toMatchObject({
+        field: 'wheelDiameterCm',
+        max: 50,
+      });
+      expect(robot.config).toEqual(robotConfig());
+      expect(robot.moveCm(10, 10).report.plannedLeft).toBe(2173);
     });
   });
 

@@ -1,24 +1,16 @@
-import { rotationArcCm } from '@hal/kinematics';
-import { HalError, normalizeAngle, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
+import { RobotModel } from '@hal/kinematics';
+import { normalizeAngle, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
-import type { ContactTest, FreeSpaceTest } from './contact.js';
-import { MotionExecutor } from './motion-executor.js';
-import type { MotionHandle, MotionReport } from './motion-report.js';
-import { RobotSafety } from './robot-safety.js';
-import type { SafetyTrip } from './robot-safety.js';
-import { clampDriveSpeeds, clampSpeed, requireFinite } from './speed-limits.js';
-import { WheelAccumulator } from './wheel-accumulator.js';
+import type { Contact, ContactTest, FreeSpaceTest } from './contact.js';
+import type { MotionHandle, MotionReport, SafetyTrip } from './motion-report.js';
 
 /*
- * The simulated V1 stepper cube, as its firmware moves it (docs/protocol.md section 5): the same
- * commands (move_steps, move_cm, rotate_deg, drive, stop, estop, reset_estop, set_config), the
- * same per-wheel step accumulators, the same discrete step planner (@hal/kinematics MovePlan and
- * VelocityPlan: master on the trapezoidal profile, slave by Bresenham), the same limits (speed
- * clamp, 40960 steps per command with an e-stop trip), the same host timeout, and odometry by
- * the firmware's formula. The world advances it on its clock and tells it what it touches.
- *
- * This file is the command layer; the motion state and step execution are a MotionExecutor, the
- * e-stop, step limit and host timeout a RobotSafety.
+ * The simulated V1 stepper cube, as its firmware moves it (docs/protocol.md section 5): the
+ * firmware's rules are @hal/kinematics' RobotModel (the commands, the step accumulators, the step
+ * planner, whole-step odometry, the speed clamp, the 40960-step limit with its e-stop trip, the
+ * host timeout, the set_config ranges), the one model the in-process mock robot of
+ * @hal/physical uses too. This file binds it to a world: the world advances it on its clock and
+ * tells it what it touches; every command counts as the host being heard.
  *
  * In a world, the robot is advanced only at its events (a step that must be checked for contact,
  * the end of a motion, the host timeout: see `nextEventUs`); between them, reading its state or
@@ -56,30 +48,20 @@ export class SimRobot {
   readonly id: string;
   /** Footprint radius, metres. */
   readonly radius: number;
-  #config: RobotConfig;
-  #perCm: number;
-  #nowUs = 0;
   #led: LedState = { r: 0, g: 0, b: 0, pattern: 'off' };
-  readonly #motions: MotionExecutor;
-  readonly #safety: RobotSafety;
-  readonly #accLeft: WheelAccumulator;
-  readonly #accRight: WheelAccumulator;
+  readonly #model: RobotModel<Contact>;
   #scheduler: RobotScheduler | undefined;
 
   constructor(options: SimRobotOptions) {
     this.id = options.id;
     this.radius = options.radius ?? 0.07;
-    this.#config = options.config ?? V1_ROBOT;
-    this.#perCm = stepsPerCm(this.#config);
     const start = options.start ?? { x: 0, y: 0, yaw: 0 };
-    const pose = { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) };
-    this.#motions = new MotionExecutor(pose, this.radius, () => this.#scheduler?.reschedule(false));
-    this.#safety = new RobotSafety({
-      nowUs: () => this.#nowUs,
-      stopMotion: (outcome) => this.#motions.finish(outcome, this.#nowUs),
+    this.#model = new RobotModel<Contact>({
+      config: options.config ?? V1_ROBOT,
+      start: { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) },
+      radiusM: this.radius,
+      onMotionChange: () => this.#scheduler?.reschedule(false),
     });
-    this.#accLeft = new WheelAccumulator(() => this.#config);
-    this.#accRight = new WheelAccumulator(() => this.#config);
   }
 
   /**
@@ -87,7 +69,7 @@ export class SimRobot {
    * (without it every step is checked).
    */
   setContactTest(test: ContactTest, freeSpace?: FreeSpaceTest): void {
-    this.#motions.setContactTest(test, freeSpace);
+    this.#model.setContactTest(test, freeSpace);
   }
 
   /** The world sets its clock and is told when the robot's next event may have moved. */
@@ -97,18 +79,14 @@ export class SimRobot {
 
   /** Forgets the room last measured (the world changed around the robot). */
   invalidateRoom(): void {
-    this.#motions.invalidateRoom();
+    this.#model.invalidateRoom();
   }
 
   /** Brings the robot up to the world's clock with the steps that need no check. */
-  #catchUp(): void {
+  #catchUp(): RobotModel<Contact> {
     const scheduler = this.#scheduler;
-    if (scheduler === undefined) return;
-    const now = scheduler.nowUs();
-    if (now > this.#nowUs) {
-      this.#motions.catchUp(now);
-      this.#nowUs = now;
-    }
+    if (scheduler !== undefined) this.#model.catchUp(scheduler.nowUs());
+    return this.#model;
   }
 
   /**
@@ -116,9 +94,7 @@ export class SimRobot {
    * its motion, or a silent host's timeout; Infinity at rest.
    */
   get nextEventUs(): number {
-    const motion = this.#motions.nextEventUs;
-    if (motion === Number.POSITIVE_INFINITY) return motion;
-    return Math.min(motion, this.#safety.silentDeadlineUs(this.#config.hostTimeoutMs));
+    return this.#model.nextEventUs;
   }
 
   /**
@@ -126,104 +102,93 @@ export class SimRobot {
    * running motion's, if it started under a higher limit.
    */
   get maxSpeedMps(): number {
-    const running = this.#motions.running ? (this.#motions.motion?.speed ?? 0) : 0;
-    return Math.max(this.#config.maxSpeedStepsPerS, running) / this.#perCm / 100;
+    const model = this.#model;
+    const running = model.running ? (model.motion?.speed ?? 0) : 0;
+    return Math.max(model.config.maxSpeedStepsPerS, running) / model.stepsPerCm / 100;
   }
 
   /** Length of one wheel step, metres. */
   get stepLengthM(): number {
-    return 1 / this.#perCm / 100;
+    return 1 / this.#model.stepsPerCm / 100;
   }
 
   /** Centre, metres, as last integrated (without catching up), and when, µs. */
   get settledX(): number {
-    return this.#motions.xCm / 100;
+    return this.#model.xCm / 100;
   }
   get settledY(): number {
-    return this.#motions.yCm / 100;
+    return this.#model.yCm / 100;
   }
   get settledUs(): number {
-    return this.#nowUs;
+    return this.#model.nowUs;
   }
 
   get config(): RobotConfig {
-    return this.#config;
+    return this.#model.config;
   }
   /** The robot's simulated time, µs. */
   get nowUs(): number {
-    this.#catchUp();
-    return this.#nowUs;
+    return this.#catchUp().nowUs;
   }
   /** Pose, metres and radians (REP-103). */
   get x(): number {
-    this.#catchUp();
-    return this.#motions.xCm / 100;
+    return this.#catchUp().xCm / 100;
   }
   get y(): number {
-    this.#catchUp();
-    return this.#motions.yCm / 100;
+    return this.#catchUp().yCm / 100;
   }
   get yaw(): number {
-    this.#catchUp();
-    return this.#motions.pose.headingRad;
+    return this.#catchUp().pose.headingRad;
   }
   /** Absolute wheel positions since the start, steps. */
   get leftSteps(): number {
-    this.#catchUp();
-    return this.#motions.leftSteps;
+    return this.#catchUp().leftSteps;
   }
   get rightSteps(): number {
-    this.#catchUp();
-    return this.#motions.rightSteps;
+    return this.#catchUp().rightSteps;
   }
   get running(): boolean {
-    return this.#motions.running;
+    return this.#model.running;
   }
   /** The running motion, or the last one. */
   get motion(): MotionReport | undefined {
-    this.#catchUp();
-    return this.#motions.motion;
+    return this.#catchUp().motion;
   }
   get emergencyStopped(): boolean {
-    return this.#safety.emergencyStopped;
+    return this.#model.emergencyStopped;
   }
   get emergencyStopReason(): string {
-    return this.#safety.emergencyStopReason;
+    return this.#model.emergencyStopReason;
   }
   get trips(): number {
-    return this.#safety.trips;
+    return this.#model.trips;
   }
   get lastTrip(): SafetyTrip | undefined {
-    return this.#safety.lastTrip;
+    return this.#model.lastTrip;
   }
   get led(): LedState {
     return { ...this.#led };
   }
   /** Whether the host is (simulated as) silent: no heartbeats between commands. */
   get hostSilent(): boolean {
-    return this.#safety.hostSilent;
+    return this.#model.hostSilent;
   }
 
   /** Current signed wheel speeds, steps/s (0 at rest). */
   wheelSpeeds(atUs = this.nowUs): { left: number; right: number } {
-    return this.#motions.wheelSpeeds(atUs);
+    return this.#model.wheelSpeeds(atUs);
   }
 
   /** Linear (m/s) and angular (rad/s) velocity of the robot's centre. */
   velocity(atUs = this.nowUs): { linear: number; angular: number } {
-    if (!this.#motions.running) return { linear: 0, angular: 0 };
-    const w = this.wheelSpeeds(atUs);
-    const l = w.left / this.#perCm;
-    const r = w.right / this.#perCm;
-    return { linear: (l + r) / 200, angular: (r - l) / this.#config.wheelBaseCm };
+    return this.#model.velocity(atUs);
   }
 
   // ---- host link -------------------------------------------------------------------------
 
   /** A valid request from the host arrived now (every command counts; so do heartbeats). */
   touchHost(): void {
-    this.#catchUp();
-    this.#safety.touchHost();
+    this.#catchUp().touchHost();
   }
 
   /**
@@ -231,37 +196,16 @@ export class SimRobot {
    * host timeout) or speaks again (false).
    */
   setHostSilent(silent: boolean): void {
-    this.#catchUp();
-    this.#safety.setHostSilent(silent);
+    this.#catchUp().setHostSilent(silent);
     this.#scheduler?.reschedule(false);
   }
 
-  // ---- firmware commands -------------------------------------------------------------------
+  // ---- firmware commands (each is a request: the host is heard first) --------------------
 
   /** `move_steps`: whole signed steps per wheel. Does not touch the accumulators. */
   moveSteps(left: number, right: number, speed?: number): MotionHandle {
     this.touchHost();
-    this.#safety.refuseWhileLatched();
-    for (const [field, value] of [
-      ['left', left],
-      ['right', right],
-    ] as const) {
-      if (!Number.isInteger(value)) {
-        throw new HalError('INVALID_PARAMETER', `"${field}" must be an integer`, {
-          details: { field, value },
-        });
-      }
-    }
-    const used = clampSpeed(speed, this.#config.maxSpeedStepsPerS);
-    this.#safety.checkStepLimit(left, right, this.#config.maxStepsPerCommand);
-    return this.#motions.startMove(
-      left,
-      right,
-      used.speed,
-      used.clamped,
-      this.#nowUs,
-      this.#config,
-    );
+    return this.#model.moveSteps(left, right, speed);
   }
 
   /**
@@ -270,34 +214,14 @@ export class SimRobot {
    * accumulators, the motion and the safety state as they were.
    */
   moveCm(leftCm: number, rightCm: number, speed?: number): MotionHandle {
-    requireFinite('left_cm', leftCm);
-    requireFinite('right_cm', rightCm);
     this.touchHost();
-    this.#safety.refuseWhileLatched();
-    const used = clampSpeed(speed, this.#config.maxSpeedStepsPerS);
-    const left = this.#accLeft.add(leftCm);
-    const right = this.#accRight.add(rightCm);
-    try {
-      this.#safety.checkStepLimit(left, right, this.#config.maxStepsPerCommand);
-    } catch (error) {
-      this.#accLeft.undo();
-      this.#accRight.undo();
-      throw error;
-    }
-    return this.#motions.startMove(
-      left,
-      right,
-      used.speed,
-      used.clamped,
-      this.#nowUs,
-      this.#config,
-    );
+    return this.#model.moveCm(leftCm, rightCm, speed);
   }
 
   /** `rotate_deg`: turn in place; positive degrees counter-clockwise (left wheel backwards). */
   rotateDeg(degrees: number, speed?: number): MotionHandle {
-    const arc = rotationArcCm(degrees, this.#config);
-    return this.moveCm(-arc, arc, speed);
+    this.touchHost();
+    return this.#model.rotateDeg(degrees, speed);
   }
 
   /**
@@ -306,59 +230,44 @@ export class SimRobot {
    * a stop, a new motion, an e-stop or the host timeout. Both 0: stops and returns undefined.
    */
   drive(leftSps: number, rightSps: number, durationMs?: number): MotionHandle | undefined {
-    requireFinite('left_sps', leftSps);
-    requireFinite('right_sps', rightSps);
-    if (durationMs !== undefined) requireFinite('duration_ms', durationMs, { positive: true });
     this.touchHost();
-    this.#safety.refuseWhileLatched();
-    const { left, right, clamped } = clampDriveSpeeds(
-      leftSps,
-      rightSps,
-      this.#config.maxSpeedStepsPerS,
-    );
-    if (left === 0 && right === 0) {
-      this.#motions.finish('stopped', this.#nowUs);
-      return undefined;
-    }
-    return this.#motions.startDrive(left, right, durationMs, clamped, this.#nowUs, this.#config);
+    return this.#model.drive(leftSps, rightSps, durationMs);
   }
 
   /** `stop`: stops any motion at once. Returns whether one was running. Always accepted. */
   stop(): boolean {
     this.touchHost();
-    return this.#motions.finish('stopped', this.#nowUs);
+    return this.#model.stop();
   }
 
   /** `estop`: stops at once and latches until {@link resetEmergencyStop}. */
   emergencyStop(reason = 'estop command'): void {
     this.touchHost();
-    this.#safety.emergencyStop(reason);
+    this.#model.emergencyStop(reason);
   }
 
   /** `reset_estop`: clears the latch. Returns whether it was latched. */
   resetEmergencyStop(): boolean {
     this.touchHost();
-    return this.#safety.reset();
+    return this.#model.resetEmergencyStop();
   }
 
-  /** `set_config`: applies to the next motion; resets the distance accumulators. */
+  /**
+   * `set_config`: the firmware's settings are checked against its ranges (RANGE_EXCEEDED,
+   * nothing changed); applies to the next motion; resets the distance accumulators.
+   */
   setConfig(overrides: Partial<RobotConfig>): RobotConfig {
     this.touchHost();
-    this.#config = robotConfig({ ...this.#config, ...overrides });
-    this.#perCm = stepsPerCm(this.#config);
-    this.#motions.reconfigure(this.#config);
+    const config = this.#model.setConfig(overrides);
     // A new top speed or geometry changes how fast this robot can reach the others.
     this.#scheduler?.reschedule(true);
-    this.#accLeft.reset();
-    this.#accRight.reset();
-    return this.#config;
+    return config;
   }
 
   /** `hello`: a host opens a session; the distance accumulators are reset (nothing else changes). */
   hello(): void {
     this.touchHost();
-    this.#accLeft.reset();
-    this.#accRight.reset();
+    this.#model.resetAccumulators();
   }
 
   /** `set_led`. */
@@ -374,19 +283,11 @@ export class SimRobot {
    * the host timeout or a contact, whichever comes first) and integrates odometry.
    */
   advanceTo(nowUs: number): void {
-    const config = this.#config;
-    if (nowUs < this.#nowUs) nowUs = this.#nowUs;
-    const timeoutUs = this.#safety.hostTimeoutBy(nowUs, config.hostTimeoutMs);
-    const outcome = this.#motions.advanceTo(timeoutUs ?? nowUs);
-    if (outcome === 'running' && timeoutUs !== undefined) {
-      this.#nowUs = Math.min(this.#motions.endUs, timeoutUs);
-      this.#safety.hostTimedOut(config.hostTimeoutMs);
-    }
-    this.#nowUs = nowUs;
+    this.#model.advanceTo(nowUs);
   }
 
   /** When the running motion's next event (its end) is due, µs, or Infinity. */
   get motionEndUs(): number {
-    return this.#motions.endUs;
+    return this.#model.motionEndUs;
   }
 }

@@ -8,7 +8,7 @@ import { HalError } from '@hal/types';
 export function requireFinite(
   field: string,
   value: number,
-  options: { positive?: boolean } = {},
+  options: { positive?: boolean; max?: number } = {},
 ): void {
   if (typeof value !== 'number' || !Number.isFinite(value)) {
     throw new HalError('INVALID_PARAMETER', `"${field}" must be a finite number, got ${value}`, {
@@ -20,7 +20,19 @@ export function requireFinite(
       details: { field, min: 0, value },
     });
   }
+  if (options.max !== undefined && value > options.max) {
+    throw new HalError(
+      'RANGE_EXCEEDED',
+      `"${field}" must be at most ${options.max}, got ${value}`,
+      {
+        details: { field, max: options.max, value },
+      },
+    );
+  }
 }
+
+/** The longest `drive` the firmware accepts, ms (cube_motion_commands.cpp). */
+export const MAX_DRIVE_DURATION_MS = 600_000;
 
 /** Wheel speed limits the firmware applies to a requested cruise speed, steps/s. */
 export function clampSpeed(

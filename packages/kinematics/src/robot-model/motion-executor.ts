@@ -1,19 +1,20 @@
-import { MovePlan, VelocityPlan } from '@hal/kinematics';
-import type { PlanarPoseCm, StepPlan } from '@hal/kinematics';
 import type { RobotConfig } from '@hal/types';
-import { blockingContact } from './contact.js';
-import type { ContactTest, FreeSpaceTest } from './contact.js';
+import type { PlanarPoseCm } from '../odometry.js';
+import { MovePlan, VelocityPlan } from '../planner.js';
+import type { StepPlan } from '../planner.js';
+import { blockingContact } from './step-contact.js';
+import type { ContactTest, FreeSpaceTest, StepContact } from './step-contact.js';
 import type { MotionHandle, MotionReport, MoveOutcome } from './motion-report.js';
 import { StepOdometry } from './step-odometry.js';
 
-interface RunningMotion {
+interface RunningMotion<C extends StepContact> {
   plan: StepPlan;
-  report: MotionReport;
+  report: MotionReport<C>;
   /** Stop at this elapsed time, µs (a move's last step, a drive's duration, or Infinity). */
   limitUs: number;
   /** Master steps the motion makes before its limit (Infinity for an endless drive). */
   lastStep: number;
-  settle: (report: MotionReport) => void;
+  settle: (report: MotionReport<C>) => void;
 }
 
 type MotionFields = Pick<
@@ -35,15 +36,15 @@ const CLEARANCE_MARGIN_M = 1e-9;
  * it), and the steps that stay within that room are taken unchecked; the first step beyond it is
  * checked, and not taken if it would bring the footprint into contact, as before.
  */
-export class MotionExecutor {
+export class MotionExecutor<C extends StepContact = StepContact> {
   /** Footprint radius, metres. */
   readonly #radius: number;
   readonly #onChange: () => void;
-  #contactTest: ContactTest = () => undefined;
+  #contactTest: ContactTest<C> = () => undefined;
   #freeSpace: FreeSpaceTest | undefined;
   readonly #odometry: StepOdometry;
-  #motion: RunningMotion | undefined;
-  #last: MotionReport | undefined;
+  #motion: RunningMotion<C> | undefined;
+  #last: MotionReport<C> | undefined;
   #nextMoveId = 1;
   /** The first master step of the running motion that must be checked for contact. */
   #checkStep = 1;
@@ -60,7 +61,7 @@ export class MotionExecutor {
    * How the robot learns what it touches, and (optionally) how much room it has; without
    * `freeSpace` every step is checked.
    */
-  setContactTest(test: ContactTest, freeSpace?: FreeSpaceTest): void {
+  setContactTest(test: ContactTest<C>, freeSpace?: FreeSpaceTest): void {
     this.#contactTest = test;
     this.#freeSpace = freeSpace;
     this.invalidateRoom();
@@ -92,7 +93,7 @@ export class MotionExecutor {
     return this.#motion !== undefined;
   }
   /** The running motion, or the last one. */
-  get motion(): MotionReport | undefined {
+  get motion(): MotionReport<C> | undefined {
     return this.#motion?.report ?? this.#last;
   }
   /** When the running motion's end is due, µs, or Infinity. */
@@ -128,7 +129,7 @@ export class MotionExecutor {
     clamped: boolean,
     nowUs: number,
     config: RobotConfig,
-  ): MotionHandle {
+  ): MotionHandle<C> {
     const plan = new MovePlan(left, right, speed, config.accelerationStepsPerS2);
     return this.#start(plan, plan.durationUs, nowUs, config, {
       kind: 'move',
@@ -149,7 +150,7 @@ export class MotionExecutor {
     clamped: boolean,
     nowUs: number,
     config: RobotConfig,
-  ): MotionHandle {
+  ): MotionHandle<C> {
     const plan = new VelocityPlan(left, right, config.accelerationStepsPerS2);
     const limitUs = durationMs === undefined ? Number.POSITIVE_INFINITY : durationMs * 1000;
     return this.#start(plan, limitUs, nowUs, config, {
@@ -222,13 +223,13 @@ export class MotionExecutor {
   }
 
   /** Master steps made by `elapsed`: a drive makes only those due strictly before its limit. */
-  #stepsBy(m: RunningMotion, elapsed: number): number {
+  #stepsBy(m: RunningMotion<C>, elapsed: number): number {
     if (elapsed <= 0) return 0;
     if (m.report.kind === 'drive' && elapsed >= m.limitUs) return m.lastStep;
     return m.plan.masterStepsAt(elapsed);
   }
 
-  #walk(m: RunningMotion, k: number): void {
+  #walk(m: RunningMotion<C>, k: number): void {
     const odometry = this.#odometry;
     const left = odometry.left;
     const right = odometry.right;
@@ -238,7 +239,7 @@ export class MotionExecutor {
   }
 
   /** The next step, checked: taken (true), or the motion ends in a collision (false). */
-  #checkedStep(m: RunningMotion): boolean {
+  #checkedStep(m: RunningMotion<C>): boolean {
     const odometry = this.#odometry;
     const k = odometry.masterSteps + 1;
     const atUs = m.report.startedUs + m.plan.masterStepTimeUs(k);
@@ -256,7 +257,7 @@ export class MotionExecutor {
   }
 
   /** After step k (at `atUs`): which later steps are sure to touch nothing. */
-  #measureRoom(m: RunningMotion, k: number, atUs: number): void {
+  #measureRoom(m: RunningMotion<C>, k: number, atUs: number): void {
     if (this.#freeSpace === undefined) {
       this.#checkStep = k + 1;
       return;
@@ -289,9 +290,9 @@ export class MotionExecutor {
     nowUs: number,
     config: RobotConfig,
     fields: MotionFields,
-  ): MotionHandle {
+  ): MotionHandle<C> {
     this.finish('replaced', nowUs);
-    const report: MotionReport = {
+    const report: MotionReport<C> = {
       moveId: this.#nextMoveId,
       ...fields,
       durationUs: limitUs,
@@ -302,8 +303,8 @@ export class MotionExecutor {
       outcome: 'running',
     };
     this.#nextMoveId += 1;
-    let settle: (r: MotionReport) => void = () => undefined;
-    const finished = new Promise<MotionReport>((resolve) => {
+    let settle: (r: MotionReport<C>) => void = () => undefined;
+    const finished = new Promise<MotionReport<C>>((resolve) => {
       settle = resolve;
     });
     const lastStep =

@@ -1,5 +1,7 @@
-import { getStepsPerCm, integrateOdometry } from '@hal/kinematics';
-import type { PlanarPoseCm, StepPlan } from '@hal/kinematics';
+import { getStepsPerCm } from '../geometry.js';
+import { integrateOdometry } from '../odometry.js';
+import type { PlanarPoseCm } from '../odometry.js';
+import type { StepPlan } from '../planner.js';
 import { normalizeAngle } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 

@@ -1,4 +1,4 @@
-import { StepAccumulator } from '@hal/kinematics';
+import { StepAccumulator } from '../steps.js';
 import type { RobotConfig } from '@hal/types';
 
 /**

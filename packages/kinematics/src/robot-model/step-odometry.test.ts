@@ -1,4 +1,5 @@
-import { integrateOdometry, MovePlan, VelocityPlan } from '@hal/kinematics';
+import { integrateOdometry } from '../odometry.js';
+import { MovePlan, VelocityPlan } from '../planner.js';
 import { V1_ROBOT } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { StepOdometry } from './step-odometry.js';
