@@ -33,6 +33,8 @@ export interface RecordingPanelState {
   recording: boolean;
   /** Messages written into the running recording (0 when none runs). */
   written: number;
+  /** Camera frames captured into the running recording. */
+  framesCaptured: number;
   message: string;
   playback: null | {
     name: string;
@@ -116,6 +118,7 @@ export class RecordingPanel {
     return {
       recording: this.sessions.recording,
       written: this.sessions.stats()?.written ?? 0,
+      framesCaptured: this.sessions.capturedFrames(),
       message: this.#message.textContent ?? '',
       playback:
         playback === undefined

@@ -25,6 +25,7 @@ describe('SessionRecorder', () => {
     const deadline = Date.now() + 10_000;
     while (captured < 2 && Date.now() < deadline) await new Promise((r) => setTimeout(r, 10));
     expect(captured).toBeGreaterThanOrEqual(2);
+    expect(sessions.capturedFrames()).toBeGreaterThanOrEqual(2);
     const { bytes, stats, fileName } = await sessions.stop();
     expect(sessions.recording).toBe(false);
     expect(sessions.halFor(hal)).toBe(hal);

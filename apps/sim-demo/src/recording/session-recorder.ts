@@ -18,6 +18,8 @@ interface Active {
   sink: ReturnType<typeof memorySink>;
   stopSampling: AbortController;
   camera: ReturnType<typeof setInterval>;
+  /** Camera frames captured through the recorded HAL so far. */
+  frames: number;
   startedAt: Date;
 }
 
@@ -44,6 +46,11 @@ export class SessionRecorder {
   /** Messages written and dropped so far (undefined when not recording). */
   stats(): RecorderStats | undefined {
     return this.#active?.recorder.stats();
+  }
+
+  /** Camera frames captured into the running recording (0 when none runs). */
+  capturedFrames(): number {
+    return this.#active?.frames ?? 0;
   }
 
   /** The HAL the page should call for `hal`: the recorded one while `hal` is being recorded. */
@@ -80,11 +87,24 @@ export class SessionRecorder {
       if (capturing) return;
       capturing = true;
       recorded.vision.captureFrame().then(
-        () => (capturing = false),
+        () => {
+          capturing = false;
+          active.frames += 1;
+        },
         () => (capturing = false),
       );
     }, this.#cameraPeriodMs);
-    return { hal, recorded, recorder, sink, stopSampling, camera, startedAt: new Date() };
+    const active: Active = {
+      hal,
+      recorded,
+      recorder,
+      sink,
+      stopSampling,
+      camera,
+      frames: 0,
+      startedAt: new Date(),
+    };
+    return active;
   }
 
   /** Ends the recording and hands back the file. */
