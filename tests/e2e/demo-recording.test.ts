@@ -2,10 +2,12 @@
 // record a drive and download it as MCAP, then read the file back in Node with @mcap/core's
 // reader (through @hal/recorder); load a file recorded in Node (recordHal over SimulationHAL)
 // into the page and check that the scene's robot follows its poses and the camera panel shows
-// its frames; and see files that cannot be played refused on the card.
-import { mkdtempSync, rmSync } from 'node:fs';
+// its frames (a screenshot of it goes to artifacts/demo-playback.png); and see files that
+// cannot be played refused on the card.
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import {
   COMPRESSED_IMAGE,
   McapRecorder,
@@ -20,6 +22,8 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { openDemoInChromium } from './demo-browser.js';
 import type { DemoBrowser } from './demo-browser.js';
+
+const artifacts = fileURLToPath(new URL('../../artifacts', import.meta.url));
 
 interface RecordingState {
   recording: boolean;
@@ -234,6 +238,8 @@ describe("the demo's recording, in Chromium", () => {
       { timeout: 5_000 },
     );
     await expect(page.locator('#playback-frame').isVisible()).resolves.toBe(true);
+    mkdirSync(artifacts, { recursive: true });
+    await page.screenshot({ path: join(artifacts, 'demo-playback.png') });
 
     // played from 1.5 s before the end, it runs to the end and stops on the last pose
     const duration = loaded?.durationMs ?? 0;

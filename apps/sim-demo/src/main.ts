@@ -56,6 +56,8 @@ const recording = new RecordingPanel(element('recording-card'), {
   cameraCanvas: element<HTMLCanvasElement>('camera-view'),
   status,
   onPlaybackChange: (playing) => {
+    // the live robots' labels go with their hidden models
+    document.body.classList.toggle('playing-back', playing);
     if (!playing) return;
     // The live robot is left as it was: no goal goes on, no key drives it.
     void goals.cancel();
