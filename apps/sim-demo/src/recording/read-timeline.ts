@@ -2,7 +2,7 @@ import { readRecording, TOPICS } from '@hal/recorder';
 import type { RecordedMessage, Recording } from '@hal/recorder';
 import { PoseSchema } from '@hal/types';
 import { RecordingFileError } from './recording-file-error.js';
-import type { PlaybackTimeline, TimedPose } from './timeline.js';
+import type { PlaybackTimeline, TimedFrame, TimedPose } from './timeline.js';
 
 /*
  * Reads an MCAP file into a time line with @hal/recorder's reader (@mcap/core). The demo loads
