@@ -21,7 +21,9 @@ describe("the browser's zstd stand-in", () => {
       expect(original.byteLength).toBe(size);
       const packed = wasmZstd.compress(original, 3);
       expect(packed.byteLength).toBeLessThan(Math.max(original.byteLength, 64));
-      expect(decompress(packed, original.byteLength)).toEqual(original);
+      const out = decompress(packed, original.byteLength);
+      // Buffer's compare, not toEqual: a deep equality of 300 kB takes seconds
+      expect(Buffer.from(out).equals(Buffer.from(original))).toBe(true);
     }
   });
 
