@@ -49,7 +49,7 @@ describe('SessionRecorder', () => {
       name: 'obstacles',
     });
     await hal.cleanup();
-  });
+  }, 30_000); // frames rendered in software: seconds on a loaded machine
 
   it('refuses a second recording while one runs, and a stop with none running', async () => {
     const hal = new SimulationHAL();
