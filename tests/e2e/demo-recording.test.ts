@@ -119,6 +119,7 @@ describe("the demo's recording, in Chromium", () => {
       { timeout: 10_000 },
     );
     await expect(page.locator('#recording-badge').textContent()).resolves.toBe('REC');
+    expect((await state()).message).toMatch(/^Recording sim-robot-1 \(only this robot\)/);
 
     // drive forward with the keyboard, then let go
     await page.locator('#viewport > canvas').focus();

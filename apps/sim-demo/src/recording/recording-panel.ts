@@ -153,8 +153,11 @@ export class RecordingPanel {
     try {
       if (this.sessions.recording) await this.#finishRecording();
       else {
-        await this.sessions.start(this.#options.selectedHal(), this.#options.mapName());
-        this.#say('Recording the selected robot: drive it, then "Stop & download MCAP".');
+        const hal = this.#options.selectedHal();
+        await this.sessions.start(hal, this.#options.mapName());
+        this.#say(
+          `Recording ${hal.getDeviceInfo().id} (only this robot): drive it, then "Stop & download MCAP".`,
+        );
       }
     } catch (error) {
       this.#say(`The recording failed: ${messageOf(error)}`, true);
