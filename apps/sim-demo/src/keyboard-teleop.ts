@@ -9,6 +9,8 @@ export interface KeyboardTeleopOptions {
   goals: GoalDriver;
   log: ResultsLog;
   status: StatusLine;
+  /** While this answers true (a recording playing back), keys do not drive. */
+  paused?: () => boolean;
 }
 
 function keyName(e: KeyboardEvent): string {
@@ -58,7 +60,7 @@ export class KeyboardTeleop {
   }
 
   #keyDown(e: KeyboardEvent): void {
-    if (e.target instanceof HTMLSelectElement) return;
+    if (e.target instanceof HTMLSelectElement || this.#options.paused?.() === true) return;
     const key = keyName(e);
     if (key === ' ') {
       e.preventDefault();

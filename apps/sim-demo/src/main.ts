@@ -17,6 +17,8 @@ import { RobotRoster } from './robots/roster.js';
 import { selectedHal } from './robots/selected-hal.js';
 import { StatusLine } from './status-line.js';
 import { TelemetryPanel } from './telemetry-panel.js';
+import { RecordingPanel } from './recording/recording-panel.js';
+import { SessionRecorder } from './recording/session-recorder.js';
 import { RemotePanel } from './remote-panel.js';
 import { readUrlSettings } from './url-settings.js';
 import { Viewport } from './viewport.js';
@@ -35,14 +37,33 @@ const colors = new Map<string, string>();
 const scene = new WorldScene(world, { showRangeRays: true, robotColor: (id) => colors.get(id) });
 const robotCamera = createThreeFrameSource(scene, { canvas: element('camera-view') });
 const roster = await RobotRoster.create({ world, frameSource: robotCamera.frameSource });
-// Every robot has its own HAL; the panels hold this one, which is always the selected robot's.
-const hal = selectedHal(() => roster.selected.hal);
+// Every robot has its own HAL; the panels hold this one, which is always the selected robot's
+// (through its recorder while the Recording card records it).
+const sessions = new SessionRecorder();
+const hal = selectedHal(() => sessions.halFor(roster.selected.hal));
 
 // ---- the panels ----------------------------------------------------------------------------------
 
 const viewport = new Viewport(element('viewport'), world, () => hal.robot);
 const status = new StatusLine(element('status'));
 const log = new ResultsLog(element('log'));
+let currentMap: string = mapName;
+const recording = new RecordingPanel(element('recording-card'), {
+  sessions,
+  scene,
+  selectedHal: () => roster.selected.hal,
+  mapName: () => currentMap,
+  cameraCanvas: element<HTMLCanvasElement>('camera-view'),
+  status,
+  onPlaybackChange: (playing) => {
+    // the live robots' labels go with their hidden models
+    document.body.classList.toggle('playing-back', playing);
+    if (!playing) return;
+    // The live robot is left as it was: no goal goes on, no key drives it.
+    void goals.cancel();
+    teleop.releaseKeys();
+  },
+});
 
 const planToggle = element<HTMLInputElement>('plan-toggle');
 const gridToggle = element<HTMLInputElement>('grid-toggle');
@@ -58,14 +79,15 @@ const goals = new GoalDriver({
 /** Sends the robot to a clicked point when it is inside the arena. */
 function clickedGoal(p: { x: number; y: number }, outside: () => void): void {
   const { width, height } = world.map.arena;
-  if (Math.abs(p.x) > width / 2 || Math.abs(p.y) > height / 2) outside();
+  if (recording.playingBack) status.set('Playing back a recording: "Back to live" to drive', 'bad');
+  else if (Math.abs(p.x) > width / 2 || Math.abs(p.y) > height / 2) outside();
   else void goals.goTo(p.x, p.y);
 }
 viewport.onFloorClick((p) =>
   clickedGoal(p, () => status.set('That point is outside the arena', 'bad')),
 );
 
-const teleop = new KeyboardTeleop({ hal, goals, log, status });
+const teleop = new KeyboardTeleop({ hal, goals, log, status, paused: () => recording.playingBack });
 teleop.attach(window);
 
 const plotCanvas = element<HTMLCanvasElement>('plot');
@@ -76,7 +98,10 @@ plotCanvas.addEventListener('click', (e) =>
 
 new DemoControls({
   hal,
-  setMap: (name) => roster.resetWorld(name),
+  setMap: (name) => {
+    currentMap = name;
+    roster.resetWorld(name);
+  },
   goals,
   teleop,
   viewport,
@@ -151,6 +176,7 @@ function frame(now: number): void {
   plot.record(robot.x, robot.y);
   plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
   goals.refreshGrid();
+  recording.frame(now);
   if (now - lastTelemetry > 100) {
     lastTelemetry = now;
     telemetry.show(world, hal.robot);
@@ -173,6 +199,8 @@ const hooks = {
   goalState: () => goals.state,
   remote: () => remote.state,
   agentRunning: () => agent.running,
+  /** The Recording card: a recording running, a playback and where it draws the robot. */
+  recording: () => recording.state,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
   /** Every robot's id, label, pose and e-stop state, by number. */
   robots: () =>

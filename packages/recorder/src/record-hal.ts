@@ -134,8 +134,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     }
   }
 
-  function writePose(pose: Pose): void {
-    const now = recorder.clock();
+  /** Writes `pose` at `now`: the time it was asked for (the robot may have moved on since). */
+  function writePose(pose: Pose, now: bigint): void {
     const timestamp = foxgloveTime(now);
     const { x, y, z } = pose.position;
     const orientation = quaternionFromEuler(
@@ -167,11 +167,12 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     watchLatch();
     if (sampling || !safe(() => hal.isReady(), false)) return;
     sampling = true;
+    const askedAt = recorder.clock();
     try {
       hal.locomotion.getPose().then(
         (pose) => {
           sampling = false;
-          writePose(pose);
+          writePose(pose, askedAt);
         },
         () => {
           sampling = false;
@@ -296,6 +297,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     // The pose this call left is asked for now, before the caller can start another motion; the
     // record itself is made off the call's path, so the caller has its answer first.
     let poseAfter: Promise<Pose> | undefined;
+    const poseAskedAt = recorder.clock();
     try {
       if (MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value) && hal.isReady()) {
         poseAfter = hal.locomotion.getPose();
@@ -309,7 +311,9 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     // a change any other call finds is a trip (rare, so written at once)
     if (info.subsystem === 'safety') lastLatched = latched;
     else watchLatch();
-    recorder.defer(() => recordNow(info, start, durationMs, outcome, value, poseAfter, latched));
+    recorder.defer(() =>
+      recordNow(info, start, durationMs, outcome, value, poseAfter, poseAskedAt, latched),
+    );
   }
 
   function recordNow(
@@ -319,6 +323,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     outcome: HalCallRecord['outcome'],
     value: unknown,
     poseAfter: Promise<Pose> | undefined,
+    poseAskedAt: bigint,
     latchedAfter: boolean,
   ): Promise<void> | undefined {
     try {
@@ -344,7 +349,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
         return poseAfter.then(
           (pose) => {
-            writePose(pose);
+            writePose(pose, poseAskedAt);
             finish(pose);
           },
           () => finish(),

@@ -50,6 +50,10 @@ interface QueuedOp {
 
 const encoder = new TextEncoder();
 
+/** A later turn of the event loop: setImmediate in Node, a zero timeout in a browser. */
+const nextTurn: (run: () => void) => void =
+  typeof setImmediate === 'function' ? (run) => setImmediate(run) : (run) => setTimeout(run, 0);
+
 /**
  * An MCAP file being written, chunked and compressed, with JSON-encoded channels. Every method
  * but {@link close} returns at once: records wait in a bounded queue that a single background
@@ -185,9 +189,7 @@ export class McapRecorder {
    * robot. {@link close} waits for deferred tasks (at most 2 s). A task that throws is ignored.
    */
   defer(task: () => void | PromiseLike<void>): void {
-    const run = new Promise<void>((resolve) => setImmediate(resolve))
-      .then(task)
-      .catch(() => undefined);
+    const run = new Promise<void>((resolve) => nextTurn(resolve)).then(task).catch(() => undefined);
     this.#deferred.add(run);
     void run.finally(() => this.#deferred.delete(run));
   }

@@ -110,4 +110,27 @@ describe('WorldScene', () => {
     expect(position.getX(0)).toBeCloseTo(0.07, 5);
     expect(position.getX(1)).toBeCloseTo(1, 5);
   });
+
+  it('hides the robots, their trails and rays when told to, including robots added meanwhile', () => {
+    const world = new World();
+    world.addRobot();
+    const view = new WorldScene(world, { shadows: false, showRangeRays: true });
+    const visibleMeshes = () => {
+      let n = 0;
+      view.scene.traverseVisible((o) => {
+        if (o instanceof THREE.Mesh || o instanceof THREE.Line) n += 1;
+      });
+      return n;
+    };
+    const withOne = visibleMeshes();
+    view.robotsVisible = false;
+    const arenaOnly = visibleMeshes();
+    expect(arenaOnly).toBeLessThan(withOne);
+    world.addRobot();
+    view.update();
+    expect(visibleMeshes()).toBe(arenaOnly);
+    view.robotsVisible = true;
+    expect(visibleMeshes()).toBeGreaterThan(withOne);
+    view.dispose();
+  });
 });

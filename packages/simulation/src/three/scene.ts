@@ -57,6 +57,7 @@ export class WorldScene {
   #path: THREE.Line | undefined;
   #goal: THREE.Group | undefined;
   #grid: THREE.Mesh | undefined;
+  #robotsVisible = true;
   readonly #unsubscribe: Array<() => void> = [];
 
   constructor(world: World, options: WorldSceneOptions = {}) {
@@ -107,6 +108,18 @@ export class WorldScene {
   }
   set overlaysVisible(visible: boolean) {
     this.#overlays.visible = visible;
+  }
+
+  /**
+   * Whether the world's robots (their models, trails and rays) are drawn. The demo hides them
+   * while it plays a recording back in the same arena.
+   */
+  get robotsVisible(): boolean {
+    return this.#robotsVisible;
+  }
+  set robotsVisible(visible: boolean) {
+    this.#robotsVisible = visible;
+    for (const view of this.#robots.values()) this.#showRobot(view);
   }
 
   /** Clears every robot's trail. */
@@ -207,6 +220,14 @@ export class WorldScene {
       rays = new RangeRays(this.#options.rangeRayLength);
       this.#overlays.add(rays.lines);
     }
-    return { model, trail, rays };
+    const view = { model, trail, rays };
+    this.#showRobot(view);
+    return view;
+  }
+
+  #showRobot(view: RobotView): void {
+    view.model.group.visible = this.#robotsVisible;
+    view.trail.line.visible = this.#robotsVisible;
+    if (view.rays !== undefined) view.rays.lines.visible = this.#robotsVisible;
   }
 }
