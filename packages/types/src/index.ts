@@ -93,10 +93,12 @@ export {
   MOTION_CALLS,
   callsByName,
   findCall,
+  motionCall,
 } from './schemas/call-table.js';
 export type {
   CallKind,
   CallLane,
+  CallMotion,
   CallSpec,
   CallSubsystem,
   CallTable,

@@ -1,5 +1,6 @@
 import type { z } from 'zod';
 import { CAPABILITIES } from '../capabilities.js';
+import { HalError } from '../errors.js';
 import type { RobotConfig } from '../robot-config.js';
 import { createCallSchemas, V1_CALL_SCHEMAS } from './calls.js';
 import type { CallName, CallSchemas } from './calls.js';
@@ -21,6 +22,14 @@ export type CallKind = 'motion' | 'result' | 'value' | 'void';
  * at once beside the queue (reads and logs, which move nothing).
  */
 export type CallLane = 'safety' | 'queue' | 'direct';
+
+/**
+ * What a motion call does with the robot, for predicting it (the leash, navigation's timeouts)
+ * and for choosing a call by what it should do: `forward` and `backward` drive the `distanceCm`
+ * parameter straight ahead or back at top speed, `turn` turns in place by `degrees` toward
+ * `direction`, `point` turns toward (`x`, `y`) and drives there, `wheels` sets the wheel powers.
+ */
+export type CallMotion = 'forward' | 'backward' | 'turn' | 'point' | 'wheels';
 
 /** How an LLM tool presents the call. */
 export interface CallToolSpec {
@@ -44,6 +53,8 @@ export interface CallSpec {
   /** The method on the subsystem (equal to the name for the five-subsystem interface). */
   readonly method: string;
   readonly kind: CallKind;
+  /** What the call does with the robot: present exactly for the calls of kind `motion`. */
+  readonly motion?: CallMotion;
   readonly lane: CallLane;
   /** Only the controlling client may make it (where a HAL is served to several clients). */
   readonly controllerOnly: boolean;
@@ -104,7 +115,7 @@ function declare(name: CallName, spec: Declared): CallSpec {
 }
 
 const DRIVE = CAPABILITIES.differentialDrive;
-const motion = {
+const driving = {
   subsystem: 'locomotion',
   kind: 'motion',
   lane: 'queue',
@@ -121,7 +132,8 @@ const command = (subsystem: CallSubsystem) =>
  */
 export const HAL_CALL_TABLE: CallTable = Object.freeze([
   declare('moveForward', {
-    ...motion,
+    ...driving,
+    motion: 'forward',
     tool: {
       name: 'move_forward',
       requires: DRIVE,
@@ -129,7 +141,8 @@ export const HAL_CALL_TABLE: CallTable = Object.freeze([
     },
   }),
   declare('moveBackward', {
-    ...motion,
+    ...driving,
+    motion: 'backward',
     tool: {
       name: 'move_backward',
       requires: DRIVE,
@@ -137,7 +150,8 @@ export const HAL_CALL_TABLE: CallTable = Object.freeze([
     },
   }),
   declare('rotate', {
-    ...motion,
+    ...driving,
+    motion: 'turn',
     tool: {
       name: 'rotate',
       requires: DRIVE,
@@ -146,7 +160,8 @@ export const HAL_CALL_TABLE: CallTable = Object.freeze([
     },
   }),
   declare('moveTo', {
-    ...motion,
+    ...driving,
+    motion: 'point',
     tool: {
       name: 'move_to',
       requires: DRIVE,
@@ -156,7 +171,8 @@ export const HAL_CALL_TABLE: CallTable = Object.freeze([
     },
   }),
   declare('drive', {
-    ...motion,
+    ...driving,
+    motion: 'wheels',
     tool: {
       name: 'drive',
       requires: DRIVE,
@@ -283,6 +299,24 @@ export const MOTION_CALLS: readonly CallName[] = Object.freeze(
 /** The entry of `name` in `table`, or undefined for a name the table does not have. */
 export function findCall(name: string, table: CallTable = HAL_CALL_TABLE): CallSpec | undefined {
   return table.find((spec) => spec.name === name);
+}
+
+/**
+ * The call of `table` that does `motion` (`backward`: the straight drive back), for code that
+ * knows what the robot should do rather than which call does it. Throws when the table has none.
+ */
+export function motionCall(motion: CallMotion, table: CallTable = HAL_CALL_TABLE): CallSpec {
+  const spec = table.find((entry) => entry.motion === motion);
+  if (spec === undefined) {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `the call table has no call whose motion is "${motion}"`,
+      {
+        details: { motion },
+      },
+    );
+  }
+  return spec;
 }
 
 /** The table as a map from call name to entry. */
