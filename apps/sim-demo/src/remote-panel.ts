@@ -1,6 +1,7 @@
 import { HybridHAL } from '@hal/hybrid';
 import type { DivergenceEvent } from '@hal/hybrid';
 import { RemoteHAL } from '@hal/remote';
+import { invokeSpec, motionCall } from '@hal/types';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { make } from './dom.js';
 import type { ResultsLog } from './results-log.js';
@@ -20,10 +21,14 @@ export interface RemoteState {
   lastResult: { call: string; success: boolean; code?: string } | null;
 }
 
+/** The HAL's straight drive that way, 10 cm. */
+const tenCm = (motion: 'forward' | 'backward') => (hal: HardwareAbstractionLayer) =>
+  invokeSpec(hal, motionCall(motion), [10]) as Promise<HALToolResult>;
+
 const ACTIONS: Array<[string, string, (hal: HardwareAbstractionLayer) => Promise<HALToolResult>]> =
   [
-    ['forward', 'Forward 10 cm', (hal) => hal.locomotion.moveForward(10)],
-    ['back', 'Back 10 cm', (hal) => hal.locomotion.moveBackward(10)],
+    ['forward', 'Forward 10 cm', tenCm('forward')],
+    ['back', 'Back 10 cm', tenCm('backward')],
     ['left', 'Left 90°', (hal) => hal.locomotion.rotate('left', 90)],
     ['right', 'Right 90°', (hal) => hal.locomotion.rotate('right', 90)],
     ['stop', 'Stop', (hal) => hal.locomotion.stop()],

@@ -1,23 +1,12 @@
 export { DEFAULT_DISCOVERY_TIMEOUT_MS, discoverRobots, findRobot } from './discover.js';
 export type { DiscoveredRobot, DiscoverOptions } from './discover.js';
-export { addressFor, createPhysicalHALFromDiscovery, physicalHalConfigFor } from './physical.js';
+export { createPhysicalHALFromDiscovery, physicalHalConfigFor } from './physical.js';
 export type { DiscoveredConnectionOptions } from './physical.js';
 export { announceRobot } from './announce.js';
 export type { AnnounceOptions, Announcer } from './announce.js';
 export type { MdnsOptions } from './mdns-socket.js';
-export {
-  MAX_TXT_ENTRY_BYTES,
-  SERVICE_NAME,
-  SERVICE_PROTOCOL,
-  SERVICE_TYPE,
-  TXT_VERSION,
-} from './service.js';
-export {
-  ANNOUNCED_AUTH,
-  AnnouncementTxtSchema,
-  oversizeTxtEntry,
-  parseAnnouncementTxt,
-} from './txt-record.js';
+export { SERVICE_NAME, SERVICE_PROTOCOL, SERVICE_TYPE } from './service.js';
+export { ANNOUNCED_AUTH, AnnouncementTxtSchema, parseAnnouncementTxt } from './txt-record.js';
 export type { AnnouncedAuth, ParsedAnnouncement, RobotAnnouncement } from './txt-record.js';
 export {
   TAFY_NODE_PROTOCOL,
@@ -25,6 +14,5 @@ export {
   TAFY_NODE_TYPE,
   announceTafyNode,
   discoverTafyNodes,
-  tafyNodeTxt,
 } from './tafy-node.js';
 export type { FoundTafyNode, TafyNodeAnnouncement, TafyNodeAnnouncer } from './tafy-node.js';

@@ -9,18 +9,15 @@ export {
   FLEET_COMMAND_KINDS,
   FleetCommandSchema,
   fleetCommandSchema,
-  isFleetCall,
   parseFleetCommand,
   runFleetCommand,
 } from './commands.js';
 export type { FleetCommand } from './commands.js';
 
-export { checkDeviceId, selectMembers } from './members.js';
 export type { FleetMember } from './members.js';
 
 export { DEFAULT_CALL_TIMEOUT_MS } from './synchronized.js';
 export type { MemberCall, SynchronizedOptions } from './synchronized.js';
-export { callWithTimeout } from './call-with-timeout.js';
 
 export { LeaderFollower } from './leader-follower.js';
 export type {
@@ -29,12 +26,7 @@ export type {
   FormationReport,
   LeaderFollowerOptions,
 } from './leader-follower-options.js';
-export {
-  FORMATION_SHAPES,
-  decideFollowerAction,
-  formationOffsets,
-  slotPosition,
-} from './formation.js';
+export { FORMATION_SHAPES, formationOffsets } from './formation.js';
 export type { FollowerAction, FormationOffset, FormationShape } from './formation.js';
 
 export { SteppedScheduler, realTimeScheduler } from './scheduler.js';

@@ -1,25 +1,22 @@
-export { cellCentre, checkGridSpec, worldToCell } from './grid/geometry.js';
+export { cellCentre, worldToCell } from './grid/geometry.js';
 export type { Cell, GridSpec, Point, Pose2D } from './grid/geometry.js';
 export { gridImageDataUrl, renderGridImage } from './grid/image.js';
 export type { GridImageOptions, RgbaImage } from './grid/image.js';
-export { mapSolids } from './grid/known-map.js';
-export type { KnownMap, MapSolid } from './grid/known-map.js';
+export type { KnownMap } from './grid/known-map.js';
 export { DEFAULT_LOG_ODDS } from './grid/log-odds.js';
 export type { CellState, LogOddsModel } from './grid/log-odds.js';
 export { OccupancyGrid } from './grid/occupancy-grid.js';
 export type { CellCounts, OccupancyGridOptions } from './grid/occupancy-grid.js';
 export { DEFAULT_RANGE_SENSORS } from './grid/range-sensor-update.js';
 export type { RangeReadings, RangeSensorModel } from './grid/range-sensor-update.js';
-export { traverseCells } from './grid/raycast.js';
 export { describeWorld } from './grid/summary.js';
 export type { WorldSummaryOptions } from './grid/summary.js';
 
 export { AStarSearch } from './planner/astar.js';
 export type { GridSearchResult, GridSearchStatus } from './planner/astar.js';
-export { NodeHeap } from './planner/binary-heap.js';
 export { GridPlanner } from './planner/grid-planner.js';
 export type { PathPlan, PlanOptions } from './planner/grid-planner.js';
-export { lineOfSight, simplifyPath } from './planner/line-of-sight.js';
+export { simplifyPath } from './planner/line-of-sight.js';
 export { ObstacleMap } from './planner/obstacle-map.js';
 
 export { NavigationError } from './errors.js';

@@ -32,12 +32,12 @@ export type { BuiltinMapName } from './maps/index.js';
 export { castRay, discContact, solidsOf } from './shapes.js';
 export type { BoxSolid, CylinderSolid, Point, Rgb, Solid, SolidRole } from './shapes.js';
 
-export { readDistanceSensors, readImu, scanAround } from './sensors.js';
+export { readDistanceSensors, scanAround } from './sensors.js';
 export type { RangeSensorOptions } from './sensors.js';
 
 export { renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';
-export { defaultJpegEncoder, encodeJpeg, jpegDataUrl, toBase64 } from './jpeg.js';
+export { defaultJpegEncoder, encodeJpeg } from './jpeg.js';
 export { canvasJpegEncoder, jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';
 export type { JpegEncoder } from './jpeg-encoders.js';
 

@@ -202,9 +202,9 @@ export function createToolExecutor(
       } catch (thrown) {
         return fromThrown(thrown);
       }
-      const plan = planMotion(tool.call as CallName, checked.args, start, config);
+      const plan = planMotion(tool.call, checked.args, start, config, table);
       if (plan !== undefined) {
-        const refusal = checkMotion(tool, plan, start, leash);
+        const refusal = checkMotion(tool, plan, start, leash, table);
         if (refusal !== undefined) return refusal;
         profileMs = plan.durationMs;
       }

@@ -121,6 +121,32 @@ describe('the leash', () => {
     expect((await hal.locomotion.getPose()).position.x).toBeCloseTo(-0.2, 1);
   });
 
+  it('plans a drive back behind the robot, and points a straight drive over the speed cap to move_to', async () => {
+    const { run, x } = await leashed({
+      geofence: { minX: -0.3, maxX: 0.5, minY: -0.5, maxY: 0.5 },
+    });
+    const out = await run.execute({ name: 'move_backward', arguments: { distanceCm: 40 } });
+    expect(out).toMatchObject({ code: 'LEASH_GEOFENCE' });
+    expect(out.content[0]).toMatchObject({ text: expect.stringContaining('(-0.4, 0)') });
+    expect(await x()).toBe(0);
+    expect(
+      (await run.execute({ name: 'move_backward', arguments: { distanceCm: 20 } })).isError,
+    ).toBe(false);
+    expect(await x()).toBeCloseTo(-0.2, 2);
+    const slow = await leashed({ maxSpeedMPerS: 0.02 });
+    const back = await slow.run.execute({ name: 'move_backward', arguments: { distanceCm: 5 } });
+    expect(back).toMatchObject({ code: 'LEASH_SPEED' });
+    expect(back.content[0]).toMatchObject({
+      text: expect.stringContaining('use move_to with a speed'),
+    });
+    const point = await slow.run.execute({
+      name: 'move_to',
+      arguments: { x: 0.1, y: 0, z: 0, speed: 0.04 },
+    });
+    expect(point).toMatchObject({ code: 'LEASH_SPEED' });
+    expect(point.content[0]).not.toMatchObject({ text: expect.stringContaining('use move_to') });
+  });
+
   it('limits the rate of calls, and lets calls through again once the window has passed', async () => {
     let now = 0;
     const { run } = await leashed({ rateLimit: { calls: 2, perMs: 1000 } }, () => now);

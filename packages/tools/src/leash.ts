@@ -1,3 +1,5 @@
+import { HAL_CALL_TABLE, findCall } from '@hal/types';
+import type { CallTable } from '@hal/types';
 import type { MotionPlan, PlanStart } from './motion-plan.js';
 import { errorResult } from './result.js';
 import type { ToolResult } from './result.js';
@@ -44,6 +46,12 @@ function outside(fence: Geofence, p: { x: number; y: number }): number {
 
 const round = (v: number) => Math.round(v * 1000) / 1000;
 
+/** A straight drive takes no speed: it always runs at the robot's top speed. */
+function runsAtTopSpeed(call: string, table: CallTable): boolean {
+  const motion = findCall(call, table)?.motion;
+  return motion === 'forward' || motion === 'backward';
+}
+
 /**
  * Checks a planned motion against the leash's caps and geofence; answers the refusal, or
  * undefined. A motion may end outside the fence only if it ends nearer to it than it started (so
@@ -54,6 +62,7 @@ export function checkMotion(
   plan: MotionPlan,
   start: PlanStart,
   leash: Leash,
+  table: CallTable = HAL_CALL_TABLE,
 ): ToolResult | undefined {
   if (leash.maxDistanceM !== undefined && plan.distanceM > leash.maxDistanceM) {
     return errorResult(
@@ -67,7 +76,7 @@ export function checkMotion(
     return errorResult(
       'LEASH_SPEED',
       `${tool.name}: would run at ${round(plan.speedMPerS)} m/s; the leash allows at most ${leash.maxSpeedMPerS} m/s` +
-        (tool.call === 'moveForward' || tool.call === 'moveBackward'
+        (runsAtTopSpeed(tool.call, table)
           ? ' (this call runs at top speed: use move_to with a speed)'
           : ''),
     );

@@ -1,5 +1,5 @@
-import { maxLinearSpeedMPerS, stepsPerCm } from '@hal/types';
-import type { CallName, RobotConfig } from '@hal/types';
+import { HAL_CALL_TABLE, findCall, maxLinearSpeedMPerS, stepsPerCm } from '@hal/types';
+import type { CallTable, RobotConfig } from '@hal/types';
 
 /** Where a motion starts: metres and radians, REP-103 world frame. */
 export interface PlanStart {
@@ -59,15 +59,17 @@ function arc(start: PlanStart, vl: number, vr: number, seconds: number, config: 
 }
 
 /**
- * Predicts a motion call's path, speed and duration from validated arguments. The robot's own
- * profile: moveForward/moveBackward/rotate run at its top speed, moveTo at `speed` (default top),
- * drive at wheel power / 255 of top speed for `durationMs`.
+ * Predicts a motion call's path, speed and duration from validated arguments, by what the call
+ * does (its `motion` in `table`). The robot's own profile: straight drives and turns run at its
+ * top speed, a drive to a point at `speed` (default top), the wheels at power / 255 of top speed
+ * for `durationMs`. Undefined for a call that is no motion.
  */
 export function planMotion(
-  call: CallName,
+  call: string,
   args: Record<string, unknown>,
   start: PlanStart,
   config: RobotConfig,
+  table: CallTable = HAL_CALL_TABLE,
 ): MotionPlan | undefined {
   const top = maxLinearSpeedMPerS(config);
   const accel = config.accelerationStepsPerS2;
@@ -78,19 +80,19 @@ export function planMotion(
       config.maxSpeedStepsPerS,
       accel,
     );
-  switch (call) {
-    case 'moveForward':
+  switch (findCall(call, table)?.motion) {
+    case 'forward':
       return straight(start, (args['distanceCm'] as number) / 100, config);
-    case 'moveBackward':
+    case 'backward':
       return straight(start, -(args['distanceCm'] as number) / 100, config);
-    case 'rotate':
+    case 'turn':
       return {
         distanceM: 0,
         speedMPerS: 0,
         path: [{ x: start.x, y: start.y }],
         durationMs: turnMs(((args['degrees'] as number) * Math.PI) / 180),
       };
-    case 'moveTo': {
+    case 'point': {
       const x = args['x'] as number;
       const y = args['y'] as number;
       const speed = (args['speed'] as number | undefined) ?? top;
@@ -104,7 +106,7 @@ export function planMotion(
         durationMs: turnMs(Math.PI) + profileMs(steps, speedSteps, accel),
       };
     }
-    case 'drive': {
+    case 'wheels': {
       const vl = ((args['left'] as number) / 255) * top;
       const vr = ((args['right'] as number) / 255) * top;
       const speedMPerS = Math.max(Math.abs(vl), Math.abs(vr));
@@ -120,7 +122,7 @@ export function planMotion(
         durationMs,
       };
     }
-    default:
+    case undefined:
       return undefined;
   }
 }

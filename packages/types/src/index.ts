@@ -87,16 +87,11 @@ export type {
   SpeakParams,
 } from './schemas/calls.js';
 
-export {
-  CALL_RESULT_SCHEMAS,
-  HAL_CALL_TABLE,
-  MOTION_CALLS,
-  callsByName,
-  findCall,
-} from './schemas/call-table.js';
+export { HAL_CALL_TABLE, findCall, motionCall } from './schemas/call-table.js';
 export type {
   CallKind,
   CallLane,
+  CallMotion,
   CallSpec,
   CallSubsystem,
   CallTable,
@@ -122,7 +117,6 @@ export {
   READ_RESULT_SCHEMAS,
   SCAN_MODES,
   ScanParamsSchema,
-  createReadSchemas,
 } from './schemas/reads.js';
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 

@@ -1,4 +1,10 @@
 import type { FleetCommand } from '@hal/fleet';
+import { motionCall } from '@hal/types';
+
+/** The fleet command of the HAL's straight drive that way, `n` cm. */
+const straight =
+  (motion: 'forward' | 'backward') =>
+  (n: number): FleetCommand => ({ kind: motionCall(motion).name, distanceCm: n });
 
 /** The commands the Fleet card offers: what the amount field means, and the fleet command. */
 export const PANEL_COMMANDS = {
@@ -6,13 +12,13 @@ export const PANEL_COMMANDS = {
     label: 'Forward',
     unit: 'cm',
     initial: 20,
-    command: (n: number): FleetCommand => ({ kind: 'moveForward', distanceCm: n }),
+    command: straight('forward'),
   },
   backward: {
     label: 'Backward',
     unit: 'cm',
     initial: 20,
-    command: (n: number): FleetCommand => ({ kind: 'moveBackward', distanceCm: n }),
+    command: straight('backward'),
   },
   left: {
     label: 'Turn left',

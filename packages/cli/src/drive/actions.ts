@@ -1,8 +1,8 @@
 // The motions and safety calls `hal drive` can make, checked against the HAL's own call schemas
 // (V1 limits) before anything is sent: a bad number is a USAGE error, never a motor command.
 import { InvalidArgumentError } from 'commander';
-import { V1_ROBOT, argsFromObject, findCall, invokeCall } from '@hal/types';
-import type { CallName, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import { V1_ROBOT, argsFromObject, findCall, invokeSpec, motionCall } from '@hal/types';
+import type { CallSpec, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 import { CliError } from '../cli-error.js';
 
 export type DriveAction =
@@ -117,12 +117,20 @@ function check(
 
 /**
  * The HAL call an action makes, with its parameters by name, and the values as typed where the
- * call is sent their size (`forward -5`: moveBackward with distanceCm 500; messages speak of -5 m).
+ * call is sent their size (`forward -5`: the drive back with distanceCm 500; messages speak of
+ * -5 m).
  */
 interface ActionCall {
-  call: CallName;
+  call: CallSpec;
   params: Record<string, unknown>;
   typed?: Readonly<Record<string, number>>;
+}
+
+/** The call of the HAL's table named `name`, which this file knows it has. */
+function tableCall(name: string): CallSpec {
+  const spec = findCall(name);
+  if (spec === undefined) throw new Error(`the HAL's call table has no "${name}"`);
+  return spec;
 }
 
 function actionCall(action: DriveAction): ActionCall {
@@ -130,14 +138,14 @@ function actionCall(action: DriveAction): ActionCall {
     case 'forward':
       // the call takes centimetres; the message speaks of the metres that were typed
       return {
-        call: action.metres > 0 ? 'moveForward' : 'moveBackward',
+        call: motionCall(action.metres > 0 ? 'forward' : 'backward'),
         params: { distanceCm: Math.abs(action.metres) * 100 },
         typed: { distanceCm: action.metres },
       };
     case 'turn':
       // REP-103: positive degrees turn counter-clockwise (left)
       return {
-        call: 'rotate',
+        call: motionCall('turn'),
         params: {
           direction: action.degrees > 0 ? 'left' : 'right',
           degrees: Math.abs(action.degrees),
@@ -145,18 +153,21 @@ function actionCall(action: DriveAction): ActionCall {
         typed: { degrees: action.degrees },
       };
     case 'move-to':
-      return { call: 'moveTo', params: { x: action.x, y: action.y, z: 0, speed: action.speed } };
+      return {
+        call: motionCall('point'),
+        params: { x: action.x, y: action.y, z: 0, speed: action.speed },
+      };
     case 'wheels':
       return {
-        call: 'drive',
+        call: motionCall('wheels'),
         params: { left: action.left, right: action.right, durationMs: action.durationMs },
       };
     case 'stop':
-      return { call: 'stop', params: {} };
+      return { call: tableCall('stop'), params: {} };
     case 'estop':
-      return { call: 'emergencyStop', params: { reason: action.reason } };
+      return { call: tableCall('emergencyStop'), params: { reason: action.reason } };
     case 'reset-estop':
-      return { call: 'resetEmergencyStop', params: {} };
+      return { call: tableCall('resetEmergencyStop'), params: {} };
   }
 }
 
@@ -169,8 +180,7 @@ export function checkAction(action: DriveAction): void {
     throw new CliError('USAGE', 'turn: the angle must not be 0');
   }
   const { call, params, typed } = actionCall(action);
-  const schema = findCall(call)?.paramsSchema(V1_ROBOT);
-  if (schema !== undefined) check(schema as Checker, params, action.kind, typed);
+  check(call.paramsSchema(V1_ROBOT) as Checker, params, action.kind, typed);
 }
 
 /** True for the actions that move the robot (and so show live pose, and stop on Ctrl-C). */
@@ -184,9 +194,7 @@ export function callFor(
   action: DriveAction,
 ): Promise<HALToolResult> {
   const { call, params } = actionCall(action);
-  const spec = findCall(call);
-  const args = spec === undefined ? [] : argsFromObject(spec, params);
-  return invokeCall(hal, call, args) as Promise<HALToolResult>;
+  return invokeSpec(hal, call, argsFromObject(call, params)) as Promise<HALToolResult>;
 }
 
 /** `forward 0.5 m`, for messages. */

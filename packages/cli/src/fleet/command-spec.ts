@@ -2,7 +2,7 @@
 // moveTo:0.5,0.2) or a fleet command as JSON; both become a checked FleetCommand.
 import { parseFleetCommand } from '@hal/fleet';
 import type { FleetCommand } from '@hal/fleet';
-import { isHalError } from '@hal/types';
+import { isHalError, motionCall } from '@hal/types';
 import { CliError } from '../cli-error.js';
 
 export const COMMAND_SPEC_HELP =
@@ -37,14 +37,13 @@ export function parseCommandSpec(spec: string): FleetCommand {
   } else {
     const [verb = '', ...rest] = text.split(':');
     const arg = rest.join(':');
-    switch (verb.toLowerCase()) {
+    const word = verb.toLowerCase();
+    switch (word) {
       case 'forward':
       case 'backward': {
+        // the verb is the motion: the table's straight drive that way
         const [cm] = numbers(arg, [1, 1], text);
-        raw = {
-          kind: verb.toLowerCase() === 'forward' ? 'moveForward' : 'moveBackward',
-          distanceCm: cm,
-        };
+        raw = { kind: motionCall(word).name, distanceCm: cm };
         break;
       }
       case 'rotate': {

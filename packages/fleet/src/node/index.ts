@@ -23,7 +23,6 @@ export type {
   SimulatedDeviceConfig,
 } from './device-config.js';
 export type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
-export { OfflineGuardHAL, offlineError } from './offline-guard.js';
+export { OfflineGuardHAL } from './offline-guard.js';
 export { discoverNatsDevices } from './discover.js';
 export type { DiscoveredDevice } from './discover.js';
-export { boundedWait } from './bounded-wait.js';

@@ -32,7 +32,7 @@ export async function executeAction(
       if (Math.abs(delta) < MIN_TURN_DEG) {
         return { report: { action: 'ROTATE_TO', success: true }, moved: false };
       }
-      return runMotion(ctx, state, 'ROTATE_TO', 'rotate', rotateArgs(delta));
+      return runMotion(ctx, state, 'ROTATE_TO', 'turn', rotateArgs(delta));
     }
     case 'EXPLORE': {
       const frontier = findFrontier(ctx.grid, pose);

@@ -1,8 +1,16 @@
 // An in-process robot for the bridge's unit tests: a disc in a world of boxes, moved exactly and
 // instantly, with range sensors by ray casting, behind the shared HAL boundary. Faults can be
 // injected per call. Not exported; the end-to-end tests use SimulationHAL.
-import { CAPABILITIES, HalBoundary, HalError, normalizeAngle, V1_ROBOT } from '@hal/types';
+import {
+  CAPABILITIES,
+  HalBoundary,
+  HalError,
+  motionCall,
+  normalizeAngle,
+  V1_ROBOT,
+} from '@hal/types';
 import type {
+  CallName,
   CommunicationInterface,
   DeviceInfo,
   DistanceSensors,
@@ -82,7 +90,7 @@ export class FakeHAL implements HardwareAbstractionLayer {
     });
     const b = this.#boundary;
     const guarded = (
-      name: 'moveTo' | 'rotate' | 'moveForward' | 'moveBackward',
+      name: CallName,
       args: unknown[],
       params: Record<string, unknown>,
       body: () => Promise<Record<string, unknown> | void>,
@@ -95,7 +103,18 @@ export class FakeHAL implements HardwareAbstractionLayer {
       if (injected !== undefined) return Promise.resolve(injected);
       return b.call(name, params, body);
     };
-    this.locomotion = {
+    // the straight drives are the table's calls whose motion is forward or backward
+    const straight = (motion: 'forward' | 'backward') => {
+      const { method, name } = motionCall(motion);
+      const call = name as CallName;
+      const sign = motion === 'forward' ? 1 : -1;
+      const run = (distanceCm: number) =>
+        guarded(call, [distanceCm], { distanceCm }, async () =>
+          this.#drive((sign * distanceCm) / 100),
+        );
+      return { [method]: run };
+    };
+    const own = {
       drive: () => Promise.resolve(this.#fail('NOT_IMPLEMENTED', 'drive is not simulated here')),
       moveTo: (x, y, z, speed) =>
         guarded('moveTo', [x, y, z, speed], { x, y, z, speed }, async () => {
@@ -108,14 +127,6 @@ export class FakeHAL implements HardwareAbstractionLayer {
             this.yaw + ((direction === 'left' ? 1 : -1) * degrees * Math.PI) / 180,
           );
         }),
-      moveForward: (distanceCm) =>
-        guarded('moveForward', [distanceCm], { distanceCm }, async () =>
-          this.#drive(distanceCm / 100),
-        ),
-      moveBackward: (distanceCm) =>
-        guarded('moveBackward', [distanceCm], { distanceCm }, async () =>
-          this.#drive(-distanceCm / 100),
-        ),
       stop: () => {
         this.calls.push({ name: 'stop', args: [] });
         return b.call('stop', {}, async () => undefined);
@@ -125,7 +136,12 @@ export class FakeHAL implements HardwareAbstractionLayer {
         rotation: { yaw: this.yaw, pitch: 0, roll: 0 },
         velocity: { linear: 0, angular: 0 },
       }),
-    };
+    } satisfies Partial<LocomotionInterface>;
+    this.locomotion = {
+      ...straight('forward'),
+      ...straight('backward'),
+      ...own,
+    } as unknown as LocomotionInterface;
     this.vision = {
       captureFrame: async () => 'data:image/jpeg;base64,AAAA',
       scan: () => Promise.reject(new HalError('NOT_IMPLEMENTED', 'no scan')),

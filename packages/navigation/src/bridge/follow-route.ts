@@ -34,7 +34,7 @@ export async function followRoute(
     if (free !== undefined) {
       const leg = cellCentre(grid.spec, free.cx, free.cy);
       ctx.events.emit('path', { cycle: state.cycle, target, plan: first, leg });
-      return runMotion(ctx, state, action, 'moveTo', { x: leg.x, y: leg.y });
+      return runMotion(ctx, state, action, 'point', { x: leg.x, y: leg.y });
     }
   }
   const plan = replanWithoutWeakObstacles(ctx, first, pose, goalPoint);
@@ -60,9 +60,9 @@ export async function followRoute(
   // has seen it before the wheels go (the next cycle re-plans with what it saw).
   const turn = turnDeg(pose.yaw, Math.atan2(leg.y - pose.y, leg.x - pose.x));
   if (settings.faceFirst && sensorsInUse(ctx) && Math.abs(turn) > settings.faceFirstDeg) {
-    return runMotion(ctx, state, action, 'rotate', rotateArgs(turn));
+    return runMotion(ctx, state, action, 'turn', rotateArgs(turn));
   }
-  return runMotion(ctx, state, action, 'moveTo', { x: leg.x, y: leg.y });
+  return runMotion(ctx, state, action, 'point', { x: leg.x, y: leg.y });
 }
 
 /**

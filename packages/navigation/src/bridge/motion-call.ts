@@ -1,10 +1,15 @@
-import { isHalError, maxLinearSpeedMPerS } from '@hal/types';
-import type { HALToolResult } from '@hal/types';
+import {
+  argsFromObject,
+  invokeSpec,
+  isHalError,
+  maxLinearSpeedMPerS,
+  motionCall,
+} from '@hal/types';
+import type { CallMotion, HALToolResult } from '@hal/types';
 import type { ActionReport } from '../decision/provider.js';
 import { errorMessage } from '../errors.js';
 import type { Acted, BridgeContext, RunState } from './bridge-context.js';
 import type { BridgeSettings } from './bridge-options.js';
-import type { MotionCall } from './navigation-events.js';
 import { checkMotionResult } from './result-check.js';
 import { stopWheels } from './sensing.js';
 import { TIMED_OUT, withTimeout } from './timeouts.js';
@@ -15,20 +20,26 @@ const DEG = Math.PI / 180;
 export type MotionArgs = Record<string, number | string>;
 
 /**
- * Runs one motion call with a timeout (after which the wheels are stopped), emits `result`, and
- * turns its result into the bridge's terms (see {@link checkMotionResult}).
+ * Runs the HAL's call for `motion` (`point`: to `x`, `y`; `turn`; `forward`, `backward`; see
+ * CallMotion) with a timeout (after which the wheels are stopped), emits `result`, and turns its
+ * result into the bridge's terms (see {@link checkMotionResult}).
  */
 export async function runMotion(
   ctx: BridgeContext,
   state: RunState,
   action: ActionReport['action'],
-  call: MotionCall,
+  motion: CallMotion,
   args: MotionArgs,
 ): Promise<Acted> {
-  const timeoutMs = motionTimeoutMs(ctx.settings, call, args);
+  const spec = motionCall(motion);
+  const call = spec.name;
+  const timeoutMs = motionTimeoutMs(ctx.settings, motion, args);
   let result: HALToolResult;
   try {
-    const answer = await withTimeout(invoke(ctx, call, args), timeoutMs);
+    // a drive to a point goes at the bridge's speed, on the floor (z 0)
+    const named = motion === 'point' ? { ...args, z: 0, speed: ctx.settings.speed } : args;
+    const invoked = invokeSpec(ctx.hal, spec, argsFromObject(spec, named));
+    const answer = await withTimeout(invoked as Promise<HALToolResult>, timeoutMs);
     if (answer === TIMED_OUT) {
       await stopWheels(ctx);
       result = {
@@ -56,33 +67,19 @@ export async function runMotion(
   return checkMotionResult(ctx, state, action, call, result);
 }
 
-function invoke(ctx: BridgeContext, call: MotionCall, args: MotionArgs): Promise<HALToolResult> {
-  const loco = ctx.hal.locomotion;
-  switch (call) {
-    case 'moveTo':
-      return loco.moveTo(args['x'] as number, args['y'] as number, 0, ctx.settings.speed);
-    case 'rotate':
-      return loco.rotate(args['direction'] as 'left' | 'right', args['degrees'] as number);
-    case 'moveForward':
-      return loco.moveForward(args['distanceCm'] as number);
-    case 'moveBackward':
-      return loco.moveBackward(args['distanceCm'] as number);
-  }
-}
-
 /** A motion's timeout: its expected duration at the robot's speed, doubled, plus a margin. */
 export function motionTimeoutMs(
   settings: BridgeSettings,
-  call: MotionCall,
+  motion: CallMotion,
   args: MotionArgs,
 ): number {
   const speed = Math.min(settings.speed ?? Infinity, maxLinearSpeedMPerS(settings.robot));
   const halfBaseM = settings.robot.wheelBaseCm / 200;
   let metres = 0;
-  if (call === 'moveTo') {
+  if (motion === 'point') {
     // A turn of up to half a revolution, then the straight leg.
     metres = Math.PI * halfBaseM + settings.maxLegM * 1.5;
-  } else if (call === 'rotate') {
+  } else if (motion === 'turn') {
     metres = Number(args['degrees']) * DEG * halfBaseM;
   } else {
     metres = Number(args['distanceCm']) / 100;

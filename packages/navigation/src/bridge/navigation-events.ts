@@ -5,9 +5,6 @@ import type { NavigationDecision } from '../decision/schema.js';
 import type { PathPlan } from '../planner/grid-planner.js';
 import type { NavigationOutcome } from './navigation-outcome.js';
 
-/** The HAL motion calls the bridge makes. */
-export type MotionCall = 'moveTo' | 'rotate' | 'moveForward' | 'moveBackward';
-
 /** The events a {@link NavigationBridge} emits, for UIs and logs. */
 export interface NavigationEvents {
   /** A cycle starts: the pose just read and the range readings. */
@@ -16,10 +13,10 @@ export interface NavigationEvents {
   decision: { cycle: number; provider: string; decision: NavigationDecision };
   /** A route was planned; `leg` is the point the robot drives to this cycle. */
   path: { cycle: number; target: Point; plan: PathPlan; leg: Point };
-  /** A HAL call finished. */
+  /** A HAL call finished: `call` is its name in the HAL's call table. */
   result: {
     cycle: number;
-    call: MotionCall;
+    call: string;
     args: Record<string, unknown>;
     result: HALToolResult;
   };

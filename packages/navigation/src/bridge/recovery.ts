@@ -48,8 +48,8 @@ export async function recoverFromNoRoute(
   }
   const ahead = pointAlong(pose, NUDGE_CM / 100 + ctx.grid.spec.resolutionM);
   const acted = ctx.grid.isTraversable(ahead.x, ahead.y)
-    ? await runMotion(ctx, state, action, 'moveForward', { distanceCm: NUDGE_CM })
-    : await runMotion(ctx, state, action, 'rotate', { direction: 'left', degrees: 90 });
+    ? await runMotion(ctx, state, action, 'forward', { distanceCm: NUDGE_CM })
+    : await runMotion(ctx, state, action, 'turn', { direction: 'left', degrees: 90 });
   if (acted.terminal !== undefined) return acted;
   return { ...acted, report };
 }
@@ -69,10 +69,10 @@ export async function recoverFromStuck(
   markObstacleAhead(grid, pose, grid.robotRadiusM + grid.spec.resolutionM);
   const back = pointAlong(pose, -(NUDGE_CM / 100 + grid.spec.resolutionM));
   if (grid.isTraversable(back.x, back.y)) {
-    const backed = await runMotion(ctx, state, 'MOVE_TO', 'moveBackward', { distanceCm: NUDGE_CM });
+    const backed = await runMotion(ctx, state, 'MOVE_TO', 'backward', { distanceCm: NUDGE_CM });
     if (backed.terminal !== undefined) return backed.terminal;
   }
-  const turned = await runMotion(ctx, state, 'MOVE_TO', 'rotate', {
+  const turned = await runMotion(ctx, state, 'MOVE_TO', 'turn', {
     direction: state.recoveries % 2 === 1 ? 'left' : 'right',
     degrees: 90,
   });

@@ -1,7 +1,6 @@
 import type { HALToolResult } from '@hal/types';
 import type { ActionReport } from '../decision/provider.js';
 import type { Acted, BridgeContext, RunState } from './bridge-context.js';
-import type { MotionCall } from './navigation-events.js';
 import { failed, stopRequested } from './navigation-outcome.js';
 
 /** Failed motions in a row that fail the run with HAL_ERROR. */
@@ -17,7 +16,7 @@ export function checkMotionResult(
   ctx: BridgeContext,
   state: RunState,
   action: ActionReport['action'],
-  call: MotionCall,
+  call: string,
   result: HALToolResult,
 ): Acted {
   const report: ActionReport = { action, success: result.success };

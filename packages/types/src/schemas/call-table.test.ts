@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { V1_ROBOT } from '../robot-config.js';
 import type { HardwareAbstractionLayer } from '../interfaces.js';
-import { HAL_CALL_TABLE, MOTION_CALLS, findCall } from './call-table.js';
+import { HAL_CALL_TABLE, MOTION_CALLS, findCall, motionCall } from './call-table.js';
+import type { CallSpec } from './call-table.js';
 import { V1_CALL_SCHEMAS } from './calls.js';
 import { forwardCalls } from './forward-calls.js';
 import { argsFromObject, invokeCall } from './invoke-call.js';
@@ -43,6 +44,36 @@ describe('HAL_CALL_TABLE', () => {
   it('derives MOTION_CALLS from the calls of kind motion', () => {
     expect([...MOTION_CALLS].sort()).toEqual(
       ['drive', 'moveBackward', 'moveForward', 'moveTo', 'rotate'].sort(),
+    );
+  });
+});
+
+describe('motionCall', () => {
+  it('gives every call of kind motion what it does, and no other call', () => {
+    for (const spec of HAL_CALL_TABLE) {
+      expect(spec.motion !== undefined, spec.name).toBe(spec.kind === 'motion');
+    }
+    const motions = HAL_CALL_TABLE.flatMap((spec) =>
+      spec.motion === undefined ? [] : [spec.motion],
+    );
+    expect(new Set(motions).size).toBe(motions.length);
+  });
+
+  it('finds the call that does a motion, with the parameters that motion reads', () => {
+    for (const motion of ['forward', 'backward'] as const) {
+      expect(motionCall(motion).params).toEqual(['distanceCm']);
+      expect(motionCall(motion).kind).toBe('motion');
+    }
+    expect(motionCall('forward').name).not.toBe(motionCall('backward').name);
+    expect(motionCall('turn').params).toEqual(['direction', 'degrees']);
+    expect(motionCall('point').params).toEqual(['x', 'y', 'z', 'speed']);
+  });
+
+  it('finds a motion in an extended table, and refuses one the table lacks', () => {
+    const crab: CallSpec = { ...motionCall('forward'), name: 'crabLeft', motion: 'backward' };
+    expect(motionCall('backward', [crab]).name).toBe('crabLeft');
+    expect(() => motionCall('turn', [crab])).toThrow(
+      expect.objectContaining({ code: 'INVALID_PARAMETER' }) as unknown as Error,
     );
   });
 });
