@@ -3,14 +3,14 @@ import type { Leash } from '@hal/tools';
 import type { AgentAnswer, EvalAgent } from './agent.js';
 import { judge, targetOf } from './checks.js';
 import type { CheckVerdict } from './checks.js';
-import { RealitySchema } from './reality.js';
+import { bodyErrorOf, RealitySchema } from './reality.js';
 import type { RealityInput } from './reality.js';
 import { optimalPathM } from './route.js';
 import type { Task, TaskGroup } from './task-schema.js';
 import { toolBackedHal } from './tool-hal.js';
 import { createTrialExecutor } from './trial-executor.js';
 import { wrapAngle } from './truth.js';
-import { realiseTask } from './variant.js';
+import { realiseTask, variantSeed } from './variant.js';
 
 /** The scores of one trial: deterministic given the task, the seed and a deterministic agent. */
 export interface TrialScore {
@@ -82,11 +82,15 @@ export async function runTrial(
   const variant = realiseTask(task, seed);
   const world = new World({ map: variant.map, seed });
   const reality = RealitySchema.parse(options.reality ?? {});
+  // the body's errors are drawn from the trial's seed, apart from the call loss's draws
+  const bodyError = bodyErrorOf(reality, (variantSeed(task.id, seed) ^ 0x5bd1e995) >>> 0);
+  const body = bodyError === undefined ? {} : { bodyError };
   const hal = new SimulationHAL({
     world,
     start: variant.start,
     features: { ...task.world.sensors, ...options.sensors },
     ...(reality.rangeNoiseM > 0 ? { rangeSensors: { noiseSigma: reality.rangeNoiseM } } : {}),
+    ...body,
   });
   let collisions = 0;
   const robotId = () => hal.robot.id;

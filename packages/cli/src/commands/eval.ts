@@ -24,6 +24,9 @@ interface EvalCliOptions extends LeashCliOptions {
   latency?: number;
   loss?: number;
   rangeNoise?: number;
+  wheelDiameterError?: number;
+  wheelSlip?: number;
+  odometryNoise?: number;
   sensors?: string;
   agent: string;
   tasks?: string;
@@ -227,6 +230,24 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           'reality: range sensor noise, standard deviation in metres',
         ).argParser(rangeArg('--range-noise', 0, 1)),
       )
+      .addOption(
+        new Option(
+          '--wheel-diameter-error <pct>',
+          "reality: each wheel's true diameter off the nominal, standard deviation in percent, seeded",
+        ).argParser(rangeArg('--wheel-diameter-error', 0, 20)),
+      )
+      .addOption(
+        new Option(
+          '--wheel-slip <pct>',
+          'reality: most travel a wheel loses to slip per motion, percent, seeded',
+        ).argParser(rangeArg('--wheel-slip', 0, 50)),
+      )
+      .addOption(
+        new Option(
+          '--odometry-noise <pct>',
+          "reality: the odometry's error on each wheel's travel per motion, standard deviation in percent, seeded",
+        ).argParser(rangeArg('--odometry-noise', 0, 20)),
+      )
       .action(async (options: EvalCliOptions) => {
         const g = global();
         const names = agentNames(options.agent);
@@ -237,6 +258,13 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           ...(options.latency === undefined ? {} : { latencyMs: options.latency }),
           ...(options.loss === undefined ? {} : { lossRate: options.loss }),
           ...(options.rangeNoise === undefined ? {} : { rangeNoiseM: options.rangeNoise }),
+          ...(options.wheelDiameterError === undefined
+            ? {}
+            : { wheelDiameterErrorPct: options.wheelDiameterError }),
+          ...(options.wheelSlip === undefined ? {} : { wheelSlipPct: options.wheelSlip }),
+          ...(options.odometryNoise === undefined
+            ? {}
+            : { odometryNoisePct: options.odometryNoise }),
         };
         const tools = options.tools
           ?.split(',')

@@ -9,6 +9,9 @@ import type { TaskVariant } from '../variant.js';
 /** How often the oracle repeats a call that failed (a fault, a timeout) before it gives up. */
 const ATTEMPTS = 8;
 
+/** How often the oracle corrects a move the wheels did not make exactly (slip, diameter error). */
+const CORRECTIONS = 3;
+
 /** Thrown inside the oracle when the e-stop latched and the task says not to reset it. */
 class Latched extends Error {}
 
@@ -101,10 +104,24 @@ class OracleRun {
     }
   }
 
+  /** Turns to `yaw`, and again while the wheels (a reality knob) left it more than 0.2° off. */
   async #turnTo(yaw: number): Promise<void> {
-    const turn = (wrapAngle(yaw - this.#pose.yaw) * 180) / Math.PI;
-    if (Math.abs(turn) < 0.2) return;
-    await this.#call('rotate', { direction: turn > 0 ? 'left' : 'right', degrees: Math.abs(turn) });
+    for (let attempt = 0; attempt < CORRECTIONS; attempt += 1) {
+      const turn = (wrapAngle(yaw - this.#pose.yaw) * 180) / Math.PI;
+      if (Math.abs(turn) < 0.2) return;
+      await this.#call('rotate', {
+        direction: turn > 0 ? 'left' : 'right',
+        degrees: Math.abs(turn),
+      });
+    }
+  }
+
+  /** Drives to (x, y) again while the body (a reality knob) ended more than 3 mm from it. */
+  async #correctTo(x: number, y: number): Promise<void> {
+    for (let attempt = 0; attempt < CORRECTIONS; attempt += 1) {
+      if (Math.hypot(x - this.#pose.x, y - this.#pose.y) < 0.003) return;
+      await this.#goTo(x, y);
+    }
   }
 
   async #goTo(x: number, y: number): Promise<void> {
@@ -129,12 +146,14 @@ class OracleRun {
         const target = targetOf(check, truth) as { x: number; y: number; yaw?: number };
         if (check.leftM === 0 && check.forwardM !== 0) await this.#forward(check.forwardM * 100);
         else await this.#goTo(target.x, target.y);
+        await this.#correctTo(target.x, target.y);
         if (target.yaw !== undefined) await this.#turnTo(target.yaw);
         return 'Done.';
       }
       case 'return': {
         await this.#forward((check.minExcursionM + 0.05) * 100);
         await this.#goTo(truth.start.x, truth.start.y);
+        await this.#correctTo(truth.start.x, truth.start.y);
         return 'Back at the start.';
       }
       case 'reach-point': {

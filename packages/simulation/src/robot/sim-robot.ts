@@ -1,6 +1,8 @@
 import { rotationArcCm } from '@hal/kinematics';
 import { HalError, normalizeAngle, robotConfig, stepsPerCm, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
+import { BodyErrorModel, hasBodyError, parseBodyError } from './body-error.js';
+import type { BodyErrorInput } from './body-error.js';
 import type { ContactTest, FreeSpaceTest } from './contact.js';
 import { MotionExecutor } from './motion-executor.js';
 import type { MotionHandle, MotionReport } from './motion-report.js';
@@ -49,6 +51,8 @@ export interface SimRobotOptions {
   start?: { x: number; y: number; yaw: number };
   /** Radius of the robot's footprint for collisions, metres. Default 0.07 (a 10 cm cube). */
   radius?: number;
+  /** How the body differs from the nominal one (wheel diameters, slip, odometry). Default none. */
+  bodyError?: BodyErrorInput;
 }
 
 /** The simulated robot. Commands act at the robot's current simulated time. */
@@ -56,6 +60,8 @@ export class SimRobot {
   readonly id: string;
   /** Footprint radius, metres. */
   readonly radius: number;
+  /** The body's error (see body-error.ts), or undefined when it is the nominal one. */
+  readonly bodyError: BodyErrorInput | undefined;
   #config: RobotConfig;
   #perCm: number;
   #nowUs = 0;
@@ -73,7 +79,14 @@ export class SimRobot {
     this.#perCm = stepsPerCm(this.#config);
     const start = options.start ?? { x: 0, y: 0, yaw: 0 };
     const pose = { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) };
-    this.#motions = new MotionExecutor(pose, this.radius, () => this.#scheduler?.reschedule(false));
+    const body = parseBodyError(options.bodyError);
+    this.bodyError = hasBodyError(body) ? body : undefined;
+    this.#motions = new MotionExecutor(
+      pose,
+      this.radius,
+      () => this.#scheduler?.reschedule(false),
+      this.bodyError === undefined ? undefined : new BodyErrorModel(body),
+    );
     this.#safety = new RobotSafety({
       nowUs: () => this.#nowUs,
       stopMotion: (outcome) => this.#motions.finish(outcome, this.#nowUs),
@@ -166,6 +179,15 @@ export class SimRobot {
   get yaw(): number {
     this.#catchUp();
     return this.#motions.pose.headingRad;
+  }
+  /**
+   * The pose the robot reports, metres and radians: its odometry, which a body error makes drift
+   * from the true pose ({@link x}, {@link y}, {@link yaw}); without one, the true pose.
+   */
+  get reportedPose(): { x: number; y: number; yaw: number } {
+    this.#catchUp();
+    const p = this.#motions.reportedPose;
+    return { x: p.xCm / 100, y: p.yCm / 100, yaw: p.headingRad };
   }
   /** Absolute wheel positions since the start, steps. */
   get leftSteps(): number {
