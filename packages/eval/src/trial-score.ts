@@ -19,6 +19,11 @@ export interface TrialScore {
   /** The checks that failed, each with why. */
   failures: string[];
   collisions: number;
+  /**
+   * Where the robot ended, metres and degrees: the simulator's ground truth, or on a robot its
+   * own report (its odometry, from its origin where the trial began).
+   */
+  endPose: { x: number; y: number; yawDeg: number };
   /** Distance from the target at the end, metres (tasks with a target point). */
   positionErrorM: number | null;
   /** Heading error at the end, degrees (tasks with a target heading). */
@@ -145,6 +150,11 @@ export function scoreTrial(o: TrialOutcome): TrialScore {
     success: failures.length === 0,
     failures,
     collisions,
+    endPose: {
+      x: round(pose.x),
+      y: round(pose.y),
+      yawDeg: round((wrapAngle(pose.yaw) * 180) / Math.PI, 2),
+    },
     positionErrorM:
       target === undefined ? null : round(Math.hypot(pose.x - target.x, pose.y - target.y)),
     headingErrorDeg:
