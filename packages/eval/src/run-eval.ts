@@ -58,6 +58,8 @@ export interface EvalOptions extends TrialOptions {
    * a time per robot. Their rows sit beside the simulator's, named `AGENT@ROBOT`.
    */
   robots?: readonly EvalRobot[];
+  /** Whether the agents run in the simulator too (`false`: on the robots only). Default true. */
+  simulator?: boolean;
   /** Told of every trial as it ends (in the order they end). */
   onTrial?: (event: {
     agent: string;
@@ -96,6 +98,8 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   if (options.agents.length === 0) throw new EvalError('CONFIG', 'no agents to run');
   const robots = options.robots ?? [];
   const onRobot = options.tasks.filter(runsOnRobot);
+  if (options.simulator === false && robots.length === 0)
+    throw new EvalError('CONFIG', 'no simulator and no robot to run on');
   if (robots.length > 0 && onRobot.length === 0)
     throw new EvalError(
       'CONFIG',
@@ -103,7 +107,11 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
     );
   // one row per agent and place: the simulator's first, then each robot's
   const rows = [
-    ...options.agents.map((agent) => ({ agent, name: agent.name, robot: undefined })),
+    ...(options.simulator === false ? [] : options.agents).map((agent) => ({
+      agent,
+      name: agent.name,
+      robot: undefined,
+    })),
     ...robots.flatMap((robot) =>
       options.agents.map((agent) => ({ agent, name: `${agent.name}@${robot.name}`, robot })),
     ),
@@ -133,6 +141,7 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
     seed: _s,
     concurrency: _c,
     robots: _r,
+    simulator: _sim,
     onTrial,
     ...trialOptions
   } = options;

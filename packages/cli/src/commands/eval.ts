@@ -13,14 +13,18 @@ import {
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import { integerArg } from '../values.js';
+import { hexKeyArg, integerArg, positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
+import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 interface EvalCliOptions extends LeashCliOptions {
+  on: string;
+  timeScale?: number;
+  key?: string;
   latency?: number;
   loss?: number;
   rangeNoise?: number;
@@ -133,7 +137,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
     addLeashOptions(new Command('eval'))
       .description(
-        'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, nav, the local model, openai:MODEL)',
+        'score agents on seeded tasks in the simulator, from its ground truth, and on a robot from its reports (oracle, naive, claimer, nav, the local model, openai:MODEL)',
       )
       .addOption(
         new Option(
@@ -168,6 +172,19 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           .default(1)
           .argParser(integerArg('--concurrency', 1, 64)),
       )
+      .addOption(
+        new Option(
+          '--on <places>',
+          'where to run, comma-separated: sim, emulator (a cube-emulator started for the run), udp://HOST[:PORT]; a robot runs the tasks judged from its reports (precision)',
+        ).default('sim'),
+      )
+      .addOption(
+        new Option(
+          '--time-scale <x>',
+          "the robot's clock speed-up: the emulator is started with it, a udp:// emulator runs at it",
+        ).argParser(positiveArg('--time-scale')),
+      )
+      .addOption(new Option('--key <hex>', "a udp:// robot's pre-shared key").argParser(hexKeyArg))
       .addOption(
         new Option('--out <dir>', 'write eval.json, eval.md and eval.svg into this folder'),
       )
@@ -251,6 +268,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       .action(async (options: EvalCliOptions) => {
         const g = global();
         const names = agentNames(options.agent);
+        const places = parsePlaces(options.on);
         const tasks = await chooseTasks(options);
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);
@@ -284,12 +302,20 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           io.env,
         );
         let report: EvalReport;
+        let opened: Awaited<ReturnType<typeof openPlaces>> | undefined;
         try {
+          opened = await openPlaces(places, {
+            ...(options.timeScale === undefined ? {} : { timeScale: options.timeScale }),
+            ...(options.key === undefined ? {} : { key: options.key }),
+            env: io.env,
+            signal: io.signal,
+            onBuild: (dir) => progress(io, g, `building cube-emulator in ${dir} (if needed)...`),
+          });
           const concurrency = built.local ? 1 : options.concurrency;
           progress(
             io,
             g,
-            `${names.join(', ')}: ${tasks.length} task(s) x ${options.trials} trial(s), seed ${options.seed}, ${concurrency} at a time`,
+            `${names.join(', ')}: ${tasks.length} task(s) x ${options.trials} trial(s), seed ${options.seed}, ${concurrency} at a time, on ${places.map((p) => (p.kind === 'udp' ? `udp://${p.host}:${p.port}` : p.kind)).join(', ')}`,
           );
           report = await runEval({
             tasks,
@@ -297,6 +323,8 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             trials: options.trials,
             seed: options.seed,
             concurrency,
+            simulator: opened.simulator,
+            robots: opened.robots,
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
             ...(sensors === undefined ? {} : { sensors }),
             ...(Object.keys(leash).length === 0 ? {} : { leash }),
@@ -308,7 +336,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
                 `${bar(done, total)} ${done}/${total} ${agent} ${score.task} seed ${score.seed}: ${score.success ? 'pass' : `FAIL (${score.failures[0] ?? ''})`}`,
               ),
           });
+        } catch (error) {
+          if (error instanceof EvalError)
+            throw new CliError('FAILED', `${error.code}: ${error.message}`);
+          throw error;
         } finally {
+          await opened?.dispose();
           await built.dispose();
         }
         if (options.out !== undefined) {
