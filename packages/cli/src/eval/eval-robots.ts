@@ -72,7 +72,7 @@ function udpRobot(
         new PhysicalHAL(
           {
             mode: 'physical',
-            deviceId: name,
+            deviceId: 'robot',
             connection: {
               type: 'wifi',
               host,
