@@ -78,6 +78,7 @@ export async function runRobotTrial(
   let body: TrialBody | undefined;
   const instrumented = await options.instrument?.(raw, {
     task,
+    variant,
     seed,
     trial: options.trial ?? 0,
     agent: agent.name,

@@ -55,6 +55,8 @@ export interface TrialTiming {
 /** What an instrument of a trial is told (see {@link TrialOptions.instrument}). */
 export interface TrialInfo {
   task: Task;
+  /** The task's world as the seed placed it (on a robot: with the robot at its origin). */
+  variant: TaskVariant;
   seed: number;
   /** Which of the task's k trials this is, from 0. */
   trial: number;

@@ -41,6 +41,7 @@ export async function runTrial(
   });
   const instrumented = await options.instrument?.(sim, {
     task,
+    variant,
     seed,
     trial: options.trial ?? 0,
     agent: agent.name,

@@ -17,12 +17,14 @@ import { hexKeyArg, integerArg, positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
 import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
+import { recordTrials } from '../eval/record-trials.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 interface EvalCliOptions extends LeashCliOptions {
   on: string;
+  record?: string;
   timeScale?: number;
   key?: string;
   latency?: number;
@@ -190,6 +192,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       )
       .addOption(
         new Option(
+          '--record <dir>',
+          'keep every trial as an MCAP recording: DIR/AGENT/GROUP/TASK/seed-S-trial-I.mcap',
+        ),
+      )
+      .addOption(
+        new Option(
           '--min-success <rate>',
           'exit 1 when an agent succeeds on less than this fraction of trials (0..1)',
         ).argParser(fraction),
@@ -303,6 +311,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         );
         let report: EvalReport;
         let opened: Awaited<ReturnType<typeof openPlaces>> | undefined;
+        const recording = options.record === undefined ? undefined : recordTrials(options.record);
         try {
           opened = await openPlaces(places, {
             ...(options.timeScale === undefined ? {} : { timeScale: options.timeScale }),
@@ -324,6 +333,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             seed: options.seed,
             concurrency,
             simulator: opened.simulator,
+            ...(recording === undefined ? {} : { instrument: recording.instrument }),
             robots: opened.robots,
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
             ...(sensors === undefined ? {} : { sensors }),
@@ -343,6 +353,15 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         } finally {
           await opened?.dispose();
           await built.dispose();
+        }
+        if (recording !== undefined) {
+          const { files, dropped } = recording.recorded;
+          progress(
+            io,
+            g,
+            `recorded ${files.length} trial(s) in ${options.record ?? ''}` +
+              (dropped > 0 ? ` (${dropped} message(s) dropped: the disk was too slow)` : ''),
+          );
         }
         if (options.out !== undefined) {
           const files = await writeReports(options.out, report);
