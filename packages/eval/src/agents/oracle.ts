@@ -12,6 +12,11 @@ const ATTEMPTS = 8;
 /** How often the oracle corrects a move the wheels did not make exactly (slip, diameter error). */
 const CORRECTIONS = 3;
 
+/** The legs of a drive to a point once the wheels are seen to curve, cm. */
+const SHORT_LEG_CM = 25;
+/** The most legs of one drive to a point. */
+const MAX_LEGS = 40;
+
 /** Thrown inside the oracle when the e-stop latched and the task says not to reset it. */
 class Latched extends Error {}
 
@@ -37,12 +42,15 @@ class OracleRun {
   readonly #truth: TaskVariant;
   readonly #resetAllowed: boolean;
   #pose = { x: 0, y: 0, yaw: 0 };
+  /** The longest leg of a drive to a point, cm (shortened when the wheels curve). */
+  #legCm = 100;
 
   constructor(trial: AgentTrial, truth: TaskVariant) {
     this.#trial = trial;
     this.#truth = truth;
     this.#resetAllowed = truth.task.checks.some((c) => c.kind === 'estop' && !c.latched);
     this.#pose = { ...truth.start };
+    this.#legCm = this.#chunkCm;
   }
 
   async run(): Promise<AgentAnswer> {
@@ -124,11 +132,26 @@ class OracleRun {
     }
   }
 
+  /**
+   * Turns toward (x, y) and drives there, leg by leg. Wheels that are not what they seem (the
+   * reality knobs) curve a straight move: once a leg ends more than 5 mm off its line, the legs
+   * are cut to {@link SHORT_LEG_CM}, each aimed again from where the robot really is.
+   */
   async #goTo(x: number, y: number): Promise<void> {
-    const d = Math.hypot(x - this.#pose.x, y - this.#pose.y);
-    if (d < 0.002) return;
-    await this.#turnTo(Math.atan2(y - this.#pose.y, x - this.#pose.x));
-    await this.#forward(Math.hypot(x - this.#pose.x, y - this.#pose.y) * 100);
+    for (let leg = 0; leg < MAX_LEGS; leg += 1) {
+      const d = Math.hypot(x - this.#pose.x, y - this.#pose.y);
+      if (d < 0.002) return;
+      await this.#turnTo(Math.atan2(y - this.#pose.y, x - this.#pose.x));
+      const from = { ...this.#pose };
+      const aim = Math.atan2(y - from.y, x - from.x);
+      const cm = Math.min(Math.hypot(x - from.x, y - from.y) * 100, this.#legCm);
+      await this.#call('move_forward', { distanceCm: cm });
+      const dx = this.#pose.x - from.x;
+      const dy = this.#pose.y - from.y;
+      if (Math.hypot(dx, dy) * 100 < 0.01) return; // blocked for good: leave it to the checks
+      if (Math.abs(-Math.sin(aim) * dx + Math.cos(aim) * dy) > 0.005)
+        this.#legCm = Math.min(this.#legCm, SHORT_LEG_CM);
+    }
   }
 
   async #follow(
