@@ -2,6 +2,7 @@ import { SimulationHAL } from '@hal/simulation';
 import { describe, expect, it } from 'vitest';
 import { naiveAgent } from './agents/baselines.js';
 import { oracleAgent } from './agents/oracle.js';
+import { markdownReport } from './report/markdown.js';
 import { builtinTasks } from './builtin-tasks.js';
 import type { EvalRobot } from './robot-trial.js';
 import { runsOnRobot } from './robot-trial.js';
@@ -38,6 +39,9 @@ describe('runEval on a robot', () => {
     const drive = oracle?.trials.find((t) => t.task === 'precision/drive-30cm');
     expect(drive?.endPose.x).toBeCloseTo(0.3, 2);
     expect(drive?.endPose.y).toBeCloseTo(0, 3);
+    const md = markdownReport(report);
+    expect(md).toContain('from what the robot itself reports');
+    expect(md).toContain('## oracle@twin\n\nOn twin, scored from what the robot reports.');
     const naive = report.scores.agents[3];
     expect(naive?.overall.successes).toBe(
       report.scores.agents[1]?.trials.filter(
