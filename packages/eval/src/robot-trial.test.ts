@@ -61,6 +61,29 @@ describe('runEval on a robot', () => {
     });
   });
 
+  it('leaves a latch it did not set alone: the run fails with ROBOT and the robot stays stopped', async () => {
+    const stopped = new SimulationHAL();
+    const latched: EvalRobot = {
+      name: 'cube-3',
+      open: async () => {
+        await stopped.safety.emergencyStop('pressed by a person');
+        return stopped;
+      },
+    };
+    await expect(
+      runEval({
+        tasks: builtinTasks(['precision']),
+        agents: [oracleAgent()],
+        robots: [latched],
+        trials: 1,
+      }),
+    ).rejects.toMatchObject({
+      code: 'ROBOT',
+      message: expect.stringMatching(/^cube-3: the emergency stop is engaged/),
+    });
+    expect(stopped.safety.isEmergencyStopped()).toBe(true);
+  });
+
   it('fails with ROBOT, naming the robot, when it cannot be reached', async () => {
     const offline: EvalRobot = {
       name: 'cube-7',

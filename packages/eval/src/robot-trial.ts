@@ -76,6 +76,8 @@ export async function runRobotTrial(
     throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
   }
   let body: TrialBody | undefined;
+  /** Whether a latch at the end is this trial's own (an injected or the agent's e-stop). */
+  let latchedByTrial = false;
   const instrumented = await options.instrument?.(raw, {
     task,
     variant,
@@ -93,6 +95,13 @@ export async function runRobotTrial(
     } catch (error) {
       throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
     }
+    // a latch the harness did not set is someone's: it is not reset here
+    if (raw.safety.isEmergencyStopped())
+      throw new EvalError(
+        'ROBOT',
+        `${robot.name}: the emergency stop is engaged; reset it on the robot before the run`,
+      );
+    latchedByTrial = true;
     return await conductTrial({
       task,
       seed,
@@ -106,7 +115,7 @@ export async function runRobotTrial(
       started,
     });
   } finally {
-    if (raw.isReady() && raw.safety.isEmergencyStopped())
+    if (latchedByTrial && raw.isReady() && raw.safety.isEmergencyStopped())
       await raw.safety.resetEmergencyStop().catch(() => undefined);
     await hal.cleanup().catch(() => undefined);
     await instrumented?.close();

@@ -151,6 +151,8 @@ describe('hal eval', () => {
 
   it.each([
     [['--wheel-slip', '60'], /"--wheel-slip" must be a number from 0 to 50/],
+    [['--time-scale', '10'], /"--time-scale" needs a robot/],
+    [['--on', 'sim', '--key', 'abcd'], /"--key" needs a robot --on udp/],
     [['--sensors', 'sonar'], /unknown sensor "sonar"/],
     [['--loss', '1'], /--loss/],
     [['--agent', 'gpt'], /unknown agent "gpt"/],

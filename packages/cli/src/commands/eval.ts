@@ -277,6 +277,11 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         const g = global();
         const names = agentNames(options.agent);
         const places = parsePlaces(options.on);
+        const robotNamed = places.some((p) => p.kind !== 'sim');
+        if (!robotNamed && options.timeScale !== undefined)
+          throw new CliError('USAGE', '"--time-scale" needs a robot: --on emulator or udp://...');
+        if (!places.some((p) => p.kind === 'udp') && options.key !== undefined)
+          throw new CliError('USAGE', '"--key" needs a robot --on udp://...');
         const tasks = await chooseTasks(options);
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);
