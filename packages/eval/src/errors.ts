@@ -3,7 +3,9 @@ export type EvalErrorCode =
   /** A task file could not be read, broke the schema, or names something its world lacks. */
   | 'TASK_INVALID'
   /** The options of a run are wrong (an unknown group, agent, or a bad number). */
-  | 'CONFIG';
+  | 'CONFIG'
+  /** A robot the tasks were to run on could not be reached or failed during a trial. */
+  | 'ROBOT';
 
 /** An error of `@hal/eval`, with a literal code; task errors name the file and the field. */
 export class EvalError extends Error {

@@ -25,7 +25,6 @@ export type {
   TaskObject,
 } from './task-schema.js';
 export { checkTaskFile, loadTaskFile, parseTaskFile } from './task-load.js';
-export { realiseTask, variantSeed } from './variant.js';
 export type { TaskVariant } from './variant.js';
 export { judge, trueAnswer } from './checks.js';
 export type { CheckVerdict, TrialEnd } from './checks.js';
@@ -33,7 +32,11 @@ export type { AgentAnswer, AgentTrial, EvalAgent } from './agent.js';
 export { oracleAgent } from './agents/oracle.js';
 export { claimerAgent, naiveAgent } from './agents/baselines.js';
 export { runTrial } from './trial.js';
-export type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
+export type { InstrumentedHal, TrialInfo, TrialOptions, TrialScore, TrialTiming } from './trial.js';
+export { runRobotTrial, runsOnRobot } from './robot-trial.js';
+export type { EvalRobot } from './robot-trial.js';
+export type { TrialBody } from './bodies/trial-body.js';
+export { realiseAtOrigin, realiseTask, variantSeed } from './variant.js';
 export { summariseGroups, summariseTasks, wilson } from './scores.js';
 export type { GroupSummary, Rate, TaskSummary } from './scores.js';
 export { REPORT_VERSION, runEval } from './run-eval.js';

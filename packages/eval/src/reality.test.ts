@@ -2,7 +2,11 @@ import { describe, expect, it } from 'vitest';
 import { naiveAgent } from './agents/baselines.js';
 import { oracleAgent } from './agents/oracle.js';
 import { builtinTasks } from './builtin-tasks.js';
+import type { EvalAgent } from './agent.js';
+import { navigationAgent } from './agents/navigation.js';
+import type { RealityInput } from './reality.js';
 import { runEval } from './run-eval.js';
+import type { EvalReport } from './run-eval.js';
 
 describe('the reality knobs', () => {
   it('lose calls by the seed: the oracle recovers, the same seed loses the same calls', async () => {
@@ -42,6 +46,62 @@ describe('the reality knobs', () => {
     expect((b?.simSeconds ?? 0) - (a?.simSeconds ?? 0)).toBeCloseTo(2 * 0.5, 2);
     expect(b?.success).toBe(true);
   }, 60_000);
+
+  it('move the body otherwise than its odometry says: wheel errors and slip make the naive agent miss by more, the oracle still succeeds', async () => {
+    const tasks = builtinTasks(['precision']).filter((t) => t.id === 'precision/drive-30cm');
+    const run = (agent: EvalAgent, reality?: RealityInput) =>
+      runEval({ tasks, agents: [agent], trials: 4, seed: 3, ...(reality ? { reality } : {}) });
+    const meanError = (report: EvalReport) => {
+      const trials = report.scores.agents[0]?.trials ?? [];
+      return trials.reduce((s, t) => s + (t.positionErrorM ?? 0), 0) / trials.length;
+    };
+    const perfect = meanError(await run(naiveAgent()));
+    const wheels = meanError(await run(naiveAgent(), { wheelDiameterErrorPct: 3 }));
+    const slip = await run(naiveAgent(), { wheelSlipPct: 10 });
+    expect(perfect).toBeLessThan(0.001);
+    expect(wheels).toBeGreaterThan(perfect + 0.002);
+    expect(meanError(slip)).toBeGreaterThan(perfect + 0.002);
+    expect(slip.scores.agents[0]?.overall.successes).toBeLessThan(4);
+    const all = { wheelDiameterErrorPct: 2, wheelSlipPct: 5, odometryNoisePct: 2 };
+    const oracle = await runEval({
+      tasks: builtinTasks(['precision']),
+      agents: [oracleAgent()],
+      trials: 2,
+      seed: 3,
+      reality: all,
+    });
+    expect(oracle.scores.agents[0]?.overall.rate).toBe(1);
+    const again = await runEval({
+      tasks: builtinTasks(['precision']),
+      agents: [oracleAgent()],
+      trials: 2,
+      seed: 3,
+      reality: all,
+    });
+    expect(JSON.stringify(again.scores)).toBe(JSON.stringify(oracle.scores));
+  }, 120_000);
+
+  it('let the odometry drift: the navigation bridge, which steers by the reported pose, ends farther from the target', async () => {
+    const tasks = builtinTasks(['precision']).filter((t) => t.id === 'precision/drive-30cm');
+    const run = (reality?: RealityInput) =>
+      runEval({
+        tasks,
+        agents: [navigationAgent()],
+        trials: 4,
+        seed: 1,
+        ...(reality ? { reality } : {}),
+      });
+    const meanError = (report: EvalReport) => {
+      const trials = report.scores.agents[0]?.trials ?? [];
+      return trials.reduce((s, t) => s + (t.positionErrorM ?? 0), 0) / trials.length;
+    };
+    const perfect = meanError(await run());
+    const noisy = await run({ odometryNoisePct: 5 });
+    expect(meanError(noisy)).toBeGreaterThan(perfect + 0.002);
+    expect(JSON.stringify((await run({ odometryNoisePct: 5 })).scores)).toBe(
+      JSON.stringify(noisy.scores),
+    );
+  }, 120_000);
 
   it('refuses a knob out of range, naming it', async () => {
     await expect(

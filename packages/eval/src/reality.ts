@@ -1,9 +1,12 @@
+import type { BodyErrorInput } from '@hal/simulation';
 import { z } from 'zod';
 
 /**
- * Reality knobs: what separates a perfect simulator from a real robot on a real link. All off by
- * default; all seeded (the same seed loses the same calls and draws the same noise), so a run
- * with knobs is as repeatable as one without.
+ * Reality knobs: what separates a perfect simulator from a real robot on a real link and real
+ * wheels. All off by default; all seeded (the same seed loses the same calls and draws the same
+ * noise), so a run with knobs is as repeatable as one without. The wheel and odometry knobs are
+ * the simulator's body error (`bodyError` of @hal/simulation): the world moves the robot where
+ * its body really goes, and the checks judge that, while the robot reports its odometry.
  */
 export const RealitySchema = z
   .object({
@@ -27,7 +30,38 @@ export const RealitySchema = z
       .max(1)
       .default(0)
       .describe('Standard deviation of Gaussian noise on range readings, metres'),
+    wheelDiameterErrorPct: z
+      .number()
+      .min(0)
+      .max(20)
+      .default(0)
+      .describe(
+        "Standard deviation of each wheel's true diameter from the nominal, percent (the body goes farther or shorter than its odometry says)",
+      ),
+    wheelSlipPct: z
+      .number()
+      .min(0)
+      .max(50)
+      .default(0)
+      .describe(
+        'Most ground travel a wheel loses to slip in one motion, percent (uniform from 0 per motion and wheel)',
+      ),
+    odometryNoisePct: z
+      .number()
+      .min(0)
+      .max(20)
+      .default(0)
+      .describe(
+        "Standard deviation of the odometry's error on each wheel's travel per motion, percent (the reported pose drifts from the true one)",
+      ),
   })
   .strict();
 export type Reality = z.output<typeof RealitySchema>;
 export type RealityInput = z.input<typeof RealitySchema>;
+
+/** The simulator's body error for these knobs and this trial's seed (undefined when all off). */
+export function bodyErrorOf(reality: Reality, seed: number): BodyErrorInput | undefined {
+  const { wheelDiameterErrorPct, wheelSlipPct, odometryNoisePct } = reality;
+  if (wheelDiameterErrorPct === 0 && wheelSlipPct === 0 && odometryNoisePct === 0) return undefined;
+  return { wheelDiameterErrorPct, wheelSlipPct, odometryNoisePct, seed };
+}

@@ -3,6 +3,8 @@ import { EvalError } from './errors.js';
 import { RealitySchema } from './reality.js';
 import { summariseGroups, summariseTasks } from './scores.js';
 import type { GroupSummary, Rate, TaskSummary } from './scores.js';
+import { runRobotTrial, runsOnRobot } from './robot-trial.js';
+import type { EvalRobot } from './robot-trial.js';
 import type { Task } from './task-schema.js';
 import { runTrial } from './trial.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
@@ -10,9 +12,12 @@ import type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
 /** The version of the report's JSON shape. */
 export const REPORT_VERSION = 1;
 
-/** One agent's scores. */
+/** One agent's scores (on one robot: the simulator, or a robot of {@link EvalOptions.robots}). */
 export interface AgentScores {
+  /** The agent's name; on a robot, `NAME@ROBOT`. */
   agent: string;
+  /** `simulator` (scored from its ground truth), or the robot's name (from its reports). */
+  on: string;
   overall: Rate;
   groups: GroupSummary[];
   tasks: TaskSummary[];
@@ -45,8 +50,16 @@ export interface EvalOptions extends TrialOptions {
   trials?: number;
   /** Default 1. */
   seed?: number;
-  /** Trials run at once. Default 1. */
+  /** Trials run at once in the simulator. Default 1. */
   concurrency?: number;
+  /**
+   * Robots to run the same agents on as well, after the simulator: each of the tasks that
+   * {@link runsOnRobot} (the precision group, judged from the robot's own reports), one trial at
+   * a time per robot. Their rows sit beside the simulator's, named `AGENT@ROBOT`.
+   */
+  robots?: readonly EvalRobot[];
+  /** Whether the agents run in the simulator too (`false`: on the robots only). Default true. */
+  simulator?: boolean;
   /** Told of every trial as it ends (in the order they end). */
   onTrial?: (event: {
     agent: string;
@@ -83,9 +96,37 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   }
   if (options.tasks.length === 0) throw new EvalError('CONFIG', 'no tasks to run');
   if (options.agents.length === 0) throw new EvalError('CONFIG', 'no agents to run');
-  const jobs = options.agents.flatMap((agent, a) =>
-    options.tasks.flatMap((task) =>
-      Array.from({ length: trials }, (_, i) => ({ a, agent, task, seed: seed + i })),
+  const robots = options.robots ?? [];
+  const onRobot = options.tasks.filter(runsOnRobot);
+  if (options.simulator === false && robots.length === 0)
+    throw new EvalError('CONFIG', 'no simulator and no robot to run on');
+  if (robots.length > 0 && onRobot.length === 0)
+    throw new EvalError(
+      'CONFIG',
+      'none of the tasks can run on a robot: only those judged from its reports can (the precision group)',
+    );
+  // one row per agent and place: the simulator's first, then each robot's
+  const rows = [
+    ...(options.simulator === false ? [] : options.agents).map((agent) => ({
+      agent,
+      name: agent.name,
+      robot: undefined,
+    })),
+    ...robots.flatMap((robot) =>
+      options.agents.map((agent) => ({ agent, name: `${agent.name}@${robot.name}`, robot })),
+    ),
+  ];
+  const jobs = rows.flatMap((row, a) =>
+    (row.robot === undefined ? options.tasks : onRobot).flatMap((task) =>
+      Array.from({ length: trials }, (_, i) => ({
+        a,
+        agent: row.agent,
+        name: row.name,
+        robot: row.robot,
+        task,
+        seed: seed + i,
+        trial: i,
+      })),
     ),
   );
   const results: ({ score: TrialScore; timing: TrialTiming } | undefined)[] = new Array(
@@ -99,36 +140,54 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
     trials: _k,
     seed: _s,
     concurrency: _c,
+    robots: _r,
+    simulator: _sim,
     onTrial,
     ...trialOptions
   } = options;
-  async function worker(): Promise<void> {
-    for (let i = next++; i < jobs.length; i = next++) {
-      const job = jobs[i] as (typeof jobs)[number];
-      const result = await runTrial(job.task, job.seed, job.agent, trialOptions);
-      results[i] = result;
-      done += 1;
-      onTrial?.({ agent: job.agent.name, ...result, done, total: jobs.length });
-    }
+  const simulated = jobs.flatMap((job, i) => (job.robot === undefined ? [i] : []));
+  async function run(i: number): Promise<void> {
+    const job = jobs[i] as (typeof jobs)[number];
+    const perTrial = { ...trialOptions, trial: job.trial };
+    const result =
+      job.robot === undefined
+        ? await runTrial(job.task, job.seed, job.agent, perTrial)
+        : await runRobotTrial(job.task, job.seed, job.agent, job.robot, perTrial);
+    results[i] = result;
+    done += 1;
+    onTrial?.({ agent: job.name, ...result, done, total: jobs.length });
   }
-  await Promise.all(Array.from({ length: Math.min(concurrency, jobs.length) }, () => worker()));
+  async function worker(): Promise<void> {
+    for (let n = next++; n < simulated.length; n = next++) await run(simulated[n] as number);
+  }
+  await Promise.all(
+    Array.from({ length: Math.min(concurrency, simulated.length) }, () => worker()),
+  );
+  // then the robots, one trial at a time each (one robot, one session): after the simulator,
+  // whose CPU work would otherwise hold up the robots' clocks
+  await Promise.all(
+    robots.map(async (robot) => {
+      for (const [i, job] of jobs.entries()) if (job.robot === robot) await run(i);
+    }),
+  );
 
   const agents: AgentScores[] = [];
   const timing: EvalReport['timing']['agents'] = [];
-  options.agents.forEach((agent, a) => {
+  rows.forEach((row, a) => {
     const mine = jobs.flatMap((job, i) =>
       job.a === a && results[i] !== undefined ? [{ job, result: results[i] }] : [],
     );
     const scores = mine.map((m) => m.result.score);
     agents.push({
-      agent: agent.name,
+      agent: row.name,
+      on: row.robot?.name ?? 'simulator',
       ...summariseGroups(scores),
       tasks: summariseTasks(scores),
       trials: scores,
     });
     const times = mine.map((m) => ({ task: m.job.task.id, seed: m.job.seed, ...m.result.timing }));
     timing.push({
-      agent: agent.name,
+      agent: row.name,
       wallMs: times.reduce((s, t) => s + t.wallMs, 0),
       modelMs: times.reduce((s, t) => s + t.modelMs, 0),
       trials: times,

@@ -1,7 +1,8 @@
 import { createToolExecutor, halTools } from '@hal/tools';
 import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
-import type { SimulationHAL } from '@hal/simulation';
 import { SeededRandom } from '@hal/simulation';
+import type { HardwareAbstractionLayer } from '@hal/types';
+import type { TrialBody } from './bodies/trial-body.js';
 import type { Reality } from './reality.js';
 import { variantSeed } from './variant.js';
 import type { Fault, Task } from './task-schema.js';
@@ -21,7 +22,7 @@ const REFUSAL_CODES = new Set([
   'BUDGET_EXCEEDED',
 ]);
 
-/** What the executor saw during one trial (ground truth read from the simulator). */
+/** What the executor saw during one trial (read from the trial's body: see TrialBody). */
 export interface TrialLog {
   toolCalls: number;
   refusedCalls: number;
@@ -29,9 +30,9 @@ export interface TrialLog {
   motions: number;
   /** Safety events in the order they happened, e.g. `estop engaged by the operator`. */
   safetyEvents: string[];
-  /** Distance the robot's centre travelled, metres (from its wheels' steps). */
+  /** Distance the robot's centre travelled, metres (see TrialBody.around). */
   pathLengthM: number;
-  /** The robot's true position after each call, metres, starting with the start. */
+  /** The robot's position after each call (the body's), metres, starting with the start. */
   positions: { x: number; y: number }[];
   /** Whether the budget ran out (a call was refused for it). */
   overBudget: boolean;
@@ -56,11 +57,13 @@ function refusal(code: string, message: string): ToolResult {
 }
 
 /**
- * The tools over the trial's SimulationHAL under the task's leash, with the task's faults
- * injected, the budget enforced and every call counted. `toolNames` narrows the tools offered.
+ * The tools over the trial's HAL under the task's leash, with the task's faults injected, the
+ * budget enforced and every call counted, each measured on `body`. `toolNames` narrows the tools
+ * offered.
  */
 export function createTrialExecutor(
-  hal: SimulationHAL,
+  hal: HardwareAbstractionLayer,
+  body: TrialBody,
   task: Task,
   options: { toolNames?: readonly string[]; leash?: Leash; reality?: Reality; seed?: number } = {},
 ): TrialExecutor {
@@ -75,15 +78,14 @@ export function createTrialExecutor(
   );
   const inner = createToolExecutor(hal, { leash, tools });
   const motionTools = new Set(tools.filter((t) => t.motion).map((t) => t.name));
-  const robot = hal.robot;
-  const stepM = robot.stepLengthM;
+  const start = body.pose();
   const log: TrialLog = {
     toolCalls: 0,
     refusedCalls: 0,
     motions: 0,
     safetyEvents: [],
     pathLengthM: 0,
-    positions: [{ x: robot.x, y: robot.y }],
+    positions: [{ x: start.x, y: start.y }],
     overBudget: false,
     lostCalls: 0,
   };
@@ -103,7 +105,7 @@ export function createTrialExecutor(
   }
 
   async function execute(call: ToolCall): Promise<ToolResult> {
-    if (log.toolCalls >= task.budget.toolCalls || hal.world.nowUs > budgetUs) {
+    if (log.toolCalls >= task.budget.toolCalls || body.nowUs() > budgetUs) {
       log.overBudget = true;
       log.refusedCalls += 1;
       return refusal('BUDGET_EXCEEDED', `${call.name}: the task's budget is spent; answer now`);
@@ -114,7 +116,7 @@ export function createTrialExecutor(
     if (fault !== undefined) return fault;
     const safety = call.name === 'stop' || call.name === 'emergency_stop';
     if (reality !== undefined && !safety) {
-      if (reality.latencyMs > 0) hal.world.advance(reality.latencyMs * 1000);
+      if (reality.latencyMs > 0) await body.delay(reality.latencyMs);
       if (reality.lossRate > 0 && random.next() < reality.lossRate) {
         log.lostCalls += 1;
         return refusal(
@@ -123,11 +125,10 @@ export function createTrialExecutor(
         );
       }
     }
-    const before = robot.leftSteps + robot.rightSteps;
-    const result = await inner.execute(call);
-    const after = robot.leftSteps + robot.rightSteps;
-    log.pathLengthM += (Math.abs(after - before) / 2) * stepM;
-    log.positions.push({ x: robot.x, y: robot.y });
+    const { result, pathM } = await body.around(() => inner.execute(call));
+    log.pathLengthM += pathM;
+    const at = body.pose();
+    log.positions.push({ x: at.x, y: at.y });
     if (result.isError && result.code !== undefined && REFUSAL_CODES.has(result.code)) {
       log.refusedCalls += 1;
       if (result.code === 'LEASH_GEOFENCE') log.safetyEvents.push('geofence refused a motion');
@@ -139,7 +140,7 @@ export function createTrialExecutor(
     if (motionTools.has(call.name) && !(result.isError && REFUSAL_CODES.has(result.code ?? ''))) {
       log.motions += 1;
       for (const f of faults) {
-        if (f.kind === 'estop' && f.afterMotions === log.motions && !robot.emergencyStopped) {
+        if (f.kind === 'estop' && f.afterMotions === log.motions && !body.emergencyStopped()) {
           await hal.safety.emergencyStop('operator pressed the emergency stop');
           log.safetyEvents.push('estop engaged by the operator');
         }

@@ -28,6 +28,21 @@ export function variantSeed(taskId: string, seed: number): number {
 /** Rounds to 0.1 mm, so a variant is written down the same everywhere. */
 const mm = (v: number) => Math.round(v * 10_000) / 10_000;
 
+/**
+ * The member of `task`'s family for a robot, which starts where it stands (its odometry's origin,
+ * facing +x): the seed moves only the objects, and draws the seeded faults as ever.
+ */
+export function realiseAtOrigin(task: Task, seed: number): TaskVariant {
+  return realiseTask(
+    {
+      ...task,
+      world: { ...task.world, start: { x: 0, y: 0, yawDeg: 0 } },
+      variants: { ...task.variants, startM: 0, yawDeg: 0 },
+    },
+    seed,
+  );
+}
+
 /** The member of `task`'s family picked by `seed`. */
 export function realiseTask(task: Task, seed: number): TaskVariant {
   const random = new SeededRandom(variantSeed(task.id, seed));

@@ -24,6 +24,7 @@ export type { SafetyTrip } from './robot-model/robot-safety.js';
 export { checkSetting, FIRMWARE_SETTINGS } from './robot-model/settings.js';
 export type { FirmwareSetting, FirmwareSettingKey } from './robot-model/settings.js';
 export { MAX_DRIVE_DURATION_MS } from './robot-model/speed-limits.js';
+export type { BodyScales, MotionScales, WheelScale } from './robot-model/wheel-scale.js';
 export { blockingContact, NOTHING_TO_TOUCH } from './robot-model/step-contact.js';
 export type {
   ContactTest,

@@ -12,6 +12,8 @@ export type { AddRobotOptions, RealtimeOptions, WorldEvents, WorldOptions } from
 
 export { SimRobot } from './robot/sim-robot.js';
 export type { LedState, SimRobotOptions } from './robot/sim-robot.js';
+export { BodyErrorSchema } from './robot/body-error.js';
+export type { BodyError, BodyErrorInput } from './robot/body-error.js';
 export type { Contact, ContactTest } from './robot/contact.js';
 export type { MotionHandle, MotionReport, MoveOutcome } from './robot/motion-report.js';
 export type { SafetyTrip } from './robot/motion-report.js';

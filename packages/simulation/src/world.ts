@@ -6,6 +6,7 @@ import { BUILTIN_MAPS } from './maps/index.js';
 import type { BuiltinMapName } from './maps/index.js';
 import { SeededRandom } from './rng.js';
 import { SimRobot } from './robot/sim-robot.js';
+import type { BodyErrorInput } from './robot/body-error.js';
 import type { Contact, FreeSpace } from './robot/contact.js';
 import { EventQueue } from './event-queue.js';
 import { solidsOf } from './shapes.js';
@@ -53,6 +54,8 @@ export interface AddRobotOptions {
   start?: { x: number; y: number; yaw: number };
   /** Footprint radius, metres. Default 0.07. */
   radius?: number;
+  /** How the body differs from the nominal one (see SimRobotOptions). Default none. */
+  bodyError?: BodyErrorInput;
 }
 
 /** Options of {@link World.startRealtime}. */
@@ -173,6 +176,7 @@ export class World {
       start,
       ...(options.config === undefined ? {} : { config: options.config }),
       ...(options.radius === undefined ? {} : { radius: options.radius }),
+      ...(options.bodyError === undefined ? {} : { bodyError: options.bodyError }),
     });
     robot.advanceTo(this.#nowUs);
     robot.setScheduler({
@@ -213,7 +217,12 @@ export class World {
     for (const robot of old) {
       robot.stop();
       this.#queue.delete(robot);
-      this.addRobot({ id: robot.id, config: robot.config, radius: robot.radius });
+      this.addRobot({
+        id: robot.id,
+        config: robot.config,
+        radius: robot.radius,
+        ...(robot.bodyError === undefined ? {} : { bodyError: robot.bodyError }),
+      });
     }
     this.events.emit('map', this.#map);
   }

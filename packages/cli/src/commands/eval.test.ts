@@ -130,7 +130,29 @@ describe('hal eval', () => {
     expect(trials.find((t) => t.task === 'precision/drive-30cm')?.refusedCalls).toBeGreaterThan(0);
   });
 
+  it('moves the body otherwise than its odometry with the wheel knobs, the same on every run', async () => {
+    const file = join(dir, 'wheels.json');
+    await writeFile(file, JSON.stringify(oneTask));
+    const run = async (knobs: string[]) => {
+      const io = captureIO();
+      const args = ['--agent', 'naive', '--tasks-file', file, '--trials', '3', ...knobs];
+      expect(await runHal(['--json', 'eval', ...args], io), io.stderr()).toBe(0);
+      return (io.jsonLines()[0] as EvalReport).scores.agents[0]?.trials ?? [];
+    };
+    const error = (trials: EvalReport['scores']['agents'][number]['trials']) =>
+      trials.reduce((s, t) => s + (t.positionErrorM ?? 0), 0) / trials.length;
+    const knobs = ['--wheel-diameter-error', '5', '--wheel-slip', '10', '--odometry-noise', '2'];
+    const perfect = await run([]);
+    const real = await run(knobs);
+    expect(perfect.every((t) => t.success)).toBe(true);
+    expect(error(real)).toBeGreaterThan(error(perfect) + 0.002);
+    expect(await run(knobs)).toEqual(real);
+  });
+
   it.each([
+    [['--wheel-slip', '60'], /"--wheel-slip" must be a number from 0 to 50/],
+    [['--time-scale', '10'], /"--time-scale" needs a robot/],
+    [['--on', 'sim', '--key', 'abcd'], /"--key" needs a robot --on udp/],
     [['--sensors', 'sonar'], /unknown sensor "sonar"/],
     [['--loss', '1'], /--loss/],
     [['--agent', 'gpt'], /unknown agent "gpt"/],

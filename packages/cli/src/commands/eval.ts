@@ -13,17 +13,26 @@ import {
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import { integerArg } from '../values.js';
+import { hexKeyArg, integerArg, positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
+import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
+import { recordTrials } from '../eval/record-trials.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 interface EvalCliOptions extends LeashCliOptions {
+  on: string;
+  record?: string;
+  timeScale?: number;
+  key?: string;
   latency?: number;
   loss?: number;
   rangeNoise?: number;
+  wheelDiameterError?: number;
+  wheelSlip?: number;
+  odometryNoise?: number;
   sensors?: string;
   agent: string;
   tasks?: string;
@@ -130,7 +139,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
     addLeashOptions(new Command('eval'))
       .description(
-        'score agents on seeded tasks in the simulator, from its ground truth (oracle, naive, claimer, nav, the local model, openai:MODEL)',
+        'score agents on seeded tasks in the simulator, from its ground truth, and on a robot from its reports (oracle, naive, claimer, nav, the local model, openai:MODEL)',
       )
       .addOption(
         new Option(
@@ -166,7 +175,26 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           .argParser(integerArg('--concurrency', 1, 64)),
       )
       .addOption(
+        new Option(
+          '--on <places>',
+          'where to run, comma-separated: sim, emulator (a cube-emulator started for the run), udp://HOST[:PORT]; a robot runs the tasks judged from its reports (precision)',
+        ).default('sim'),
+      )
+      .addOption(
+        new Option(
+          '--time-scale <x>',
+          "the robot's clock speed-up: the emulator is started with it, a udp:// emulator runs at it",
+        ).argParser(positiveArg('--time-scale')),
+      )
+      .addOption(new Option('--key <hex>', "a udp:// robot's pre-shared key").argParser(hexKeyArg))
+      .addOption(
         new Option('--out <dir>', 'write eval.json, eval.md and eval.svg into this folder'),
+      )
+      .addOption(
+        new Option(
+          '--record <dir>',
+          'keep every trial as an MCAP recording: DIR/AGENT/GROUP/TASK/seed-S-trial-I.mcap',
+        ),
       )
       .addOption(
         new Option(
@@ -227,9 +255,33 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           'reality: range sensor noise, standard deviation in metres',
         ).argParser(rangeArg('--range-noise', 0, 1)),
       )
+      .addOption(
+        new Option(
+          '--wheel-diameter-error <pct>',
+          "reality: each wheel's true diameter off the nominal, standard deviation in percent, seeded",
+        ).argParser(rangeArg('--wheel-diameter-error', 0, 20)),
+      )
+      .addOption(
+        new Option(
+          '--wheel-slip <pct>',
+          'reality: most travel a wheel loses to slip per motion, percent, seeded',
+        ).argParser(rangeArg('--wheel-slip', 0, 50)),
+      )
+      .addOption(
+        new Option(
+          '--odometry-noise <pct>',
+          "reality: the odometry's error on each wheel's travel per motion, standard deviation in percent, seeded",
+        ).argParser(rangeArg('--odometry-noise', 0, 20)),
+      )
       .action(async (options: EvalCliOptions) => {
         const g = global();
         const names = agentNames(options.agent);
+        const places = parsePlaces(options.on);
+        const robotNamed = places.some((p) => p.kind !== 'sim');
+        if (!robotNamed && options.timeScale !== undefined)
+          throw new CliError('USAGE', '"--time-scale" needs a robot: --on emulator or udp://...');
+        if (!places.some((p) => p.kind === 'udp') && options.key !== undefined)
+          throw new CliError('USAGE', '"--key" needs a robot --on udp://...');
         const tasks = await chooseTasks(options);
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);
@@ -237,6 +289,13 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           ...(options.latency === undefined ? {} : { latencyMs: options.latency }),
           ...(options.loss === undefined ? {} : { lossRate: options.loss }),
           ...(options.rangeNoise === undefined ? {} : { rangeNoiseM: options.rangeNoise }),
+          ...(options.wheelDiameterError === undefined
+            ? {}
+            : { wheelDiameterErrorPct: options.wheelDiameterError }),
+          ...(options.wheelSlip === undefined ? {} : { wheelSlipPct: options.wheelSlip }),
+          ...(options.odometryNoise === undefined
+            ? {}
+            : { odometryNoisePct: options.odometryNoise }),
         };
         const tools = options.tools
           ?.split(',')
@@ -256,12 +315,21 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           io.env,
         );
         let report: EvalReport;
+        let opened: Awaited<ReturnType<typeof openPlaces>> | undefined;
+        const recording = options.record === undefined ? undefined : recordTrials(options.record);
         try {
+          opened = await openPlaces(places, {
+            ...(options.timeScale === undefined ? {} : { timeScale: options.timeScale }),
+            ...(options.key === undefined ? {} : { key: options.key }),
+            env: io.env,
+            signal: io.signal,
+            onBuild: (dir) => progress(io, g, `building cube-emulator in ${dir} (if needed)...`),
+          });
           const concurrency = built.local ? 1 : options.concurrency;
           progress(
             io,
             g,
-            `${names.join(', ')}: ${tasks.length} task(s) x ${options.trials} trial(s), seed ${options.seed}, ${concurrency} at a time`,
+            `${names.join(', ')}: ${tasks.length} task(s) x ${options.trials} trial(s), seed ${options.seed}, ${concurrency} at a time, on ${places.map((p) => (p.kind === 'udp' ? `udp://${p.host}:${p.port}` : p.kind)).join(', ')}`,
           );
           report = await runEval({
             tasks,
@@ -269,6 +337,9 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             trials: options.trials,
             seed: options.seed,
             concurrency,
+            simulator: opened.simulator,
+            ...(recording === undefined ? {} : { instrument: recording.instrument }),
+            robots: opened.robots,
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
             ...(sensors === undefined ? {} : { sensors }),
             ...(Object.keys(leash).length === 0 ? {} : { leash }),
@@ -280,8 +351,22 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
                 `${bar(done, total)} ${done}/${total} ${agent} ${score.task} seed ${score.seed}: ${score.success ? 'pass' : `FAIL (${score.failures[0] ?? ''})`}`,
               ),
           });
+        } catch (error) {
+          if (error instanceof EvalError)
+            throw new CliError('FAILED', `${error.code}: ${error.message}`);
+          throw error;
         } finally {
+          await opened?.dispose();
           await built.dispose();
+        }
+        if (recording !== undefined) {
+          const { files, dropped } = recording.recorded;
+          progress(
+            io,
+            g,
+            `recorded ${files.length} trial(s) in ${options.record ?? ''}` +
+              (dropped > 0 ? ` (${dropped} message(s) dropped: the disk was too slow)` : ''),
+          );
         }
         if (options.out !== undefined) {
           const files = await writeReports(options.out, report);

@@ -9,6 +9,14 @@ import type { TaskVariant } from '../variant.js';
 /** How often the oracle repeats a call that failed (a fault, a timeout) before it gives up. */
 const ATTEMPTS = 8;
 
+/** How often the oracle corrects a move the wheels did not make exactly (slip, diameter error). */
+const CORRECTIONS = 3;
+
+/** The legs of a drive to a point once the wheels are seen to curve, cm. */
+const SHORT_LEG_CM = 25;
+/** The most legs of one drive to a point. */
+const MAX_LEGS = 40;
+
 /** Thrown inside the oracle when the e-stop latched and the task says not to reset it. */
 class Latched extends Error {}
 
@@ -34,12 +42,15 @@ class OracleRun {
   readonly #truth: TaskVariant;
   readonly #resetAllowed: boolean;
   #pose = { x: 0, y: 0, yaw: 0 };
+  /** The longest leg of a drive to a point, cm (shortened when the wheels curve). */
+  #legCm = 100;
 
   constructor(trial: AgentTrial, truth: TaskVariant) {
     this.#trial = trial;
     this.#truth = truth;
     this.#resetAllowed = truth.task.checks.some((c) => c.kind === 'estop' && !c.latched);
     this.#pose = { ...truth.start };
+    this.#legCm = this.#chunkCm;
   }
 
   async run(): Promise<AgentAnswer> {
@@ -101,17 +112,46 @@ class OracleRun {
     }
   }
 
+  /** Turns to `yaw`, and again while the wheels (a reality knob) left it more than 0.2° off. */
   async #turnTo(yaw: number): Promise<void> {
-    const turn = (wrapAngle(yaw - this.#pose.yaw) * 180) / Math.PI;
-    if (Math.abs(turn) < 0.2) return;
-    await this.#call('rotate', { direction: turn > 0 ? 'left' : 'right', degrees: Math.abs(turn) });
+    for (let attempt = 0; attempt < CORRECTIONS; attempt += 1) {
+      const turn = (wrapAngle(yaw - this.#pose.yaw) * 180) / Math.PI;
+      if (Math.abs(turn) < 0.2) return;
+      await this.#call('rotate', {
+        direction: turn > 0 ? 'left' : 'right',
+        degrees: Math.abs(turn),
+      });
+    }
   }
 
+  /** Drives to (x, y) again while the body (a reality knob) ended more than 3 mm from it. */
+  async #correctTo(x: number, y: number): Promise<void> {
+    for (let attempt = 0; attempt < CORRECTIONS; attempt += 1) {
+      if (Math.hypot(x - this.#pose.x, y - this.#pose.y) < 0.003) return;
+      await this.#goTo(x, y);
+    }
+  }
+
+  /**
+   * Turns toward (x, y) and drives there, leg by leg. Wheels that are not what they seem (the
+   * reality knobs) curve a straight move: once a leg ends more than 5 mm off its line, the legs
+   * are cut to {@link SHORT_LEG_CM}, each aimed again from where the robot really is.
+   */
   async #goTo(x: number, y: number): Promise<void> {
-    const d = Math.hypot(x - this.#pose.x, y - this.#pose.y);
-    if (d < 0.002) return;
-    await this.#turnTo(Math.atan2(y - this.#pose.y, x - this.#pose.x));
-    await this.#forward(Math.hypot(x - this.#pose.x, y - this.#pose.y) * 100);
+    for (let leg = 0; leg < MAX_LEGS; leg += 1) {
+      const d = Math.hypot(x - this.#pose.x, y - this.#pose.y);
+      if (d < 0.002) return;
+      await this.#turnTo(Math.atan2(y - this.#pose.y, x - this.#pose.x));
+      const from = { ...this.#pose };
+      const aim = Math.atan2(y - from.y, x - from.x);
+      const cm = Math.min(Math.hypot(x - from.x, y - from.y) * 100, this.#legCm);
+      await this.#call('move_forward', { distanceCm: cm });
+      const dx = this.#pose.x - from.x;
+      const dy = this.#pose.y - from.y;
+      if (Math.hypot(dx, dy) * 100 < 0.01) return; // blocked for good: leave it to the checks
+      if (Math.abs(-Math.sin(aim) * dx + Math.cos(aim) * dy) > 0.005)
+        this.#legCm = Math.min(this.#legCm, SHORT_LEG_CM);
+    }
   }
 
   async #follow(
@@ -129,12 +169,14 @@ class OracleRun {
         const target = targetOf(check, truth) as { x: number; y: number; yaw?: number };
         if (check.leftM === 0 && check.forwardM !== 0) await this.#forward(check.forwardM * 100);
         else await this.#goTo(target.x, target.y);
+        await this.#correctTo(target.x, target.y);
         if (target.yaw !== undefined) await this.#turnTo(target.yaw);
         return 'Done.';
       }
       case 'return': {
         await this.#forward((check.minExcursionM + 0.05) * 100);
         await this.#goTo(truth.start.x, truth.start.y);
+        await this.#correctTo(truth.start.x, truth.start.y);
         return 'Back at the start.';
       }
       case 'reach-point': {

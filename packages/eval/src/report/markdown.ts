@@ -16,7 +16,10 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
     '# hal eval',
     '',
     `Seed ${scores.seed}, ${scores.trialsPerTask} trial(s) per task, ${scores.tasks.length} task(s). ` +
-      'Success is computed from the simulator’s ground truth.',
+      'Success is computed from the simulator’s ground truth' +
+      (scores.agents.some((a) => a.on !== 'simulator')
+        ? '; on a robot (the rows AGENT@ROBOT), from what the robot itself reports (its odometry).'
+        : '.'),
     '',
     '```text',
     summaryTable(report),
@@ -27,6 +30,10 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
   for (const agent of scores.agents) {
     lines.push(
       `## ${agent.agent}`,
+      '',
+      agent.on === 'simulator'
+        ? 'In the simulator, scored from its ground truth.'
+        : `On ${agent.on}, scored from what the robot reports.`,
       '',
       '| task | success | 95 % CI | pass^k | collisions | position error (m) | path / optimum | calls | refused |',
       '|---|---|---|---|---|---|---|---|---|',

@@ -4,7 +4,9 @@ import { MovePlan, VelocityPlan } from '../planner.js';
 import type { StepPlan } from '../planner.js';
 import { blockingContact } from './step-contact.js';
 import type { ContactTest, FreeSpaceTest, StepContact } from './step-contact.js';
+import type { BodyScales } from './wheel-scale.js';
 import type { MotionHandle, MotionReport, MoveOutcome } from './motion-report.js';
+import { ReportedOdometry } from './reported-odometry.js';
 import { StepOdometry } from './step-odometry.js';
 
 interface RunningMotion<C extends StepContact> {
@@ -49,12 +51,40 @@ export class MotionExecutor<C extends StepContact = StepContact> {
   /** The first master step of the running motion that must be checked for contact. */
   #checkStep = 1;
   readonly #scratch = { xCm: 0, yCm: 0, headingRad: 0 };
+  /** With a body error: its draws, the pose the robot reports, and the geometry it counts with. */
+  readonly #body: BodyScales | undefined;
+  readonly #reported: ReportedOdometry | undefined;
+  #countedWith: RobotConfig | undefined;
 
-  /** `onChange` is told whenever a motion starts or ends. */
-  constructor(start: PlanarPoseCm, radius: number, onChange: () => void = () => undefined) {
+  /**
+   * `onChange` is told whenever a motion starts or ends; `body`, when given, makes the true
+   * motion differ from the reported one (the simulator's body error).
+   */
+  constructor(
+    start: PlanarPoseCm,
+    radius: number,
+    onChange: () => void = () => undefined,
+    body?: BodyScales,
+  ) {
     this.#odometry = new StepOdometry(start);
     this.#radius = radius;
     this.#onChange = onChange;
+    this.#body = body;
+    this.#reported = body === undefined ? undefined : new ReportedOdometry(start);
+  }
+
+  /** The pose the robot reports (its odometry); without a body error, the true pose. */
+  get reportedPose(): PlanarPoseCm {
+    const reported = this.#reported;
+    if (reported === undefined) return this.#odometry.pose;
+    this.#syncReported();
+    return reported.pose;
+  }
+
+  #syncReported(): void {
+    const config = this.#countedWith;
+    if (config !== undefined)
+      this.#reported?.sync(this.#odometry.left, this.#odometry.right, config);
   }
 
   /**
@@ -167,6 +197,8 @@ export class MotionExecutor<C extends StepContact = StepContact> {
   /** The geometry changed (`set_config`): the running motion's remaining steps use it. */
   reconfigure(config: RobotConfig): void {
     const m = this.#motion;
+    this.#syncReported();
+    if (this.#countedWith !== undefined) this.#countedWith = config;
     if (m !== undefined) this.#odometry.reconfigure(m.plan, config);
   }
 
@@ -316,7 +348,11 @@ export class MotionExecutor<C extends StepContact = StepContact> {
             : plan.masterStepsAt(limitUs - 1)
           : Number.POSITIVE_INFINITY;
     this.#motion = { plan, report, limitUs, lastStep, settle };
-    this.#odometry.begin(plan, config);
+    const scales = this.#body?.nextMotion();
+    this.#syncReported();
+    this.#countedWith = config;
+    this.#reported?.beginMotion(scales?.reported ?? { left: 1, right: 1 });
+    this.#odometry.begin(plan, config, scales?.truth);
     this.#checkStep = 1;
     this.#onChange();
     if (limitUs <= 0) this.finish('done', nowUs);

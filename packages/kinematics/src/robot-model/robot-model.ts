@@ -15,6 +15,7 @@ import {
 } from './speed-limits.js';
 import type { ContactTest, FreeSpaceTest, StepContact } from './step-contact.js';
 import { WheelAccumulator } from './wheel-accumulator.js';
+import type { BodyScales } from './wheel-scale.js';
 
 /** Options of {@link RobotModel}. */
 export interface RobotModelOptions {
@@ -26,6 +27,11 @@ export interface RobotModelOptions {
   radiusM?: number;
   /** Told whenever a motion starts or ends. */
   onMotionChange?: () => void;
+  /**
+   * A body that differs from the nominal one: each motion's wheel travel on the ground and in the
+   * odometry scaled as it says (the simulator's seeded body error). Default: the nominal body.
+   */
+  body?: BodyScales;
 }
 
 /**
@@ -55,7 +61,12 @@ export class RobotModel<C extends StepContact = StepContact> {
     this.#config = options.config ?? V1_ROBOT;
     this.#perCm = stepsPerCm(this.#config);
     const start = options.start ?? { xCm: 0, yCm: 0, headingRad: 0 };
-    this.#motions = new MotionExecutor<C>(start, options.radiusM ?? 0.07, options.onMotionChange);
+    this.#motions = new MotionExecutor<C>(
+      start,
+      options.radiusM ?? 0.07,
+      options.onMotionChange,
+      options.body,
+    );
     this.#safety = new RobotSafety({
       nowUs: () => this.#nowUs,
       stopMotion: (outcome) => this.#motions.finish(outcome, this.#nowUs),
@@ -90,9 +101,13 @@ export class RobotModel<C extends StepContact = StepContact> {
   get nowUs(): number {
     return this.#nowUs;
   }
-  /** Odometry pose, cm and radians (REP-103). */
+  /** Where the body is, cm and radians (REP-103): the odometry's pose when the body is nominal. */
   get pose(): PlanarPoseCm {
     return this.#motions.pose;
+  }
+  /** The pose the robot reports (its odometry): with a body error it drifts from {@link pose}. */
+  get reportedPose(): PlanarPoseCm {
+    return this.#motions.reportedPose;
   }
   /** Centre, cm (no allocation). */
   get xCm(): number {

@@ -4,6 +4,7 @@ import type { PlanarPoseCm } from '../odometry.js';
 import type { StepPlan } from '../planner.js';
 import { normalizeAngle } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
+import type { WheelScale } from './wheel-scale.js';
 
 /** The heading is wrapped and its sine and cosine recomputed every this many master steps. */
 const RESYNC_STEPS = 4096;
@@ -44,11 +45,17 @@ interface StepMotion {
   sin: number;
 }
 
-function stepMotion(dl: number, dr: number, config: RobotConfig): StepMotion {
-  // The firmware's formula for these wheel deltas, from the origin: the motion in the robot frame.
-  const p = integrateOdometry({ xCm: 0, yCm: 0, headingRad: 0 }, dl, dr, config);
+/** Each step as the nominal wheel travel (a body without error). */
+const NOMINAL: WheelScale = { left: 1, right: 1 };
+
+function stepMotion(dl: number, dr: number, config: RobotConfig, scale: WheelScale): StepMotion {
+  // The firmware's formula for these wheel deltas, from the origin: the motion in the robot frame
+  // (each wheel's travel on the ground scaled by the body's error, when it has one).
+  const gl = dl * scale.left;
+  const gr = dr * scale.right;
+  const p = integrateOdometry({ xCm: 0, yCm: 0, headingRad: 0 }, gl, gr, config);
   const perCm = getStepsPerCm(config);
-  const dth = (dr / perCm - dl / perCm) / config.wheelBaseCm;
+  const dth = (gr / perCm - gl / perCm) / config.wheelBaseCm;
   return { dl, dr, dx: p.xCm, dy: p.yCm, dth, cos: Math.cos(dth), sin: Math.sin(dth) };
 }
 
@@ -75,6 +82,7 @@ export class StepOdometry {
   #k = 0;
   #slave = 0;
   #periods: Periods | undefined;
+  #scale: WheelScale = NOMINAL;
 
   constructor(start: PlanarPoseCm) {
     this.#xCm = start.xCm;
@@ -114,8 +122,12 @@ export class StepOdometry {
     return Math.max(both, alone);
   }
 
-  /** Starts counting the steps of a new plan (with the geometry of `config`). */
-  begin(plan: StepPlan, config: RobotConfig): void {
+  /**
+   * Starts counting the steps of a new plan (with the geometry of `config`); `scale` is what each
+   * wheel's step does on the ground, relative to the nominal (default exactly that).
+   */
+  begin(plan: StepPlan, config: RobotConfig, scale: WheelScale = NOMINAL): void {
+    this.#scale = scale;
     this.#masterTerm = plan.masterTerm === 0 ? 1 : plan.masterTerm;
     this.#slaveTerm = plan.slaveTerm;
     this.#k = 0;
@@ -209,8 +221,8 @@ export class StepOdometry {
   #geometry(plan: StepPlan, config: RobotConfig): void {
     const ml = plan.leftIsMaster ? plan.leftSign : 0;
     const mr = plan.leftIsMaster ? 0 : plan.rightSign;
-    this.#masterOnly = stepMotion(ml, mr, config);
-    this.#both = stepMotion(plan.leftSign, plan.rightSign, config);
+    this.#masterOnly = stepMotion(ml, mr, config, this.#scale);
+    this.#both = stepMotion(plan.leftSign, plan.rightSign, config, this.#scale);
   }
 
   /** The motion of the next master step (without taking it). */

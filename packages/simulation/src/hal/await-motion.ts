@@ -6,7 +6,9 @@ import type { HalContext } from './context.js';
 
 /** The robot's pose as results carry it: metres and radians, world frame. */
 export function poseData(robot: SimRobot): Record<string, number> {
-  return { x: robot.x, y: robot.y, yaw: robot.yaw };
+  // what the robot reports (its odometry), as PhysicalHAL's results carry it
+  const p = robot.reportedPose;
+  return { x: p.x, y: p.y, yaw: p.yaw };
 }
 
 /** What a contact touched, in words: "the arena's edge", "a wall", "an obstacle", "sim-b". */

@@ -76,20 +76,23 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
         const robot = ctx.robot();
         checkInsideArena(ctx.world, robot, p.x, p.y);
         const sps = wheelSpeed(robot, p.speed);
-        let dx = p.x - robot.x;
-        let dy = p.y - robot.y;
+        // planned from the pose the robot reports, as PhysicalHAL plans from its odometry
+        let pose = robot.reportedPose;
+        let dx = p.x - pose.x;
+        let dy = p.y - pose.y;
         if (Math.hypot(dx, dy) < 1e-4) return { moves: 0, pose: poseData(ctx.robot()) };
         let moves = 0;
-        const turnDeg = (normalizeAngle(Math.atan2(dy, dx) - robot.yaw) * 180) / Math.PI;
+        const turnDeg = (normalizeAngle(Math.atan2(dy, dx) - pose.yaw) * 180) / Math.PI;
         if (Math.abs(turnDeg) > 0.01) {
           await awaitMotion(ctx, robot.rotateDeg(turnDeg, sps));
           moves += 1;
         }
         const maxCm = (robot.config.maxStepsPerCommand - 1) / stepsPerCm(robot.config);
         for (;;) {
-          dx = p.x - robot.x;
-          dy = p.y - robot.y;
-          const along = (dx * Math.cos(robot.yaw) + dy * Math.sin(robot.yaw)) * 100;
+          pose = robot.reportedPose;
+          dx = p.x - pose.x;
+          dy = p.y - pose.y;
+          const along = (dx * Math.cos(pose.yaw) + dy * Math.sin(pose.yaw)) * 100;
           if (along < 0.01) break;
           const cm = Math.min(along, maxCm);
           await awaitMotion(ctx, robot.moveCm(cm, cm, sps));
@@ -117,9 +120,10 @@ export function createLocomotion(ctx: HalContext): LocomotionInterface {
       b.read('getPose', {}, (): Pose => {
         const r = ctx.robot();
         const v = r.velocity();
+        const p = r.reportedPose;
         return {
-          position: { x: r.x, y: r.y, z: 0 },
-          rotation: { yaw: r.yaw, pitch: 0, roll: 0 },
+          position: { x: p.x, y: p.y, z: 0 },
+          rotation: { yaw: p.yaw, pitch: 0, roll: 0 },
           velocity: { linear: v.linear, angular: v.angular },
         };
       }),

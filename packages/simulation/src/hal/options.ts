@@ -1,5 +1,6 @@
 import type { Logger, RobotConfig } from '@hal/types';
 import type { CameraOptions } from '../camera.js';
+import type { BodyErrorInput } from '../robot/body-error.js';
 import type { JpegEncoder } from '../jpeg-encoders.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { RangeSensorOptions } from '../sensors.js';
@@ -38,6 +39,12 @@ export interface SimulationHALOptions {
   robot?: Partial<RobotConfig>;
   /** Start pose of a newly added robot; default the map's start. */
   start?: { x: number; y: number; yaw: number };
+  /**
+   * How a newly added robot's body differs from the nominal one: wheel diameters, slip, odometry
+   * error (see {@link BodyErrorInput}). The world then has the robot where its body really went,
+   * while the HAL reports the robot's odometry (`getPose`, the pose in results). Default none.
+   */
+  bodyError?: BodyErrorInput;
   /** How motions are waited for. Default 'fast'. */
   clock?: SimulationClock;
   /** Speed of the ticker the HAL starts in 'realtime' mode. Default 1. */

@@ -57,6 +57,7 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       const added = this.world.addRobot({
         config: options.robot === undefined ? V1_ROBOT : robotConfig(options.robot),
         ...(options.start === undefined ? {} : { start: options.start }),
+        ...(options.bodyError === undefined ? {} : { bodyError: options.bodyError }),
       });
       this.#robotId = added.id;
     }

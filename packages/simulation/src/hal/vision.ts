@@ -56,7 +56,7 @@ export function createVision(ctx: HalContext, frameSource: FrameSource): VisionI
         return {
           acceleration: { x: 0, y: 0, z: 0 },
           gyroscope: { x: 0, y: 0, z: ctx.robot().velocity().angular },
-          heading: ctx.robot().yaw,
+          heading: ctx.robot().reportedPose.yaw,
           source: 'odometry' as const,
         };
       }),

@@ -3,6 +3,8 @@ import { normalizeAngle, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 import type { Contact, ContactTest, FreeSpaceTest } from './contact.js';
 import type { MotionHandle, MotionReport, SafetyTrip } from './motion-report.js';
+import { BodyErrorModel, hasBodyError, parseBodyError } from './body-error.js';
+import type { BodyErrorInput } from './body-error.js';
 
 /*
  * The simulated V1 stepper cube, as its firmware moves it (docs/protocol.md section 5): the
@@ -41,6 +43,8 @@ export interface SimRobotOptions {
   start?: { x: number; y: number; yaw: number };
   /** Radius of the robot's footprint for collisions, metres. Default 0.07 (a 10 cm cube). */
   radius?: number;
+  /** How the body differs from the nominal one (wheel diameters, slip, odometry). Default none. */
+  bodyError?: BodyErrorInput;
 }
 
 /** The simulated robot. Commands act at the robot's current simulated time. */
@@ -48,6 +52,8 @@ export class SimRobot {
   readonly id: string;
   /** Footprint radius, metres. */
   readonly radius: number;
+  /** The body's error (see body-error.ts), or undefined when it is the nominal one. */
+  readonly bodyError: BodyErrorInput | undefined;
   #led: LedState = { r: 0, g: 0, b: 0, pattern: 'off' };
   readonly #model: RobotModel<Contact>;
   #scheduler: RobotScheduler | undefined;
@@ -56,11 +62,14 @@ export class SimRobot {
     this.id = options.id;
     this.radius = options.radius ?? 0.07;
     const start = options.start ?? { x: 0, y: 0, yaw: 0 };
+    const body = parseBodyError(options.bodyError);
+    this.bodyError = hasBodyError(body) ? body : undefined;
     this.#model = new RobotModel<Contact>({
       config: options.config ?? V1_ROBOT,
       start: { xCm: start.x * 100, yCm: start.y * 100, headingRad: normalizeAngle(start.yaw) },
       radiusM: this.radius,
       onMotionChange: () => this.#scheduler?.reschedule(false),
+      ...(this.bodyError === undefined ? {} : { body: new BodyErrorModel(body) }),
     });
   }
 
@@ -139,6 +148,14 @@ export class SimRobot {
   }
   get yaw(): number {
     return this.#catchUp().pose.headingRad;
+  }
+  /**
+   * The pose the robot reports, metres and radians: its odometry, which a body error makes drift
+   * from the true pose ({@link x}, {@link y}, {@link yaw}); without one, the true pose.
+   */
+  get reportedPose(): { x: number; y: number; yaw: number } {
+    const p = this.#catchUp().reportedPose;
+    return { x: p.xCm / 100, y: p.yCm / 100, yaw: p.headingRad };
   }
   /** Absolute wheel positions since the start, steps. */
   get leftSteps(): number {
