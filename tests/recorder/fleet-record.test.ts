@@ -90,6 +90,21 @@ describe('hal fleet run --record', () => {
     const text = await runHalProcess(['inspect', file]);
     expect(text.stdout).toContain('a recording of 3 robots (sim-1, sim-2, sim-3)');
     expect(text.stdout).toMatch(/robot sim-2: calls \d+, errors 0/);
+
+    // one robot of the fleet replayed on the simulator, from where it started
+    const replayIo = captureIO();
+    expect(await runHal(['--json', 'replay', file, '--robot', 'sim-2'], replayIo)).toBe(0);
+    const replay = lastJson(replayIo.stdout());
+    expect(replay).toMatchObject({ robot: 'sim-2', outcomeMismatches: 0, stepMismatches: 0 });
+    expect((replay['calls'] as { call: string }[]).map((c) => c.call)).toEqual([
+      'locomotion.moveForward',
+    ]);
+    expect(replay['maxPositionM'] as number).toBeLessThan(0.0002);
+    const unnamed = captureIO();
+    expect(await runHal(['replay', file], unnamed)).toBe(2);
+    expect(unnamed.stderr()).toContain(
+      'records 3 robots: name one with --robot (sim-1, sim-2, sim-3)',
+    );
   }, 90_000);
 
   it('records a simulated robot beside the emulated cube, with the cube’s reported steps and link', async () => {

@@ -25,7 +25,7 @@ export const HalCallRecordSchema = z
     error: z.string().optional().describe('the error message, when the call failed'),
     result: z.unknown().optional().describe('the value answered (long strings shortened)'),
     pose_after: PoseSchema.optional().describe(
-      'the pose read right after a locomotion, manipulation or safety call that answered a HALToolResult (a motion, a stop, an e-stop), for replay',
+      'the pose read right after a locomotion, manipulation or safety call that answered a HALToolResult (a motion, a stop, an e-stop), and after initialize (where the run starts), for replay',
     ),
     start_ns: z.string().describe('when the call was made, nanoseconds since the epoch'),
     duration_ms: z.number().nonnegative().describe('from the call to its answer, milliseconds'),

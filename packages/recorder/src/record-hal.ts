@@ -340,7 +340,10 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     // record itself is made off the call's path, so the caller has its answer first.
     let poseAfter: Promise<Pose> | undefined;
     try {
-      if (MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value) && hal.isReady()) {
+      // after a motion, and where the robot stands once ready (the start of the run, for replay)
+      const ready = info.subsystem === undefined && info.method === 'initialize';
+      const moved = MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value);
+      if ((moved || (ready && outcome === 'resolved')) && hal.isReady()) {
         poseAfter = hal.locomotion.getPose();
         poseAfter.catch(() => undefined);
       }
