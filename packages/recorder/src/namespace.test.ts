@@ -26,6 +26,25 @@ describe('robotNamespace', () => {
   });
 });
 
+describe('recordHal options', () => {
+  it('refuses a bad namespace or sampling period with INVALID_PARAMETER, naming it', async () => {
+    const recorder = await McapRecorder.create(memorySink());
+    const sim = new SimulationHAL();
+    expect(() => recordHal(sim, recorder, { namespace: 'no spaces' })).toThrow(/"namespace"/);
+    expect(() => recordHal(sim, recorder, { posePeriodMs: Number.NaN })).toThrow(
+      /"posePeriodMs" must be a finite number/,
+    );
+    expect(() => recordHal(sim, recorder, { linkPeriodMs: -5 })).toThrow(
+      expect.objectContaining({
+        code: 'INVALID_PARAMETER',
+        details: { parameter: 'linkPeriodMs' },
+      }),
+    );
+    expect(recorder.stats().written).toBe(0);
+    await recorder.close();
+  });
+});
+
 describe('recordHal with a namespace', () => {
   it('records two robots into one file, each on its own channels and frames, summed up per robot', async () => {
     const sink = memorySink();

@@ -1,4 +1,4 @@
-import { scoped, silentLogger } from '@hal/types';
+import { HalError, scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, Pose } from '@hal/types';
 import {
   COMPRESSED_IMAGE,
@@ -104,6 +104,20 @@ function errorOf(error: unknown): { code?: string; error: string } {
   };
 }
 
+/** A sampling period: a finite number of ms >= 0, else INVALID_PARAMETER naming the option. */
+function period(name: string, ms: number): number {
+  if (typeof ms !== 'number' || !Number.isFinite(ms) || ms < 0) {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"${name}" must be a finite number of ms >= 0, got ${String(ms)}`,
+      {
+        details: { parameter: name },
+      },
+    );
+  }
+  return ms;
+}
+
 /**
  * Wraps `hal` so that everything passing through it is recorded into `recorder`, and otherwise
  * behaves exactly as `hal` does: the same results, the same errors, synchronous calls still
@@ -112,8 +126,10 @@ function errorOf(error: unknown): { code?: string; error: string } {
  *
  * Recorded: every call (`/hal/calls`), the pose at `posePeriodMs` and after every locomotion,
  * manipulation or safety action (`/hal/pose`, `/tf`, `/hal/pose/raw`), camera frames
- * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), and the
- * robot's metadata (`hal.robot`) once it is ready. A call answers its caller first: only the
+ * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), for a
+ * physical robot its reported step counters (`/hal/steps`) and link statistics (`/hal/link`),
+ * and the robot's metadata (`hal.robot`) once it is ready. With `namespace`, all of it goes under
+ * `/<namespace>` (several robots in one file). A call answers its caller first: only the
  * latch and (after an action that can move) the pose are read at once; the record is made a turn
  * later and queued, never waiting for the disk.
  */
@@ -122,8 +138,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   recorder: McapRecorder,
   options: RecordHalOptions = {},
 ): T {
-  const posePeriodMs = options.posePeriodMs ?? 100;
-  const linkPeriodMs = options.linkPeriodMs ?? 1000;
+  const posePeriodMs = period('posePeriodMs', options.posePeriodMs ?? 100);
+  const linkPeriodMs = period('linkPeriodMs', options.linkPeriodMs ?? 1000);
   const space = robotNamespace(options.namespace);
   const topics = space.topics;
   const telemetry = linkTelemetry(hal);
