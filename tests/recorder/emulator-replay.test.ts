@@ -73,6 +73,12 @@ describe('a run of the emulated cube, recorded and replayed', () => {
       device_id: 'cube-rec',
     });
 
+    // the robot's own reports: its step counters and the link's figures, on their channels
+    expect(recording.channels.get('/hal/steps')?.schemaName).toBe('hal.WheelSteps');
+    expect(recording.channels.get('/hal/steps')?.messageCount).toBeGreaterThan(4);
+    const link = recording.messages.filter((m) => m.topic === '/hal/link').at(-1)?.value;
+    expect(link).toMatchObject({ link_state: 'connected', timeouts: 0 });
+
     const { value: inspected } = await halJson(['inspect', file]);
     expect(inspected).toMatchObject({
       complete: true,

@@ -26,6 +26,7 @@ export type { SettingRange } from './protocol/device-config.js';
 export { DEFAULT_SAFETY_LANE } from './safety-lane.js';
 export type { SafetyLaneTiming } from './safety-lane.js';
 export type { SessionState } from './session.js';
+export type { ReportedSteps } from './pose-tracker.js';
 // the types of PhysicalHALOptions' fields (the schemas themselves: @hal/physical/protocol)
 export type { AuthScheme, DeviceConfig } from './protocol/schemas.js';
 

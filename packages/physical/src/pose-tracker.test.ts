@@ -48,6 +48,36 @@ describe('PoseTracker', () => {
     expect(t.pose()).toMatchObject({ position: { x: 0, y: 0 }, confirmed: true });
   });
 
+  it('reports the counters the robot sent, not the prediction, and nothing before a status', () => {
+    const fresh = new PoseTracker(robotConfig(), () => 0, 1);
+    expect(fresh.reported()).toBeUndefined();
+    const { t, advance } = tracker();
+    t.observe('drive', drive);
+    advance(500);
+    // the pose is predicted half a second along, but the robot has reported nothing since
+    expect(t.pose().position.x).toBeGreaterThan(0);
+    expect(t.reported()).toEqual({
+      leftSteps: 0,
+      rightSteps: 0,
+      leftStepsPerS: 0,
+      rightStepsPerS: 0,
+      robotUptimeMs: 1000,
+    });
+    t.observe('get_status', {
+      ...status(300, 310, 1500),
+      running: true,
+      left_sps: 900,
+      right_sps: 905,
+    });
+    expect(t.reported()).toEqual({
+      leftSteps: 300,
+      rightSteps: 310,
+      leftStepsPerS: 900,
+      rightStepsPerS: 905,
+      robotUptimeMs: 1500,
+    });
+  });
+
   it('marks the pose predicted while a motion runs, and confirmed once a stop reports it', () => {
     const { t, advance } = tracker();
     t.observe('drive', drive);

@@ -16,6 +16,20 @@ interface Prediction {
   capUs: number;
 }
 
+/** What the robot last reported of its wheels (see {@link PoseTracker.reported}). */
+export interface ReportedSteps {
+  /** The left wheel's absolute step counter since the robot started. */
+  leftSteps: number;
+  /** The right wheel's absolute step counter since the robot started. */
+  rightSteps: number;
+  /** The left wheel's speed, steps/s (0 when the robot reported it idle). */
+  leftStepsPerS: number;
+  /** The right wheel's speed, steps/s. */
+  rightStepsPerS: number;
+  /** The robot's uptime in its last status reply, ms. */
+  robotUptimeMs: number;
+}
+
 const zero = (value: number): number => (value === 0 ? 0 : value);
 
 /**
@@ -77,6 +91,21 @@ export class PoseTracker {
       this.#odometry.update(status.left_steps, status.right_steps);
     }
     this.#absorb(status);
+  }
+
+  /**
+   * The wheel counters and speeds the robot itself last reported (a status or a stop reply),
+   * never the prediction; undefined before the first status.
+   */
+  reported(): ReportedSteps | undefined {
+    if (this.#uptimeMs < 0) return undefined;
+    return {
+      leftSteps: this.#left,
+      rightSteps: this.#right,
+      leftStepsPerS: this.#leftSps,
+      rightStepsPerS: this.#rightSps,
+      robotUptimeMs: this.#uptimeMs,
+    };
   }
 
   /** Host time of the robot's last reply, ms (construction time before any reply). */

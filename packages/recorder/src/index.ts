@@ -13,17 +13,29 @@ export {
   CALL_RECORD,
   HAL_POSE,
   HalCallRecordSchema,
+  LINK_STATS,
+  LinkStatsSchema,
   RECORDER_LOSS,
   RecorderLossSchema,
   SAFETY_EVENT,
   SafetyEventSchema,
   TOPICS,
+  WHEEL_STEPS,
+  WheelStepsSchema,
 } from './messages.js';
-export type { HalCallRecord, RecorderLoss, SafetyEvent } from './messages.js';
+export type {
+  HalCallRecord,
+  LinkStats,
+  RecorderLoss,
+  SafetyEvent,
+  WheelSteps,
+} from './messages.js';
+export { robotNamespace } from './namespace.js';
+export type { RobotNamespace, RobotTopics } from './namespace.js';
 export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
 export { summarizeRecording } from './summary.js';
-export type { RecordingSummary } from './summary.js';
+export type { RecordingSummary, RobotSummary } from './summary.js';
 export { replayRecording } from './replay.js';
 export type { ReplayedCall, ReplayReport } from './replay.js';
 export { trajectorySvg } from './trajectory-svg.js';

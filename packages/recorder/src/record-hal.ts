@@ -1,4 +1,4 @@
-import { scoped, silentLogger } from '@hal/types';
+import { HalError, scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, Pose } from '@hal/types';
 import {
   COMPRESSED_IMAGE,
@@ -10,8 +10,10 @@ import {
   quaternionFromEuler,
 } from './foxglove-schemas.js';
 import { jsonSafe } from './json-safe.js';
-import { CALL_RECORD, HAL_POSE, SAFETY_EVENT, TOPICS } from './messages.js';
-import type { HalCallRecord, SafetyEvent } from './messages.js';
+import { linkTelemetry, sameSteps } from './link-telemetry.js';
+import { CALL_RECORD, HAL_POSE, LINK_STATS, SAFETY_EVENT, WHEEL_STEPS } from './messages.js';
+import type { HalCallRecord, SafetyEvent, WheelSteps } from './messages.js';
+import { robotNamespace } from './namespace.js';
 import type { McapRecorder } from './recorder.js';
 
 /** What `recordHal` records besides the calls. */
@@ -26,6 +28,18 @@ export interface RecordHalOptions {
   version?: string;
   /** Where the recorder's own warnings go. */
   logger?: Logger;
+  /**
+   * A physical robot's link statistics (`/hal/link`) are written every `linkPeriodMs` while the
+   * HAL is ready, and once more as it is cleaned up. Default 1000; 0 writes only that last one.
+   */
+  linkPeriodMs?: number;
+  /**
+   * The robot's namespace in a recording of several robots (a fleet): its topics go under
+   * `/<namespace>` (`/sim-1/hal/calls`), its frames are `<namespace>/base_link` and
+   * `<namespace>/camera` in the shared `world`, its metadata record is `hal.robot/<namespace>`.
+   * 1-64 letters, digits, `-` or `_` (INVALID_PARAMETER otherwise). Default: none.
+   */
+  namespace?: string;
   /** Stops the pose sampling when aborted (it also stops on `cleanup()` through the proxy). */
   signal?: AbortSignal;
 }
@@ -90,6 +104,20 @@ function errorOf(error: unknown): { code?: string; error: string } {
   };
 }
 
+/** A sampling period: a finite number of ms >= 0, else INVALID_PARAMETER naming the option. */
+function period(name: string, ms: number): number {
+  if (typeof ms !== 'number' || !Number.isFinite(ms) || ms < 0) {
+    throw new HalError(
+      'INVALID_PARAMETER',
+      `"${name}" must be a finite number of ms >= 0, got ${String(ms)}`,
+      {
+        details: { parameter: name },
+      },
+    );
+  }
+  return ms;
+}
+
 /**
  * Wraps `hal` so that everything passing through it is recorded into `recorder`, and otherwise
  * behaves exactly as `hal` does: the same results, the same errors, synchronous calls still
@@ -98,8 +126,10 @@ function errorOf(error: unknown): { code?: string; error: string } {
  *
  * Recorded: every call (`/hal/calls`), the pose at `posePeriodMs` and after every locomotion,
  * manipulation or safety action (`/hal/pose`, `/tf`, `/hal/pose/raw`), camera frames
- * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), and the
- * robot's metadata (`hal.robot`) once it is ready. A call answers its caller first: only the
+ * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), for a
+ * physical robot its reported step counters (`/hal/steps`) and link statistics (`/hal/link`),
+ * and the robot's metadata (`hal.robot`) once it is ready. With `namespace`, all of it goes under
+ * `/<namespace>` (several robots in one file). A call answers its caller first: only the
  * latch and (after an action that can move) the pose are read at once; the record is made a turn
  * later and queued, never waiting for the disk.
  */
@@ -108,20 +138,29 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   recorder: McapRecorder,
   options: RecordHalOptions = {},
 ): T {
-  const posePeriodMs = options.posePeriodMs ?? 100;
+  const posePeriodMs = period('posePeriodMs', options.posePeriodMs ?? 100);
+  const linkPeriodMs = period('linkPeriodMs', options.linkPeriodMs ?? 1000);
+  const space = robotNamespace(options.namespace);
+  const topics = space.topics;
+  const telemetry = linkTelemetry(hal);
   for (const [topic, schema] of [
-    [TOPICS.calls, CALL_RECORD],
-    [TOPICS.pose, POSE_IN_FRAME],
-    [TOPICS.halPose, HAL_POSE],
-    [TOPICS.tf, FRAME_TRANSFORM],
-    [TOPICS.camera, COMPRESSED_IMAGE],
-    [TOPICS.log, LOG],
-    [TOPICS.safety, SAFETY_EVENT],
+    [topics.calls, CALL_RECORD],
+    [topics.pose, POSE_IN_FRAME],
+    [topics.halPose, HAL_POSE],
+    [topics.tf, FRAME_TRANSFORM],
+    [topics.camera, COMPRESSED_IMAGE],
+    [topics.log, LOG],
+    [topics.safety, SAFETY_EVENT],
   ] as const) {
     recorder.channel(topic, schema);
   }
+  // a physical robot's own reports (a HAL without them records neither topic)
+  if (telemetry.steps) recorder.channel(topics.steps, WHEEL_STEPS);
+  if (telemetry.link) recorder.channel(topics.link, LINK_STATS);
 
   let timer: ReturnType<typeof setInterval> | undefined;
+  let linkTimer: ReturnType<typeof setInterval> | undefined;
+  let lastSteps: WheelSteps | undefined;
   let sampling = false;
   let lastLatched = safe(() => hal.safety.isEmergencyStopped(), false);
   let robotWritten = false;
@@ -144,27 +183,41 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       pose.rotation.roll,
     );
     recorder.write(
-      TOPICS.pose,
+      topics.pose,
       { timestamp, frame_id: 'world', pose: { position: { x, y, z }, orientation } },
       now,
     );
     recorder.write(
-      TOPICS.tf,
+      topics.tf,
       {
         timestamp,
         parent_frame_id: 'world',
-        child_frame_id: 'base_link',
+        child_frame_id: space.frame('base_link'),
         translation: { x, y, z },
         rotation: orientation,
       },
       now,
     );
-    recorder.write(TOPICS.halPose, jsonSafe(pose), now);
+    recorder.write(topics.halPose, jsonSafe(pose), now);
   }
 
-  /** Reads the pose and the latch from the HAL itself (not through the recorded calls). */
+  /** The wheel counters the robot last reported, when they are a new report. */
+  function writeSteps(): void {
+    const steps = safe(() => telemetry.steps?.(), undefined);
+    if (steps === undefined || sameSteps(lastSteps, steps)) return;
+    lastSteps = steps;
+    recorder.write(topics.steps, steps);
+  }
+
+  function writeLink(): void {
+    const link = safe(() => telemetry.link?.(), undefined);
+    if (link !== undefined) recorder.write(topics.link, link);
+  }
+
+  /** Reads the pose, the latch and the reported steps from the HAL itself (not recorded calls). */
   function sample(): void {
     watchLatch();
+    writeSteps();
     if (sampling || !safe(() => hal.isReady(), false)) return;
     sampling = true;
     const askedAt = recorder.clock();
@@ -193,14 +246,14 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       success: true,
       emergency_stopped: latched,
     };
-    recorder.write(TOPICS.safety, event);
+    recorder.write(topics.safety, event);
   }
 
   function writeRobot(): void {
     if (robotWritten) return;
     robotWritten = true;
     const info = safe(() => hal.getDeviceInfo(), undefined);
-    recorder.metadata('hal.robot', {
+    recorder.metadata(space.metadataName, {
       device_id: options.deviceId ?? info?.id ?? '',
       type: info?.type ?? '',
       mode: String(hal.mode),
@@ -217,12 +270,18 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       timer = setInterval(sample, posePeriodMs);
       (timer as { unref?: () => void }).unref?.();
     }
+    if (telemetry.link && linkPeriodMs > 0 && linkTimer === undefined && !options.signal?.aborted) {
+      linkTimer = setInterval(writeLink, linkPeriodMs);
+      (linkTimer as { unref?: () => void }).unref?.();
+    }
     sample();
   }
 
   function stopSampling(): void {
     if (timer !== undefined) clearInterval(timer);
+    if (linkTimer !== undefined) clearInterval(linkTimer);
     timer = undefined;
+    linkTimer = undefined;
   }
   options.signal?.addEventListener('abort', stopSampling, { once: true });
 
@@ -241,10 +300,10 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       const comma = value.indexOf(',');
       const format = /^data:image\/(\w+)/.exec(value)?.[1] ?? 'jpeg';
       recorder.write(
-        TOPICS.camera,
+        topics.camera,
         {
           timestamp: foxgloveTime(now),
-          frame_id: 'camera',
+          frame_id: space.frame('camera'),
           data: comma >= 0 ? value.slice(comma + 1) : value,
           format,
         },
@@ -254,7 +313,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     if (name === 'communication.log') {
       const [message, level] = info.args;
       recorder.write(
-        TOPICS.log,
+        topics.log,
         {
           timestamp: foxgloveTime(now),
           level: FOXGLOVE_LOG_LEVEL[level as keyof typeof FOXGLOVE_LOG_LEVEL] ?? 2,
@@ -276,7 +335,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         ...(code !== undefined ? { code } : {}),
         emergency_stopped: latched,
       };
-      recorder.write(TOPICS.safety, event, now);
+      recorder.write(topics.safety, event, now);
     }
     if (
       (info.subsystem === 'locomotion' && info.method !== 'getPose') ||
@@ -299,7 +358,10 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     let poseAfter: Promise<Pose> | undefined;
     const poseAskedAt = recorder.clock();
     try {
-      if (MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value) && hal.isReady()) {
+      // after a motion, and where the robot stands once ready (the start of the run, for replay)
+      const ready = info.subsystem === undefined && info.method === 'initialize';
+      const moved = MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value);
+      if ((moved || (ready && outcome === 'resolved')) && hal.isReady()) {
         poseAfter = hal.locomotion.getPose();
         poseAfter.catch(() => undefined);
       }
@@ -340,7 +402,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       };
       const finish = (poseAfter?: Pose): void => {
         recorder.write(
-          TOPICS.calls,
+          topics.calls,
           poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
         );
         afterCall(info, value, status.success, status.code, recorder.clock(), latchedAfter);
@@ -374,6 +436,11 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       const info: CallInfo = { subsystem, method, args };
       const start = recorder.clock();
       const startMs = performance.now();
+      // the link's last figures and steps, read while the link is still open
+      if (subsystem === undefined && method === 'cleanup' && safe(() => hal.isReady(), false)) {
+        writeSteps();
+        writeLink();
+      }
       let out: unknown;
       try {
         out = fn.apply(owner, args);

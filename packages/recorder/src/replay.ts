@@ -1,6 +1,6 @@
 import type { HardwareAbstractionLayer, Pose } from '@hal/types';
 import type { HalCallRecord } from './messages.js';
-import { TOPICS } from './messages.js';
+import { robotNamespace } from './namespace.js';
 import type { Recording } from './read-recording.js';
 
 /** One recorded call run again, and how far the replay ended from the recording. */
@@ -55,14 +55,17 @@ const wrap = (a: number): number => Math.atan2(Math.sin(a), Math.cos(a));
  * Runs a recording's action calls (every call that answered a HALToolResult: motions, stops,
  * e-stops and resets, LED...) again, in order, on `hal` (initialised, at the recording's start),
  * and measures after each how far its pose is from the pose recorded after the same call.
- * Reads are not replayed: they change nothing.
+ * Reads are not replayed: they change nothing. In a recording of several robots, `namespace`
+ * names the one to replay (its calls on `/<namespace>/hal/calls`).
  */
 export async function replayRecording(
   recording: Recording,
   hal: HardwareAbstractionLayer,
+  options: { namespace?: string } = {},
 ): Promise<ReplayReport> {
+  const topic = robotNamespace(options.namespace).topics.calls;
   const records = recording.messages
-    .filter((m) => m.topic === TOPICS.calls)
+    .filter((m) => m.topic === topic)
     .map((m) => m.value as HalCallRecord)
     .filter(isActionRecord);
   const calls: ReplayedCall[] = [];

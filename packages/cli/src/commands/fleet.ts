@@ -5,8 +5,9 @@ import type { FormationShape } from '@hal/fleet';
 import { Command, InvalidArgumentError, Option } from 'commander';
 import { CliError } from '../cli-error.js';
 import { parseCommandSpec, COMMAND_SPEC_HELP } from '../fleet/command-spec.js';
+import { startFleetRecording } from '../fleet/fleet-recording.js';
 import { openFleetSession } from '../fleet/fleet-session.js';
-import type { FleetCliOptions } from '../fleet/fleet-session.js';
+import type { FleetCliOptions, FleetSessionExtras } from '../fleet/fleet-session.js';
 import { formatFormation, formatHealth, formatReport } from '../fleet/format.js';
 import { runLeaderFollower, runSynchronized } from '../fleet/run.js';
 import { resolveRunMode, RUN_MODES } from '../fleet/run-mode.js';
@@ -59,8 +60,9 @@ async function withSession<T>(
   options: FleetCliOptions,
   ctx: CommandContext,
   body: (session: Awaited<ReturnType<typeof openFleetSession>>) => Promise<T>,
+  extras: FleetSessionExtras = {},
 ): Promise<T> {
-  const session = await openFleetSession(options, ctx.io, ctx.global());
+  const session = await openFleetSession(options, ctx.io, ctx.global(), extras);
   try {
     return await body(session);
   } finally {
@@ -70,6 +72,13 @@ async function withSession<T>(
 
 function failIfAny(what: string, failed: string[]): void {
   if (failed.length > 0) throw new CliError('FAILED', `${what} failed on ${failed.join(', ')}`);
+}
+
+/** What a fleet run ends with: its report, how to print it, and the failure to exit with. */
+interface RunOutcome {
+  value: object;
+  text: () => string;
+  failure?: CliError;
 }
 
 export const registerFleet: RegisterCommand = (program, ctx) => {
@@ -181,6 +190,10 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           .default(120_000)
           .argParser(positiveNumber),
       )
+      .option(
+        '--record <file>',
+        'record the run into this MCAP file: every robot on its own channels, under /<device> (see docs/recording.md)',
+      )
       .action(
         async (
           options: FleetCliOptions & {
@@ -192,6 +205,7 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
             spacing: number;
             tolerance: number;
             settleTimeoutMs: number;
+            record?: string;
           },
         ) => {
           const command = parseCommandSpec(options.command);
@@ -199,46 +213,95 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           if (mode === 'leader-follower' && options.leader === undefined) {
             throw new CliError('USAGE', 'leader-follower mode needs --leader <id>');
           }
-          return withSession(options, ctx, async ({ manager }) => {
-            if (mode === 'synchronized') {
-              const report = await runSynchronized(
-                manager,
-                command,
-                options.timeoutMs,
-                ctx.io,
-                ctx.global(),
-              );
-              emit(ctx.io, ctx.global(), report, () =>
-                formatReport(`synchronized ${command.kind}`, report),
-              );
-              failIfAny(command.kind, report.failed);
-              return;
-            }
-            const result = await runLeaderFollower(
-              manager,
-              command,
-              {
-                leader: options.leader as string,
-                formation: options.formation,
-                spacing: options.spacing,
-                toleranceM: options.tolerance,
-                settleTimeoutMs: options.settleTimeoutMs,
+          // a file that cannot be written is refused before any robot is touched
+          const recording =
+            options.record === undefined
+              ? undefined
+              : await startFleetRecording(options.record, ctx.io, ctx.global().json);
+          let outcome: RunOutcome;
+          let recorded: Awaited<ReturnType<NonNullable<typeof recording>['close']>> | undefined;
+          try {
+            outcome = await withSession(
+              options,
+              ctx,
+              ({ manager }) => {
+                recording?.describe({ mode, command: options.command, devices: manager.devices });
+                return runMode(manager, mode, command, options, ctx);
               },
-              ctx.io,
-              ctx.global(),
+              recording === undefined ? {} : { wrapDevice: recording.wrapDevice },
             );
-            emit(ctx.io, ctx.global(), result, () => formatFormation(result.formation));
-            if (!result.leader.result.success) {
-              throw new CliError(
-                'FAILED',
-                `the leader's ${command.kind} failed: ${result.leader.result.code}`,
-              );
-            }
-            if (result.formation.reason !== 'leader-stopped') {
-              throw new CliError('FAILED', `the formation ended: ${result.formation.reason}`);
-            }
-          });
+          } finally {
+            // after the session closed: the devices' cleanups are in the file
+            recorded = await recording?.close();
+          }
+          emit(
+            ctx.io,
+            ctx.global(),
+            { ...outcome.value, ...(recorded === undefined ? {} : { recording: recorded }) },
+            () =>
+              [
+                outcome.text(),
+                ...(recorded === undefined
+                  ? []
+                  : [
+                      `recorded ${recorded.written} messages to ${recorded.file}${recorded.dropped > 0 ? `, ${recorded.dropped} dropped` : ''}`,
+                    ]),
+              ].join('\n'),
+          );
+          if (outcome.failure !== undefined) throw outcome.failure;
         },
       ),
   );
 };
+
+/** Runs the fleet mode and says how it ended (printed once the recording, if any, is closed). */
+async function runMode(
+  manager: Awaited<ReturnType<typeof openFleetSession>>['manager'],
+  mode: RunMode,
+  command: ReturnType<typeof parseCommandSpec>,
+  options: {
+    timeoutMs: number;
+    leader?: string;
+    formation: FormationShape;
+    spacing: number;
+    tolerance: number;
+    settleTimeoutMs: number;
+  },
+  ctx: CommandContext,
+): Promise<RunOutcome> {
+  if (mode === 'synchronized') {
+    const report = await runSynchronized(manager, command, options.timeoutMs, ctx.io, ctx.global());
+    const failure =
+      report.failed.length > 0
+        ? new CliError('FAILED', `${command.kind} failed on ${report.failed.join(', ')}`)
+        : undefined;
+    return {
+      value: report,
+      text: () => formatReport(`synchronized ${command.kind}`, report),
+      ...(failure === undefined ? {} : { failure }),
+    };
+  }
+  const result = await runLeaderFollower(
+    manager,
+    command,
+    {
+      leader: options.leader as string,
+      formation: options.formation,
+      spacing: options.spacing,
+      toleranceM: options.tolerance,
+      settleTimeoutMs: options.settleTimeoutMs,
+    },
+    ctx.io,
+    ctx.global(),
+  );
+  const failure = !result.leader.result.success
+    ? new CliError('FAILED', `the leader's ${command.kind} failed: ${result.leader.result.code}`)
+    : result.formation.reason !== 'leader-stopped'
+      ? new CliError('FAILED', `the formation ended: ${result.formation.reason}`)
+      : undefined;
+  return {
+    value: result,
+    text: () => formatFormation(result.formation),
+    ...(failure === undefined ? {} : { failure }),
+  };
+}

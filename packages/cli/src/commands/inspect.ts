@@ -8,14 +8,25 @@ import { emit } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 function summaryText(file: string, s: RecordingSummary): string {
-  const robot = s.robot === undefined ? '' : ` of ${s.robot['device_id']} (${s.robot['mode']})`;
+  const robots = Object.keys(s.robots ?? {});
+  const robot =
+    s.robot !== undefined
+      ? ` of ${s.robot['device_id']} (${s.robot['mode']})`
+      : robots.length > 0
+        ? ` of ${robots.length} robots (${robots.join(', ')})`
+        : '';
+  const width = Math.max(16, ...Object.keys(s.channels).map((topic) => topic.length));
   const codes = Object.entries(s.errorsByCode).map(([code, n]) => `${code} ${n}`);
   return [
     `${file}: a recording${robot}, ${s.durationS.toFixed(2)} s${s.complete ? '' : ' (cut short: read up to its last complete chunk)'}`,
     `calls ${s.calls}, errors ${s.errors}${codes.length > 0 ? ` (${codes.join(', ')})` : ''}`,
     `emergency stops ${s.emergencyStops}, trips ${s.trips}${s.dropped === undefined ? '' : `, dropped ${s.dropped}`}`,
+    ...Object.entries(s.robots ?? {}).map(
+      ([id, r]) =>
+        `  robot ${id}: calls ${r.calls}, errors ${r.errors}, emergency stops ${r.emergencyStops}, trips ${r.trips}, messages ${r.messages}`,
+    ),
     ...Object.entries(s.channels).map(
-      ([topic, c]) => `  ${topic.padEnd(16)} ${String(c.messages).padStart(7)}  ${c.schema}`,
+      ([topic, c]) => `  ${topic.padEnd(width)} ${String(c.messages).padStart(7)}  ${c.schema}`,
     ),
   ].join('\n');
 }
@@ -37,7 +48,9 @@ export async function readForCommand(file: string) {
 export const registerInspect: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
     new Command('inspect')
-      .description('sum up a recording: duration, calls, errors, e-stops, messages per channel')
+      .description(
+        'sum up a recording: duration, calls, errors, e-stops, messages per channel (and per robot, for a fleet)',
+      )
       .argument('<file>', 'an MCAP file written by hal record or @hal/recorder')
       .action(async (file: string) => {
         const summary = summarizeRecording(await readForCommand(file));

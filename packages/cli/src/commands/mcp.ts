@@ -7,9 +7,11 @@ import type { Readable } from 'node:stream';
 import { Command } from 'commander';
 import { StdioServerTransport } from '@modelcontextprotocol/sdk/server/stdio.js';
 import { createRobotMcpServer, serveHttp } from '@hal/mcp';
+import { McapRecorder, recordHal } from '@hal/recorder';
 import { createToolExecutor, halTools } from '@hal/tools';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
+import { cliLogger } from '../logger.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
 import { createRobot } from '../mcp/robot.js';
@@ -50,9 +52,37 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     if (!options.http && stdin === undefined) {
       throw new CliError('USAGE', 'MCP over stdio needs a standard input: give --http');
     }
-    const { hal, world } = createRobot(options, io.env);
-    await hal.initialize();
+    // a file that cannot be written is refused before the robot is touched
+    const recorder =
+      options.record === undefined
+        ? undefined
+        : await McapRecorder.toFile(options.record, { logger: cliLogger(io, false) }).catch(
+            (error: unknown) => {
+              throw new CliError(
+                'USAGE',
+                `--record: cannot write ${options.record}: ${error instanceof Error ? error.message : String(error)}`,
+              );
+            },
+          );
+    const sampling = new AbortController();
+    const robot = createRobot(options, io.env);
+    const world = robot.world;
+    const hal =
+      recorder === undefined
+        ? robot.hal
+        : recordHal(robot.hal, recorder, {
+            signal: sampling.signal,
+            ...(options.udp === undefined && options.serial === undefined
+              ? { map: { name: options.map ?? 'empty' } }
+              : {}),
+          });
     let close: () => Promise<void> = async () => undefined;
+    try {
+      await hal.initialize();
+    } catch (error) {
+      await recorder?.close().catch(() => undefined);
+      throw error;
+    }
     try {
       const executor = createToolExecutor(hal, {
         tools: halTools(hal),
@@ -79,6 +109,13 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     } finally {
       await close().catch(() => undefined);
       await hal.cleanup().catch(() => undefined);
+      sampling.abort();
+      if (recorder !== undefined) {
+        const stats = await recorder.close();
+        io.err(
+          `hal mcp: recorded ${stats.written} messages to ${options.record}${stats.dropped > 0 ? `, ${stats.dropped} dropped` : ''}\n`,
+        );
+      }
     }
   });
   program.addCommand(command);

@@ -3,6 +3,7 @@
 // DeviceManager over it. NATS is opened only when a device is on NATS.
 import { DeviceManager, discoverNatsDevices } from '@hal/fleet/node';
 import type { DiscoveredDevice, FleetConfig } from '@hal/fleet/node';
+import type { DeviceManagerOptions } from '@hal/fleet/node';
 import { openConnection } from '@hal/nats';
 import { CliError } from '../cli-error.js';
 import { readFleetConfigFile, selectDevices } from './fleet-config-file.js';
@@ -31,14 +32,18 @@ export interface FleetSession {
   close(): Promise<void>;
 }
 
+/** What a subcommand adds to the device manager (a recorder's `wrapDevice`). */
+export type FleetSessionExtras = Pick<DeviceManagerOptions, 'wrapDevice'>;
+
 /** Connects, finds the devices and starts a manager over them; the caller closes it. */
 export async function openFleetSession(
   options: FleetCliOptions,
   io: CliIO,
   global: GlobalOptions,
+  extras: FleetSessionExtras = {},
 ): Promise<FleetSession> {
   if (options.config !== undefined)
-    return openConfiguredSession(options.config, options, io, global);
+    return openConfiguredSession(options.config, options, io, global, extras);
   const connection = await openConnection(natsConnectOptions(options, io.env, 'hal-fleet'));
   try {
     let ids = options.device ?? [];
@@ -60,7 +65,7 @@ export async function openFleetSession(
         telemetryRateHz: 1,
         offlineAfterMs: options.offlineAfterMs ?? DEFAULT_OFFLINE_AFTER_MS,
       },
-      { natsConnection: { connection } },
+      { natsConnection: { connection }, ...extras },
     );
     progress(io, global, `connecting to ${ids.length} device(s)...`);
     await manager.start();
@@ -88,6 +93,7 @@ async function openConfiguredSession(
   options: FleetCliOptions,
   io: CliIO,
   global: GlobalOptions,
+  extras: FleetSessionExtras,
 ): Promise<FleetSession> {
   const file = await readFleetConfigFile(path);
   const config: FleetConfig = {
@@ -104,6 +110,7 @@ async function openConfiguredSession(
   try {
     const manager = new DeviceManager(config, {
       devices: deviceFactories(io.env),
+      ...extras,
       ...(connection === undefined ? {} : { natsConnection: { connection } }),
     });
     progress(io, global, `connecting to ${config.devices.length} device(s)...`);

@@ -18,6 +18,8 @@ export interface McpOptions extends RobotTarget {
   token?: string;
   timeoutMs?: number;
   leash: Leash;
+  /** An MCAP file to record the served robot's run into. */
+  record?: string;
 }
 
 /** The options as commander parses them. */
@@ -31,6 +33,7 @@ export interface McpCliOptions extends LeashCliOptions {
   port: number;
   token?: string;
   timeout?: number;
+  record?: string;
 }
 
 /** Adds the options of `hal mcp` to `command`. */
@@ -48,6 +51,10 @@ export function addMcpOptions(command: Command): Command {
       '--timeout <ms>',
       'time one tool call may take (motions get more)',
       numberOption('--timeout'),
+    )
+    .option(
+      '--record <file>',
+      "record the robot's run (every tool call's HAL calls, the pose, e-stops) into this MCAP file",
     );
   return addLeashOptions(command);
 }
@@ -70,5 +77,6 @@ export function mcpOptions(
     ...(token === undefined || token === '' ? {} : { token }),
     ...(o.timeout === undefined ? {} : { timeoutMs: o.timeout }),
     leash: leashFromOptions(o),
+    ...(o.record === undefined ? {} : { record: o.record }),
   };
 }

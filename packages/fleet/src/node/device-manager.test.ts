@@ -1,5 +1,6 @@
 import { NatsHAL } from '@hal/nats';
 import { SimulationHAL, World } from '@hal/simulation';
+import type { HardwareAbstractionLayer } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { createDeviceHAL } from './create-device-hal.js';
 import type { DeviceFactories } from './create-device-hal.js';
@@ -207,5 +208,45 @@ describe('DeviceManager with simulated devices', () => {
     expect((await manager.createDeviceHAL('a').safety.emergencyStop('x')).code).not.toBe(
       'NOT_CONNECTED',
     );
+  });
+
+  it("puts every fleet call through wrapDevice, but not the manager's own telemetry reads", async () => {
+    const seen: string[] = [];
+    /** Notes each call of the HAL's own methods and of its locomotion, by device. */
+    const tracing = (device: string, hal: HardwareAbstractionLayer): HardwareAbstractionLayer => {
+      const trace = <T extends object>(target: T, prefix: string): T =>
+        new Proxy(target, {
+          get(obj, prop) {
+            const value: unknown = Reflect.get(obj, prop, obj);
+            if (prop === 'locomotion' && prefix === '')
+              return trace(value as object, 'locomotion.');
+            if (typeof value !== 'function') return value;
+            return (...args: unknown[]) => {
+              seen.push(`${device} ${prefix}${String(prop)}`);
+              return (value as (...a: unknown[]) => unknown).apply(obj, args);
+            };
+          },
+        });
+      return trace(hal, '');
+    };
+    const manager = new DeviceManager(
+      { telemetryRateHz: 50, devices: [sim('a', 0), sim('b', 0.3)] },
+      { devices: factories().devices, wrapDevice: tracing },
+    );
+    try {
+      await manager.start();
+      await new Promise((resolve) => setTimeout(resolve, 100)); // several telemetry rounds
+      const report = await manager.fleet.synchronized({ kind: 'moveForward', distanceCm: 1 });
+      expect(report.succeeded).toEqual(['a', 'b']);
+      expect(manager.health().map((h) => h.telemetry !== undefined)).toEqual([true, true]);
+    } finally {
+      await manager.stop();
+    }
+    const calls = seen.filter((call) => call.startsWith('a ') && !call.endsWith('isReady'));
+    expect(calls).toContain('a initialize');
+    expect(calls).toContain('a locomotion.moveForward');
+    expect(calls.at(-1)).toBe('a cleanup');
+    // 50 Hz telemetry for over 100 ms read the pose many times, none of them through the wrapper
+    expect(calls.filter((call) => call === 'a locomotion.getPose').length).toBeLessThan(3);
   });
 });

@@ -21,10 +21,20 @@ export interface DeviceManagerOptions {
   natsLogger?: Logger;
   /** Options of the fleet the manager drives (scheduler, timeouts). */
   fleet?: Omit<FleetOptions, 'logger'>;
+  /**
+   * Wraps each device's HAL as it is built (a flight recorder, a tracer): every call the fleet
+   * makes, and the device's `initialize` and `cleanup`, go through what it returns. The
+   * manager's own telemetry reads (pose and safety at `telemetryRateHz`) go to the device's HAL
+   * itself, so they are not seen as calls of the run.
+   */
+  wrapDevice?: (device: string, hal: HardwareAbstractionLayer) => HardwareAbstractionLayer;
 }
 
 interface Managed {
   config: DeviceConfig;
+  /** The device's HAL as built: what the telemetry reads. */
+  device: HardwareAbstractionLayer;
+  /** The same, through `wrapDevice` when given: what is initialised, called and cleaned up. */
   raw: HardwareAbstractionLayer;
   guarded: OfflineGuardHAL;
   online: boolean;
@@ -135,7 +145,7 @@ export class DeviceManager {
         type: m.config.type,
         online: m.online,
         ready: m.guarded.isReady(),
-        emergencyStopped: m.raw.safety.isEmergencyStopped(),
+        emergencyStopped: m.device.safety.isEmergencyStopped(),
       };
       if (m.lastSeen !== undefined) h.lastSeen = m.lastSeen;
       if (m.telemetry !== undefined) h.telemetry = m.telemetry;
@@ -223,16 +233,18 @@ export class DeviceManager {
 
   #build(m: Managed): void {
     const nats = this.#nats?.source;
-    m.raw =
-      m.config.type === 'nats' && nats === undefined
-        ? placeholderHAL()
-        : createDeviceHAL(m.config, {
-            ...(this.#options.devices === undefined ? {} : { devices: this.#options.devices }),
-            ...(nats === undefined ? {} : { nats }),
-            ...(this.#options.natsLogger === undefined
-              ? {}
-              : { natsLogger: this.#options.natsLogger }),
-          });
+    const pending = m.config.type === 'nats' && nats === undefined;
+    m.device = pending
+      ? placeholderHAL()
+      : createDeviceHAL(m.config, {
+          ...(this.#options.devices === undefined ? {} : { devices: this.#options.devices }),
+          ...(nats === undefined ? {} : { nats }),
+          ...(this.#options.natsLogger === undefined
+            ? {}
+            : { natsLogger: this.#options.natsLogger }),
+        });
+    // a NATS device waiting for the connection is wrapped once it is built for real
+    m.raw = pending ? m.device : (this.#options.wrapDevice?.(m.config.id, m.device) ?? m.device);
     m.guarded = new OfflineGuardHAL(m.raw, m.config.id, () => !m.online);
   }
 
@@ -259,9 +271,9 @@ export class DeviceManager {
         await boundedWait(m.initializing, waitMs);
         m.initialized = true;
       }
-      const pose = await boundedWait(m.raw.locomotion.getPose(), waitMs);
-      if (!m.raw.isReady()) throw new HalError('NOT_CONNECTED', 'the HAL is not ready');
-      const safety = m.raw.safety.getSafetyStatus();
+      const pose = await boundedWait(m.device.locomotion.getPose(), waitMs);
+      if (!m.device.isReady()) throw new HalError('NOT_CONNECTED', 'the HAL is not ready');
+      const safety = m.device.safety.getSafetyStatus();
       const telemetry: DeviceTelemetry = {
         device: m.config.id,
         at: Date.now(),

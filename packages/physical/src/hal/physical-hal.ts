@@ -13,6 +13,7 @@ import { MjpegCamera } from '../camera/mjpeg.js';
 import { scoped, silentLogger } from '@hal/types';
 import type { ScopedLogger } from '@hal/types';
 import { PoseTracker } from '../pose-tracker.js';
+import type { ReportedSteps } from '../pose-tracker.js';
 import { createAuthenticator } from '../protocol/auth.js';
 import { MessageCodec } from '../protocol/codec.js';
 import { robotConfigFromDevice } from '../protocol/device-config.js';
@@ -249,6 +250,14 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   /** The link's round-trip statistics. */
   transportStats(): TransportStats | undefined {
     return this.#transport?.stats();
+  }
+
+  /**
+   * The wheel step counters and speeds the robot last reported (its status and stop replies, not
+   * the host's prediction between them); undefined before `initialize()` has read a status.
+   */
+  reportedSteps(): ReportedSteps | undefined {
+    return this.#tracker.reported();
   }
 
   /** The serial link's frame statistics (undefined on other links). */
