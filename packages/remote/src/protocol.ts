@@ -224,6 +224,8 @@ function isUndefinedTag(value: unknown): boolean {
 /** Decodes call arguments from the wire (the inverse of {@link encodeArgs}). */
 export function decodeArgs(args: readonly unknown[]): unknown[] {
   return args.map((arg) => {
+    // only an object can be a special value: the common case skips the schema (and its issues)
+    if (typeof arg !== 'object' || arg === null) return arg;
     const special = SPECIAL.safeParse(arg);
     if (!special.success) return arg;
     return '$number' in special.data ? Number(special.data.$number) : undefined;

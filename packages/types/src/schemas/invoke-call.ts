@@ -8,13 +8,21 @@ import type { CallSpec, CallTable } from './call-table.js';
  * validates them and names the parameter). A synchronous answer or throw becomes a promise.
  * Rejects with NOT_IMPLEMENTED when the HAL has no such subsystem or method.
  */
-export async function invokeSpec(
+export function invokeSpec(
   hal: HardwareAbstractionLayer,
   spec: CallSpec,
   args: readonly unknown[],
 ): Promise<unknown> {
-  const value: unknown = await callMethod(hal, spec, args);
-  return spec.kind === 'void' ? undefined : value;
+  // not an async function: every served call comes through here, and the method's own promise
+  // is passed on rather than wrapped in another frame
+  let value: unknown;
+  try {
+    value = callMethod(hal, spec, args);
+  } catch (thrown) {
+    return Promise.reject(thrown as Error);
+  }
+  const answer = Promise.resolve(value);
+  return spec.kind === 'void' ? answer.then(() => undefined) : answer;
 }
 
 /**
@@ -35,7 +43,7 @@ export function callMethod(
       details: { call: spec.name },
     });
   }
-  return (method as (...a: unknown[]) => unknown).apply(target, [...args]);
+  return (method as (...a: unknown[]) => unknown).apply(target, args as unknown[]);
 }
 
 /**

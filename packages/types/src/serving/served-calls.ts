@@ -71,9 +71,9 @@ export class ServedCalls {
     args: readonly unknown[],
     options: { priority?: boolean } = {},
   ): Promise<unknown> {
-    const task = () => invokeSpec(this.#hal, spec, args);
     const atOnce =
       this.#order === 'concurrent' || ServedCalls.isSafety(spec) || spec.lane !== 'queue';
-    return atOnce ? task() : this.#queue.run(task, options.priority === true);
+    if (atOnce) return invokeSpec(this.#hal, spec, args);
+    return this.#queue.run(() => invokeSpec(this.#hal, spec, args), options.priority === true);
   }
 }
