@@ -25,14 +25,31 @@ export async function readDifferentialState(
   return state;
 }
 
+/** Which of the optional streams a device's capabilities offer. */
+export interface OfferedStreams {
+  imu: boolean;
+  range: boolean;
+}
+
+/** The optional streams `capabilities` offer (parsed capability strings: a gateway caches this). */
+export function offersStream(capabilities: readonly string[]): OfferedStreams {
+  return {
+    imu: hasCapability(capabilities, CAPABILITIES.imu),
+    range: hasCapability(capabilities, CAPABILITIES.rangeSensors),
+  };
+}
+
 /** The orientation of a heading about the z axis (REP-103, z up) as the spec's `{w,x,y,z}`. */
 export function quaternionFromHeading(headingRad: number): ImuData['orientation_quaternion'] {
   return { w: Math.cos(headingRad / 2), x: 0, y: 0, z: Math.sin(headingRad / 2) };
 }
 
 /** The IMU stream's payload, or undefined when the device offers no IMU (nothing is streamed). */
-export async function readImu(hal: HardwareAbstractionLayer): Promise<ImuData | undefined> {
-  if (!hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.imu)) return undefined;
+export async function readImu(
+  hal: HardwareAbstractionLayer,
+  offered = offersStream(hal.getDeviceInfo().capabilities).imu,
+): Promise<ImuData | undefined> {
+  if (!offered) return undefined;
   const imu = await hal.vision.getIMU();
   const data: ImuData = {
     orientation_quaternion: quaternionFromHeading(imu.heading),
@@ -87,8 +104,11 @@ export function rangePerSensor(range: DistanceSensors): RangeData[] {
 }
 
 /** The range streams' payloads, or undefined when the device offers no range sensors. */
-export async function readRange(hal: HardwareAbstractionLayer): Promise<RangeMessages | undefined> {
-  if (!hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.rangeSensors)) return undefined;
+export async function readRange(
+  hal: HardwareAbstractionLayer,
+  offered = offersStream(hal.getDeviceInfo().capabilities).range,
+): Promise<RangeMessages | undefined> {
+  if (!offered) return undefined;
   const range = await hal.vision.getDistanceSensors();
   return {
     perSensor: rangePerSensor(range),

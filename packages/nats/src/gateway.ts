@@ -27,7 +27,8 @@ import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
 import { refuseServedTwice } from './served-probe.js';
 import { wheelPowersFor } from './drive-mapping.js';
-import { readDifferentialState, readImu, readRange } from './gateway-streams.js';
+import { offersStream, readDifferentialState, readImu, readRange } from './gateway-streams.js';
+import type { OfferedStreams } from './gateway-streams.js';
 import { natsCalls } from './hal-calls.js';
 import type { NatsCall } from './hal-calls.js';
 import { jpegSize } from './jpeg-size.js';
@@ -120,6 +121,8 @@ class Gateway implements HalGateway {
   readonly #cpu = new CpuMeter();
   readonly #calls: Readonly<Record<string, NatsCall>>;
   #streaming = false;
+  #offered: OfferedStreams | undefined;
+  #offeredFor = '';
   #closed = false;
 
   constructor(
@@ -402,6 +405,20 @@ class Gateway implements HalGateway {
   }
 
   /** One tick of the streams; a tick still reading when the next is due is not overlapped. */
+  /**
+   * The optional streams the device offers now: its capabilities are read at every tick (a robot
+   * may gain a camera or a sensor), but parsed again only when they change.
+   */
+  #offeredStreams(): OfferedStreams {
+    const capabilities = this.hal.getDeviceInfo().capabilities;
+    const key = capabilities.join('\n');
+    if (this.#offered === undefined || this.#offeredFor !== key) {
+      this.#offered = offersStream(capabilities);
+      this.#offeredFor = key;
+    }
+    return this.#offered;
+  }
+
   async #stream(): Promise<void> {
     if (this.#streaming || this.#closed || !this.hal.isReady()) return;
     this.#streaming = true;
@@ -411,9 +428,10 @@ class Gateway implements HalGateway {
         SCHEMAS.differentialState,
         await readDifferentialState(this.hal, this.#robot),
       );
-      const imu = await readImu(this.hal);
+      const offered = this.#offeredStreams();
+      const imu = await readImu(this.hal, offered.imu);
       if (imu !== undefined) this.#publish('imuData', SCHEMAS.imu, imu);
-      const range = await readRange(this.hal);
+      const range = await readRange(this.hal, offered.range);
       if (range !== undefined) {
         for (const sensor of range.perSensor) this.#publish('rangeData', SCHEMAS.range, sensor);
         this.#publish('rangeSummary', SCHEMAS.rangeSummary, range.summary);
