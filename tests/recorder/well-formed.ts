@@ -1,22 +1,3 @@
-// What every reader of a recording expects, for the cross-process recorder tests: each message
-// valid against its channel's JSON Schema, and log times that never go backwards.
-import type { Recording } from '@hal/recorder';
-import { Ajv2020 } from 'ajv/dist/2020.js';
-import { expect } from 'vitest';
-
-export function expectWellFormed(recording: Recording): void {
-  const ajv = new Ajv2020({ strict: false });
-  const validators = new Map(
-    [...recording.channels].map(([topic, c]) => [topic, ajv.compile(c.schema as object)]),
-  );
-  let last = 0n;
-  for (const message of recording.messages) {
-    const validate = validators.get(message.topic);
-    expect(validate, `a schema for ${message.topic}`).toBeDefined();
-    expect(validate!(message.value), `${message.topic}: ${ajv.errorsText(validate!.errors)}`).toBe(
-      true,
-    );
-    expect(message.logTime >= last, `log time of a ${message.topic} message`).toBe(true);
-    last = message.logTime;
-  }
-}
+// What every reader of a recording expects (each message valid against its channel's JSON Schema,
+// log times that never go backwards): the recorder's own check, for the cross-process tests.
+export { expectWellFormed } from '../../packages/recorder/src/validate.fixture.js';

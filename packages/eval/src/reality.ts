@@ -1,3 +1,4 @@
+import { BodyErrorSchema } from '@hal/simulation';
 import type { BodyErrorInput } from '@hal/simulation';
 import { z } from 'zod';
 
@@ -6,7 +7,8 @@ import { z } from 'zod';
  * wheels. All off by default; all seeded (the same seed loses the same calls and draws the same
  * noise), so a run with knobs is as repeatable as one without. The wheel and odometry knobs are
  * the simulator's body error (`bodyError` of @hal/simulation): the world moves the robot where
- * its body really goes, and the checks judge that, while the robot reports its odometry.
+ * its body really goes, and the checks judge that, while the robot reports its odometry. Their
+ * limits are the body error's own.
  */
 export const RealitySchema = z
   .object({
@@ -30,30 +32,15 @@ export const RealitySchema = z
       .max(1)
       .default(0)
       .describe('Standard deviation of Gaussian noise on range readings, metres'),
-    wheelDiameterErrorPct: z
-      .number()
-      .min(0)
-      .max(20)
-      .default(0)
-      .describe(
-        "Standard deviation of each wheel's true diameter from the nominal, percent (the body goes farther or shorter than its odometry says)",
-      ),
-    wheelSlipPct: z
-      .number()
-      .min(0)
-      .max(50)
-      .default(0)
-      .describe(
-        'Most ground travel a wheel loses to slip in one motion, percent (uniform from 0 per motion and wheel)',
-      ),
-    odometryNoisePct: z
-      .number()
-      .min(0)
-      .max(20)
-      .default(0)
-      .describe(
-        "Standard deviation of the odometry's error on each wheel's travel per motion, percent (the reported pose drifts from the true one)",
-      ),
+    wheelDiameterErrorPct: BodyErrorSchema.shape.wheelDiameterErrorPct.describe(
+      "Standard deviation of each wheel's true diameter from the nominal, percent (the body goes farther or shorter than its odometry says)",
+    ),
+    wheelSlipPct: BodyErrorSchema.shape.wheelSlipPct.describe(
+      'Most ground travel a wheel loses to slip in one motion, percent (uniform from 0 per motion and wheel)',
+    ),
+    odometryNoisePct: BodyErrorSchema.shape.odometryNoisePct.describe(
+      "Standard deviation of the odometry's error on each wheel's travel per motion, percent (the reported pose drifts from the true one)",
+    ),
   })
   .strict();
 export type Reality = z.output<typeof RealitySchema>;

@@ -196,17 +196,8 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
       )
       .action(
         async (
-          options: FleetCliOptions & {
-            mode?: RunMode;
-            command: string;
-            timeoutMs: number;
-            leader?: string;
-            formation: FormationShape;
-            spacing: number;
-            tolerance: number;
-            settleTimeoutMs: number;
-            record?: string;
-          },
+          options: FleetCliOptions &
+            ModeOptions & { mode?: RunMode; command: string; record?: string },
         ) => {
           const command = parseCommandSpec(options.command);
           const mode = await resolveRunMode(options.mode, options.config);
@@ -254,19 +245,22 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
   );
 };
 
+/** The options of `hal fleet run` that shape how a mode runs. */
+interface ModeOptions {
+  timeoutMs: number;
+  leader?: string;
+  formation: FormationShape;
+  spacing: number;
+  tolerance: number;
+  settleTimeoutMs: number;
+}
+
 /** Runs the fleet mode and says how it ended (printed once the recording, if any, is closed). */
 async function runMode(
   manager: Awaited<ReturnType<typeof openFleetSession>>['manager'],
   mode: RunMode,
   command: ReturnType<typeof parseCommandSpec>,
-  options: {
-    timeoutMs: number;
-    leader?: string;
-    formation: FormationShape;
-    spacing: number;
-    tolerance: number;
-    settleTimeoutMs: number;
-  },
+  options: ModeOptions,
   ctx: CommandContext,
 ): Promise<RunOutcome> {
   if (mode === 'synchronized') {
