@@ -2,7 +2,7 @@ import { HAL_ERROR_CODES, HalError, deviceOfflineError } from '@hal/types';
 import type { HalErrorCode, HalErrorPayload } from '@hal/types';
 import { errors, headers as natsHeaders } from '@nats-io/transport-node';
 import type { NatsConnection, Status, Subscription } from '@nats-io/transport-node';
-import type { z } from 'zod';
+import { z } from 'zod';
 import { decodeMessage, encodeMessage } from './codec.js';
 import { subjectFor } from './subjects.js';
 import type { SubjectName } from './subjects.js';
@@ -46,6 +46,19 @@ export function errorFromPayload(payload: HalErrorPayload): HalError {
  * the gateway runs each call once, however often it is repeated), and liveness from everything the
  * device sends. Every wait is bounded by `callTimeoutMs`.
  */
+/** The reply schemas with the error reply beside them, built once per reply schema. */
+const replyOrErrorSchemas = new WeakMap<z.ZodType, z.ZodType>();
+
+/** `reply` or the spec's error reply: the reply first, as most answers are. */
+function replyOrError(reply: z.ZodType): z.ZodType {
+  let schema = replyOrErrorSchemas.get(reply);
+  if (schema === undefined) {
+    schema = z.union([reply, ErrorReplySchema]);
+    replyOrErrorSchemas.set(reply, schema);
+  }
+  return schema;
+}
+
 export class DeviceLink {
   /** The `device_id` of the last reply: who answered (the served id of the default device). */
   sender: string | undefined;
@@ -132,11 +145,14 @@ export class DeviceLink {
           headers,
         });
         this.seen();
-        const envelope = decodeMessage(msg.data, ErrorReplySchema.or(reply));
+        const envelope = decodeMessage(msg.data, replyOrError(reply));
         this.sender = envelope.device_id;
         const body = envelope.payload as unknown;
-        const failed = ErrorReplySchema.safeParse(body);
-        if (failed.success) throw errorFromPayload(failed.data.error);
+        // only a body with an `error` field can be the error reply: the common answer skips it
+        if (typeof body === 'object' && body !== null && 'error' in body) {
+          const failed = ErrorReplySchema.safeParse(body);
+          if (failed.success) throw errorFromPayload(failed.data.error);
+        }
         return body as z.output<S>;
       } catch (error) {
         if (error instanceof HalError) throw error;

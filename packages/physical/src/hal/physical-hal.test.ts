@@ -191,23 +191,29 @@ describe('PhysicalHAL', () => {
   });
 
   describe('#moveTo', () => {
-    it('splits a straight leg longer than one command allows into several moves', async () => {
-      // x50, not faster: the robot's 10 s host timeout is 200 ms of real time, more than a loaded
-      // machine may hold back a heartbeat (at x200 it was 50 ms, and the move was sometimes cut)
-      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
-      const hal = halOn(robot);
-      await hal.initialize();
-      const result = await hal.locomotion.moveTo(0, 2.5, 0);
-      expect(result.success, JSON.stringify(result)).toBe(true);
-      const moves = robot.requests.filter((r) => r['cmd'] === 'move_cm');
-      expect(moves.length).toBe(2);
-      for (const move of moves) expect(Number(move['left_cm']) * 217.3).toBeLessThan(40960);
-      const pose = await hal.locomotion.getPose();
-      // whole steps: the heading is good to one step (~0.0009 rad), ~2 mm sideways over 2.5 m
-      expect(Math.abs(pose.position.y - 2.5)).toBeLessThan(0.001);
-      expect(Math.abs(pose.position.x)).toBeLessThan(0.003);
-      await hal.cleanup();
-    });
+    it(
+      'splits a straight leg longer than one command allows into several moves',
+      { timeout: 30_000 },
+      async () => {
+        // x20, slower than the others: the robot's 10 s host timeout is then 500 ms of real time, more
+        // than a loaded machine holds back a heartbeat (at x50, 200 ms, the leg was cut in a full
+        // run beside other work; at x200, 50 ms, often)
+        const scale = 20;
+        const robot = new MockRobot({ timeScale: scale, hostTimeoutMs: 10_000 });
+        const hal = halOn(robot, { timeScale: scale });
+        await hal.initialize();
+        const result = await hal.locomotion.moveTo(0, 2.5, 0);
+        expect(result.success, JSON.stringify(result)).toBe(true);
+        const moves = robot.requests.filter((r) => r['cmd'] === 'move_cm');
+        expect(moves.length).toBe(2);
+        for (const move of moves) expect(Number(move['left_cm']) * 217.3).toBeLessThan(40960);
+        const pose = await hal.locomotion.getPose();
+        // whole steps: the heading is good to one step (~0.0009 rad), ~2 mm sideways over 2.5 m
+        expect(Math.abs(pose.position.y - 2.5)).toBeLessThan(0.001);
+        expect(Math.abs(pose.position.x)).toBeLessThan(0.003);
+        await hal.cleanup();
+      },
+    );
   });
 
   describe('#drive', () => {
