@@ -9,10 +9,17 @@ import type { Emulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
 
 const TIME_SCALE = 10;
+// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
+// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
+const SCALED_HOST_TIMEOUT_MS = 10_000;
 let emulator: Emulator;
 
 beforeAll(async () => {
-  emulator = await startEmulator({ timeScale: TIME_SCALE, pty: false });
+  emulator = await startEmulator({
+    timeScale: TIME_SCALE,
+    pty: false,
+    hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+  });
 });
 afterAll(stopAllEmulators);
 

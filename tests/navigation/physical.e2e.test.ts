@@ -12,6 +12,9 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 const TIME_SCALE = 20;
+// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
+// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
+const SCALED_HOST_TIMEOUT_MS = 10_000;
 afterAll(stopAllEmulators);
 
 /** A box between the start (the origin, facing +x) and the goal. */
@@ -38,7 +41,11 @@ async function navigate(hal: HardwareAbstractionLayer): Promise<NavigationOutcom
 
 describe('NavigationBridge through PhysicalHAL to the emulated robot', () => {
   it('reaches a goal round a known obstacle, and ends where SimulationHAL ends', async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE, pty: false });
+    const emulator = await startEmulator({
+      timeScale: TIME_SCALE,
+      pty: false,
+      hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+    });
     const physical = new PhysicalHAL(
       {
         mode: 'physical',

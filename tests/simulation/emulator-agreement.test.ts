@@ -64,9 +64,20 @@ describe('simulation vs the emulated firmware', () => {
     if (!existsSync(EMULATOR)) {
       throw new Error(`${EMULATOR} is missing: build it with "bash firmware/scripts/test.sh"`);
     }
+    // the longest host timeout (500 ms of real time at x20): a heartbeat held back on a loaded
+    // machine must not cut a motion this test compares
     emulator = spawn(
       EMULATOR,
-      ['--udp-port', '0', '--no-pty', '--time-scale', String(TIME_SCALE), '--exit-on-stdin-eof'],
+      [
+        '--udp-port',
+        '0',
+        '--no-pty',
+        '--time-scale',
+        String(TIME_SCALE),
+        '--host-timeout-ms',
+        '10000',
+        '--exit-on-stdin-eof',
+      ],
       { stdio: ['pipe', 'pipe', 'pipe'] },
     );
     const lines = createInterface({ input: emulator.stdout });

@@ -11,6 +11,9 @@ import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 afterAll(stopAllEmulators);
 
 const TIME_SCALE = 20;
+// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
+// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
+const SCALED_HOST_TIMEOUT_MS = 10_000;
 
 const SCRIPT: Array<[string, (hal: HardwareAbstractionLayer) => Promise<HALToolResult>]> = [
   ['moveForward(10)', (h) => h.locomotion.moveForward(10)],
@@ -26,7 +29,11 @@ const SCRIPT: Array<[string, (hal: HardwareAbstractionLayer) => Promise<HALToolR
 
 describe('SimulationHAL and PhysicalHAL on the emulated robot', () => {
   it('end every call of the same script with the same result, steps and pose', async () => {
-    const emulator = await startEmulator({ timeScale: TIME_SCALE, pty: false });
+    const emulator = await startEmulator({
+      timeScale: TIME_SCALE,
+      pty: false,
+      hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+    });
     const physical = new PhysicalHAL(
       {
         mode: 'physical',
