@@ -9,49 +9,16 @@ import { World } from '@hal/simulation';
 import type { SimRobot } from '@hal/simulation';
 import { isHalError } from '@hal/types';
 import { describe, expect, it } from 'vitest';
-
-type Command = Record<string, string | number>;
-
-const SCRIPT: Command[] = [
-  { cmd: 'move_cm', left_cm: 10, right_cm: 10 },
-  { cmd: 'rotate_deg', degrees: 90 },
-  { cmd: 'move_cm', left_cm: 12.34, right_cm: 12.34 },
-  { cmd: 'rotate_deg', degrees: -45 },
-  { cmd: 'move_cm', left_cm: 5, right_cm: 15 },
-  { cmd: 'move_steps', left: 1000, right: -500, speed: 600 },
-  { cmd: 'move_cm', left_cm: 3.3, right_cm: 3.3, speed: 300 },
-  { cmd: 'drive', left_sps: 800, right_sps: 600, duration_ms: 1500 },
-  { cmd: 'rotate_deg', degrees: 200.5 },
-  { cmd: 'move_cm', left_cm: -7.77, right_cm: -7.77 },
-];
+import { AGREEMENT_SCRIPT as SCRIPT, commandSimRobot } from './agreement-script.js';
+import type { Command } from './agreement-script.js';
 
 /** The same command on the simulated robot; a refusal is returned as its code and message. */
 function onSimulation(
   robot: SimRobot,
   command: Command,
 ): { code: string; message: string } | undefined {
-  const n = (key: string) => Number(command[key]);
-  const speed = command['speed'] === undefined ? undefined : n('speed');
   try {
-    switch (command['cmd']) {
-      case 'move_cm':
-        robot.moveCm(n('left_cm'), n('right_cm'), speed);
-        break;
-      case 'rotate_deg':
-        robot.rotateDeg(n('degrees'), speed);
-        break;
-      case 'move_steps':
-        robot.moveSteps(n('left'), n('right'), speed);
-        break;
-      case 'drive':
-        robot.drive(n('left_sps'), n('right_sps'), n('duration_ms'));
-        break;
-      case 'reset_estop':
-        robot.resetEmergencyStop();
-        break;
-      default:
-        throw new Error(`no such command in the script: ${String(command['cmd'])}`);
-    }
+    commandSimRobot(robot, command);
   } catch (error) {
     if (!isHalError(error)) throw error;
     return { code: error.code, message: error.message };
