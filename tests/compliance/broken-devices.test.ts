@@ -1,9 +1,9 @@
 // The compliance runner fails a device that breaks the spec, naming the check: one fault per
 // device (a fake spec device written with plain nats.js), so every check group is shown able to
 // fail, beside the same fake device without faults passing every check.
-import { runCompliance } from '@hal/compliance';
+import { CHECK_GROUPS, runCompliance } from '@hal/compliance';
 import { announceTafyNode } from '@hal/discovery';
-import type { ComplianceReport, SpecCapability } from '@hal/compliance';
+import type { CheckGroup, ComplianceReport, SpecCapability } from '@hal/compliance';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -24,11 +24,19 @@ afterAll(async () => {
   await stopAllNatsServers();
 });
 
-/** Runs the checks of `capabilities` against a fake device with `faults`. */
+/**
+ * Every group but timing. A latency or rate measured here is this machine's as much as the fake
+ * device's (they share a process, and other test files share the cores), so only the tests of a
+ * timing fault run the timing group, and they hold a device to a limit it misses by far.
+ */
+const NOT_TIMING: CheckGroup[] = CHECK_GROUPS.filter((g) => g !== 'timing');
+
+/** Runs the checks of `capabilities` and `groups` against a fake device with `faults`. */
 async function check(
   faults: Faults,
   capabilities?: SpecCapability[],
   features: Features = {},
+  groups: readonly CheckGroup[] = NOT_TIMING,
 ): Promise<{ report: ComplianceReport; device: FakeSpecDevice }> {
   const deviceId = `fake-${(next += 1)}`;
   const device = startFakeSpecDevice(nc, deviceId, faults, features);
@@ -38,6 +46,7 @@ async function check(
       connection: nc,
       device: deviceId,
       capabilities,
+      groups,
       samples: 5,
       streamWindowMs: 1000,
       announceTimeoutMs: 3000,
@@ -100,6 +109,63 @@ describe('runCompliance against a fake device written from the spec', () => {
   );
 
   it(
+    'measures every timing check of a device with all capabilities, on `samples` requests each',
+    { timeout: 90_000 },
+    async () => {
+      const capabilities: SpecCapability[] = ['system', 'motor.differential', 'safety', 'camera'];
+      const { report } = await check({}, capabilities, ALL_FEATURES, ['timing']);
+      expect(report.groups).toEqual(['timing']);
+      expect(new Set(report.checks.map((c) => c.group))).toEqual(new Set(['timing']));
+      expect(report.checks.map((c) => c.id)).toEqual(
+        expect.arrayContaining([
+          'system/timing/health',
+          'motor.differential/timing/stop-command',
+          'motor.differential/timing/state-rate',
+          'camera/timing/frame',
+        ]),
+      );
+      for (const c of report.checks) {
+        // pass or fail is this machine's to say: what must hold is that each was measured
+        expect(c.status, c.id).not.toBe('skip');
+        if (c.rateHz !== undefined) expect(c.rateHz, c.id).toBeGreaterThan(0);
+        else {
+          expect(c.measured?.samples, c.id).toBe(5);
+          expect(c.latencyClass, c.id).toBeDefined();
+        }
+      }
+    },
+  );
+
+  it(
+    'runs only the check groups asked for, and refuses an unknown group before sending anything',
+    { timeout: 60_000 },
+    async () => {
+      const { report } = await check({}, ['motor.differential'], {}, ['errors', 'format']);
+      expect(report.groups).toEqual(['format', 'errors']);
+      expect(report.checks.length).toBeGreaterThan(3);
+      expect(new Set(report.checks.map((c) => c.group))).toEqual(new Set(['format', 'errors']));
+      const device = startFakeSpecDevice(nc, 'fake-groups');
+      try {
+        const run = runCompliance({
+          connection: nc,
+          device: 'fake-groups',
+          groups: ['timing', 'speed' as CheckGroup],
+        });
+        await expect(run).rejects.toMatchObject({
+          code: 'INVALID_PARAMETER',
+          message: '"groups" must be among format, timing, errors, capability, state, got "speed"',
+        });
+        await expect(
+          runCompliance({ connection: nc, device: 'fake-groups', groups: [] }),
+        ).rejects.toMatchObject({ code: 'INVALID_PARAMETER' });
+        expect(device.requests).toBe(0);
+      } finally {
+        device.close();
+      }
+    },
+  );
+
+  it(
     'fails message format when a reply carries the wrong hal_major',
     { timeout: 60_000 },
     async () => {
@@ -114,7 +180,7 @@ describe('runCompliance against a fake device written from the spec', () => {
     'fails the interactive timing class when health replies take 150 ms',
     { timeout: 60_000 },
     async () => {
-      const { report } = await check({ slowHealthMs: 150 }, ['system']);
+      const { report } = await check({ slowHealthMs: 150 }, ['system'], {}, CHECK_GROUPS);
       expect(failed(report)).toContain('system/timing/health');
       const health = report.checks.find((c) => c.id === 'system/timing/health');
       expect(health?.measured?.p50Ms).toBeGreaterThanOrEqual(150);
@@ -125,7 +191,7 @@ describe('runCompliance against a fake device written from the spec', () => {
     'fails the stream rate (and the state checks) when the device never streams state',
     { timeout: 60_000 },
     async () => {
-      const { report } = await check({ noState: true }, ['motor.differential']);
+      const { report } = await check({ noState: true }, ['motor.differential'], {}, CHECK_GROUPS);
       expect(failed(report)).toEqual(
         expect.arrayContaining([
           'motor.differential/timing/state-rate',
@@ -146,6 +212,20 @@ describe('runCompliance against a fake device written from the spec', () => {
         report.checks.find((c) => c.id === 'motor.differential/errors/out-of-range')?.reason,
       ).toContain('expected error RANGE_EXCEEDED, got a success reply');
       expect(device.moving).toBe(false); // stopped on the way out
+    },
+  );
+
+  it(
+    'stops a robot a failed check left moving, so that the next checks do not fail for it',
+    { timeout: 60_000 },
+    async () => {
+      // the accepted out-of-range drive goes on for 4 s: without a stop, every later check
+      // that requires nothing to change would see it
+      const { report, device } = await check({ acceptsOutOfRange: true, outOfRangeLastsMs: 4000 }, [
+        'motor.differential',
+      ]);
+      expect(failed(report)).toEqual(['motor.differential/errors/out-of-range']);
+      expect(device.moving).toBe(false);
     },
   );
 

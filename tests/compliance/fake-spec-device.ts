@@ -21,6 +21,8 @@ export interface Faults {
   noState?: boolean;
   /** Drives at any speed instead of RANGE_EXCEEDED (error handling). */
   acceptsOutOfRange?: boolean;
+  /** With acceptsOutOfRange: such a drive goes on this long, ms, whatever its duration_ms. */
+  outOfRangeLastsMs?: number;
   /** Announces 50 Hz while streaming at 20 Hz (capability accuracy). */
   announcesWrongRate?: boolean;
   /** Streams IMU data it does not announce (capability accuracy). */
@@ -60,6 +62,8 @@ export interface FakeSpecDevice {
   readonly caps: readonly string[];
   readonly estopped: boolean;
   readonly moving: boolean;
+  /** Requests received on any of its subjects. */
+  readonly requests: number;
   close(): void;
 }
 
@@ -116,8 +120,16 @@ export function startFakeSpecDevice(
       return undefined;
     }
   };
+  let requests = 0;
   const serve = (subject: string, handler: (msg: Msg) => void) =>
-    subs.push(nc.subscribe(subject, { callback: (_e, msg) => handler(msg) }));
+    subs.push(
+      nc.subscribe(subject, {
+        callback: (_e, msg) => {
+          requests += 1;
+          handler(msg);
+        },
+      }),
+    );
   const announcement = () => ({
     device_type: 'fake-spec-robot',
     mode: 'simulation',
@@ -145,7 +157,13 @@ export function startFakeSpecDevice(
       if (!faults.estopNotLatched) return error(msg, 'EMERGENCY_STOPPED', 'e-stop latched');
       robot.estopped = false;
     }
-    const duration = typeof cmd['duration_ms'] === 'number' ? cmd['duration_ms'] : 3000;
+    const outOfRange = Math.abs(v) > TOP_SPEED || Math.abs(w) > TOP_TURN;
+    const duration =
+      outOfRange && faults.outOfRangeLastsMs !== undefined
+        ? faults.outOfRangeLastsMs
+        : typeof cmd['duration_ms'] === 'number'
+          ? cmd['duration_ms']
+          : 3000;
     Object.assign(robot, { v, w, until: Date.now() + duration });
     reply(msg, 'tafylabs/hal/ack/1.0', { ok: true });
   });
@@ -273,6 +291,9 @@ export function startFakeSpecDevice(
     },
     get moving() {
       return robot.v !== 0 || robot.w !== 0;
+    },
+    get requests() {
+      return requests;
     },
     close: () => {
       for (const timer of timers) clearInterval(timer);

@@ -18,6 +18,8 @@ import type { z } from 'zod';
 import { inspect } from './inspect.js';
 import type { Inspected } from './inspect.js';
 import type { ResolvedOptions } from './options.js';
+import { CHECK_GROUPS } from './report.js';
+import type { CheckGroup } from './report.js';
 import { StreamCollector } from './streams.js';
 import type { DeviceWire, Outcome } from './wire.js';
 
@@ -46,6 +48,9 @@ export interface Answer<T> {
   inspected: Inspected<T> | undefined;
 }
 
+/** Below this (m/s, rad/s) a state shows the robot at rest. */
+const REST_EPS = 1e-3;
+
 /** Everything a check needs: the wire, the device, its streams, and what has been seen. */
 export class RunContext {
   readonly replies: SeenReply[] = [];
@@ -61,6 +66,8 @@ export class RunContext {
     readonly deviceId: string,
     readonly announcement: CapabilityAnnouncement,
     readonly options: ResolvedOptions,
+    /** The check groups this run runs. */
+    readonly groups: readonly CheckGroup[] = CHECK_GROUPS,
   ) {
     this.state = new StreamCollector(
       wire,
@@ -122,6 +129,21 @@ export class RunContext {
       'ack',
       { priority: 'high' },
     );
+  }
+
+  /**
+   * Stops the robot and waits (up to `timeoutMs`) for the state stream to show it at rest, so
+   * that what one check set moving cannot be taken for a change made by the next. False when no
+   * state at rest arrived in time.
+   */
+  async bringToRest(timeoutMs = 1000): Promise<boolean> {
+    const atRest = this.state.next(
+      timeoutMs,
+      (s) =>
+        Math.abs(s.linear_vel_m_per_s) <= REST_EPS && Math.abs(s.angular_vel_rad_per_s) <= REST_EPS,
+    );
+    await this.stop();
+    return (await atRest) !== undefined;
   }
 
   /** A state read fresh from the stream (arriving from now on), or undefined. */

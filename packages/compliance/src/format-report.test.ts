@@ -11,6 +11,7 @@ const report: ComplianceReport = {
   mode: 'physical',
   caps: ['locomotion.differential:v1.0'],
   capabilities: ['motor.differential', 'camera'],
+  groups: ['format', 'timing', 'errors', 'capability', 'state'],
   judge: 'p50',
   checks: [
     {
@@ -66,5 +67,18 @@ describe('formatReport', () => {
     );
     expect(lines).toContainEqual('        the device does not announce camera');
     expect(lines.at(-2)).toBe('1 passed, 1 failed, 1 skipped in 2.3 s: NOT COMPLIANT');
+  });
+
+  it('says which check groups were left out, beside its verdict', () => {
+    const some: ComplianceReport = {
+      ...report,
+      groups: ['format', 'errors', 'capability', 'state'],
+      checks: [],
+      summary: { passed: 0, failed: 0, skipped: 0 },
+      ok: true,
+    };
+    expect(formatReport(some).split('\n').at(-2)).toBe(
+      '0 passed, 0 failed, 0 skipped in 2.3 s: COMPLIANT (timing not checked)',
+    );
   });
 });

@@ -1,3 +1,4 @@
+import { CHECK_GROUPS } from './report.js';
 import type { CheckResult, ComplianceReport } from './report.js';
 
 const ms = (value: number) => (value < 10 ? value.toFixed(2) : value.toFixed(0));
@@ -52,9 +53,12 @@ export function formatReport(report: ComplianceReport): string {
     if (check.status !== 'pass') lines.push(`        ${check.reason}`);
   });
   const { passed, failed, skipped } = report.summary;
+  // A run of some groups says which were left out: it is not a verdict on those.
+  const left = CHECK_GROUPS.filter((g) => !report.groups.includes(g));
+  const scope = left.length === 0 ? '' : ` (${left.join(', ')} not checked)`;
   lines.push(
     '',
-    `${passed} passed, ${failed} failed, ${skipped} skipped in ${(report.durationMs / 1000).toFixed(1)} s: ${report.ok ? 'COMPLIANT' : 'NOT COMPLIANT'}`,
+    `${passed} passed, ${failed} failed, ${skipped} skipped in ${(report.durationMs / 1000).toFixed(1)} s: ${report.ok ? 'COMPLIANT' : 'NOT COMPLIANT'}${scope}`,
   );
   return `${lines.join('\n')}\n`;
 }

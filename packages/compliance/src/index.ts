@@ -11,5 +11,6 @@ export {
 } from './spec.js';
 export type { LatencyClass, SpecCapability } from './spec.js';
 export type { ComplianceOptions, ProgressEvent } from './options.js';
+export { CHECK_GROUPS } from './report.js';
 export type { CheckGroup, CheckResult, CheckStatus, ComplianceReport, Measured } from './report.js';
 export type { Check, Verdict } from './checks/check.js';

@@ -1,6 +1,6 @@
 import { HalError } from '@hal/types';
 import type { NatsConnection } from '@nats-io/transport-node';
-import type { CheckResult } from './report.js';
+import type { CheckGroup, CheckResult } from './report.js';
 import type { SpecCapability } from './spec.js';
 
 /** What runCompliance checks, against which device, and how hard. */
@@ -14,6 +14,12 @@ export interface ComplianceOptions {
    * the others only for answering NOT_IMPLEMENTED (their remaining checks are skipped).
    */
   capabilities?: readonly SpecCapability[] | undefined;
+  /**
+   * The check groups to run: `format`, `timing`, `errors`, `capability`, `state`. Default all.
+   * Leaving out `timing` checks what a device does, not how fast it does it on this network
+   * (a runner on a loaded machine or over a slow link measures its own delays too).
+   */
+  groups?: readonly CheckGroup[] | undefined;
   /** Requests per latency measurement. Default 20. */
   samples?: number;
   /** Which percentile is held to the latency class limits. Default 'p50'. */
@@ -52,7 +58,10 @@ export type ProgressEvent =
   | { type: 'result'; result: CheckResult };
 
 export type ResolvedOptions = Required<
-  Omit<ComplianceOptions, 'device' | 'capabilities' | 'onProgress' | 'connection' | 'signal'>
+  Omit<
+    ComplianceOptions,
+    'device' | 'capabilities' | 'groups' | 'onProgress' | 'connection' | 'signal'
+  >
 >;
 
 export function resolveOptions(options: ComplianceOptions): ResolvedOptions {

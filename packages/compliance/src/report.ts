@@ -1,7 +1,8 @@
 import type { LatencyClass, SpecCapability } from './spec.js';
 
-/** The spec's check groups ("Tests verify: ..."). */
-export type CheckGroup = 'format' | 'timing' | 'errors' | 'capability' | 'state';
+/** The spec's check groups ("Tests verify: ..."), in the order the spec lists them. */
+export const CHECK_GROUPS = ['format', 'timing', 'errors', 'capability', 'state'] as const;
+export type CheckGroup = (typeof CHECK_GROUPS)[number];
 
 export type CheckStatus = 'pass' | 'fail' | 'skip';
 
@@ -44,6 +45,8 @@ export interface ComplianceReport {
   caps: string[];
   /** The spec capabilities checked. */
   capabilities: SpecCapability[];
+  /** The check groups run (all five unless `groups` chose fewer). */
+  groups: CheckGroup[];
   /** Which latency percentile was held to the class limits. */
   judge: 'p50' | 'p99';
   checks: CheckResult[];

@@ -10,7 +10,8 @@ import { RunContext } from './context.js';
 import { inspect } from './inspect.js';
 import { resolveOptions } from './options.js';
 import type { ComplianceOptions } from './options.js';
-import type { CheckResult, ComplianceReport } from './report.js';
+import { CHECK_GROUPS } from './report.js';
+import type { CheckGroup, CheckResult, ComplianceReport } from './report.js';
 import { SPEC_CAPABILITIES, announces, specCapability } from './spec.js';
 import type { SpecCapability } from './spec.js';
 import { DeviceWire } from './wire.js';
@@ -39,6 +40,26 @@ function selected(capabilities: readonly string[] | undefined): SpecCapability[]
   });
 }
 
+function selectedGroups(groups: readonly string[] | undefined): CheckGroup[] {
+  if (groups === undefined) return [...CHECK_GROUPS];
+  if (groups.length === 0) {
+    throw new HalError('INVALID_PARAMETER', '"groups" must name at least one check group', {
+      details: { parameter: 'groups' },
+    });
+  }
+  for (const name of groups) {
+    if (!(CHECK_GROUPS as readonly string[]).includes(name)) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `"groups" must be among ${CHECK_GROUPS.join(', ')}, got "${name}"`,
+        { details: { parameter: 'groups', value: name } },
+      );
+    }
+  }
+  // in the spec's order, each once
+  return CHECK_GROUPS.filter((group) => groups.includes(group));
+}
+
 /**
  * Checks a device on NATS against the Tafy HAL spec from the outside, as a client that knows
  * only the spec would: its raw subjects and envelopes. Message format, timing classes, error
@@ -51,6 +72,7 @@ function selected(capabilities: readonly string[] | undefined): SpecCapability[]
 export async function runCompliance(options: ComplianceOptions): Promise<ComplianceReport> {
   const resolved = resolveOptions(options);
   const capabilities = selected(options.capabilities);
+  const groups = selectedGroups(options.groups);
   const startedAt = new Date();
   const t0 = performance.now();
   const wire = new DeviceWire(options.connection, options.device, resolved.clientId);
@@ -83,7 +105,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
     );
   }
   const deviceId = options.device ?? first.envelope.device_id;
-  const ctx = new RunContext(wire, deviceId, first.payload, resolved);
+  const ctx = new RunContext(wire, deviceId, first.payload, resolved, groups);
   ctx.replies.push({ kind: 'capabilities', subject, inspected: first });
   await wire.flush(); // the stream subscriptions are in place before the first check
   options.onProgress?.({ type: 'device', deviceId, caps: ctx.caps });
@@ -93,6 +115,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
     for (const check of CHECKS) {
       if (options.signal?.aborted === true) break;
       if (!capabilities.includes(check.capability)) continue;
+      if (!groups.includes(check.group)) continue;
       // a check of honest absence does not apply to a capability the device has
       if (check.when === 'unannounced' && announces(ctx.caps, check.capability)) continue;
       if (check.onlyWith === 'mdns' && !resolved.mdns) continue;
@@ -114,6 +137,7 @@ export async function runCompliance(options: ComplianceOptions): Promise<Complia
     mode: ctx.announcement.mode,
     caps: ctx.caps,
     capabilities,
+    groups,
     judge: resolved.judge,
     checks,
     summary,
@@ -145,7 +169,17 @@ async function runOne(
       reason: `the check failed: ${error instanceof Error ? error.message : String(error)}`,
     };
   }
-  return { ...base, ...verdict, durationMs: Math.round(performance.now() - started) };
+  const durationMs = Math.round(performance.now() - started);
+  // A failed check may have left the robot moving (a drive it should have refused, say): stop it
+  // before the next check, so one fault fails one check and not the ones after it.
+  if (verdict.status === 'fail' && announces(ctx.caps, 'motor.differential')) {
+    try {
+      await ctx.bringToRest();
+    } catch {
+      // the device is gone: the next check will say so
+    }
+  }
+  return { ...base, ...verdict, durationMs };
 }
 
 /** Whatever happened: the robot is told to stop, and an e-stop the runner took is reset. */

@@ -1,9 +1,9 @@
 // `hal test hal --device X --capability motor.differential`: the spec's compliance command.
 import { Option } from 'commander';
-import { SPEC_CAPABILITIES } from '@hal/compliance';
+import { CHECK_GROUPS, SPEC_CAPABILITIES } from '@hal/compliance';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import { runTestHal } from '../test-hal/run-test-hal.js';
-import { capabilityArg, judgeArg, samplesArg } from '../test-hal/args.js';
+import { capabilityArg, groupArg, judgeArg, samplesArg } from '../test-hal/args.js';
 import type { RegisterCommand } from './context.js';
 
 export const registerTest: RegisterCommand = (program, ctx) => {
@@ -27,6 +27,12 @@ export const registerTest: RegisterCommand = (program, ctx) => {
         '--capability <name>',
         `check only this capability (repeatable): ${SPEC_CAPABILITIES.join(', ')}; default all`,
       ).argParser(capabilityArg),
+    )
+    .addOption(
+      new Option(
+        '--group <name>',
+        `run only this check group (repeatable): ${CHECK_GROUPS.join(', ')}; default all`,
+      ).argParser(groupArg),
     )
     .option(
       '--mdns',

@@ -1,7 +1,7 @@
 // Parsers for `hal test hal`'s options: bad values are usage errors before anything is sent.
 import { InvalidArgumentError } from 'commander';
-import { SPEC_CAPABILITIES, specCapability } from '@hal/compliance';
-import type { SpecCapability } from '@hal/compliance';
+import { CHECK_GROUPS, SPEC_CAPABILITIES, specCapability } from '@hal/compliance';
+import type { CheckGroup, SpecCapability } from '@hal/compliance';
 
 /** Collects repeated `--capability` values, each one the runner knows. */
 export function capabilityArg(
@@ -15,6 +15,17 @@ export function capabilityArg(
     );
   }
   return [...(previous ?? []), capability];
+}
+
+/** Collects repeated `--group` values, each one of the spec's check groups. */
+export function groupArg(value: string, previous: CheckGroup[] | undefined): CheckGroup[] {
+  const group = CHECK_GROUPS.find((g) => g === value);
+  if (group === undefined) {
+    throw new InvalidArgumentError(
+      `a check group is one of ${CHECK_GROUPS.join(', ')}, got "${value}"`,
+    );
+  }
+  return [...(previous ?? []), group];
 }
 
 export function samplesArg(value: string): number {

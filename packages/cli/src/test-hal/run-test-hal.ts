@@ -6,7 +6,7 @@ import {
   formatReport,
   runCompliance,
 } from '@hal/compliance';
-import type { ComplianceReport, ProgressEvent, SpecCapability } from '@hal/compliance';
+import type { CheckGroup, ComplianceReport, ProgressEvent, SpecCapability } from '@hal/compliance';
 import { openConnection } from '@hal/nats';
 import { HalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
@@ -22,6 +22,7 @@ export interface TestHalOptions extends NatsCliOptions {
   /** Also check the device's mDNS announcement. */
   mdns?: boolean;
   capability?: SpecCapability[];
+  group?: CheckGroup[];
   samples?: number;
   judge?: 'p50' | 'p99';
 }
@@ -52,6 +53,7 @@ async function checkOne(
     connection: nc,
     device,
     capabilities: options.capability,
+    groups: options.group,
     ...(options.samples === undefined ? {} : { samples: options.samples }),
     ...(options.judge === undefined ? {} : { judge: options.judge }),
     ...(options.mdns === true ? { mdns: true } : {}),

@@ -4,7 +4,8 @@ import type { LatencyClass, SpecCapability } from '../spec.js';
 
 /** What a check found. */
 export interface Verdict {
-  status: 'pass' | 'fail';
+  /** 'skip': there was nothing to judge, because the checks that bring it were not run. */
+  status: 'pass' | 'fail' | 'skip';
   reason: string;
   measured?: Measured;
   latencyClass?: LatencyClass;
@@ -39,6 +40,8 @@ export const fail = (reason: string, extra: Omit<Verdict, 'status' | 'reason'> =
   reason,
   ...extra,
 });
+
+export const skip = (reason: string): Verdict => ({ status: 'skip', reason });
 
 export const sleep = (ms: number): Promise<void> =>
   new Promise((resolve) => setTimeout(resolve, ms));

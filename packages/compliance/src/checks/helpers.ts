@@ -3,10 +3,11 @@ import type { Answer, RunContext } from '../context.js';
 import { describeAnswer } from '../context.js';
 import type { Inspected } from '../inspect.js';
 import { summarize } from '../stats.js';
+import { CHECK_GROUPS } from '../report.js';
 import { STREAM_RATE_HZ } from '../spec.js';
 import type { LatencyClass } from '../spec.js';
 import type { Received, StreamView } from '../streams.js';
-import { fail, pass, sleep } from './check.js';
+import { fail, pass, skip, sleep } from './check.js';
 import type { Verdict } from './check.js';
 
 /** The format verdict over messages of one kind: every one a valid envelope and payload. */
@@ -16,6 +17,27 @@ export function formatVerdict(messages: readonly Inspected<unknown>[], what: str
   if (bad.length === 0) return pass(`${messages.length} ${what} valid`);
   const issues = [...new Set(bad.flatMap((m) => m.issues))].slice(0, 3);
   return fail(`${bad.length} of ${messages.length} ${what} invalid: ${issues.join('; ')}`);
+}
+
+/**
+ * The format verdict over replies that other checks' requests brought. None at all, in a run that
+ * left out some groups, is a skip (those checks sent nothing), not a failure of the device.
+ */
+export function repliesVerdict(
+  ctx: RunContext,
+  replies: readonly Inspected<unknown>[],
+  what: string,
+): Verdict {
+  if (replies.length === 0 && ctx.groups.length < CHECK_GROUPS.length) {
+    return skip(`no ${what} to check: the checks that send them are in groups not run`);
+  }
+  return formatVerdict(replies, what);
+}
+
+/** Waits until `stream` has been watched for the run's stream window (from its first subscription). */
+export async function watched(ctx: RunContext, stream: StreamView): Promise<void> {
+  const waitMs = ctx.options.streamWindowMs - (performance.now() - stream.startedAtMs);
+  if (waitMs > 0) await sleep(waitMs);
 }
 
 /**

@@ -9,7 +9,9 @@ import {
   latencyVerdict,
   rateVerdict,
   refusesVerdict,
+  repliesVerdict,
   validReply,
+  watched,
 } from './helpers.js';
 import { judgeForward, judgeTurnLeft, motionVerdict } from './motion.js';
 
@@ -116,6 +118,7 @@ export const MOTOR_CHECKS: readonly Check[] = [
     name: 'announced-rate',
     title: "the announced state_rate_hz is the stream's rate (within 25 %)",
     run: async (ctx) => {
+      await watched(ctx, ctx.state);
       const messages = ctx.state.messages;
       const first = messages[0];
       const last = messages.at(-1);
@@ -170,11 +173,13 @@ export const MOTOR_CHECKS: readonly Check[] = [
     group: 'format',
     name: 'state-stream',
     title: 'state messages are valid envelopes from the device with the spec payload',
-    run: async (ctx) =>
-      formatVerdict(
+    run: async (ctx) => {
+      await watched(ctx, ctx.state);
+      return formatVerdict(
         ctx.state.messages.map((m) => m.inspected),
         'state messages',
-      ),
+      );
+    },
   },
   {
     capability: 'motor.differential',
@@ -182,7 +187,8 @@ export const MOTOR_CHECKS: readonly Check[] = [
     name: 'command-replies',
     title: 'replies to drive commands are valid envelopes (acks and errors)',
     run: async (ctx) =>
-      formatVerdict(
+      repliesVerdict(
+        ctx,
         ctx.replies.filter((r) => r.subject === cmd(ctx)).map((r) => r.inspected),
         'drive replies',
       ),

@@ -4,7 +4,7 @@ import { describeAnswer } from '../context.js';
 import { LATENCY_CLASSES, announces } from '../spec.js';
 import type { Check, Verdict } from './check.js';
 import { fail, pass, sleep } from './check.js';
-import { changedBy, expectError, formatVerdict, latencyVerdict, validReply } from './helpers.js';
+import { changedBy, expectError, latencyVerdict, repliesVerdict, validReply } from './helpers.js';
 
 const estop = (ctx: RunContext) =>
   ctx.ask(
@@ -117,7 +117,8 @@ export const SAFETY_CHECKS: readonly Check[] = [
     name: 'estop-replies',
     title: 'replies to e-stop and reset are valid envelopes',
     run: async (ctx) =>
-      formatVerdict(
+      repliesVerdict(
+        ctx,
         ctx.replies
           .filter(
             (r) =>

@@ -6,8 +6,8 @@ import type { RunContext } from '../context.js';
 import type { SpecCapability } from '../spec.js';
 import type { Received, StreamView } from '../streams.js';
 import type { Check } from './check.js';
-import { fail, pass, sleep } from './check.js';
-import { formatVerdict, rateVerdict } from './helpers.js';
+import { fail, pass } from './check.js';
+import { formatVerdict, rateVerdict, watched } from './helpers.js';
 
 function sensorChecks(
   capability: SpecCapability,
@@ -28,11 +28,13 @@ function sensorChecks(
       group: 'format',
       name: 'stream',
       title: `${subject} messages are valid envelopes from the device with the spec payload`,
-      run: async (ctx) =>
-        formatVerdict(
+      run: async (ctx) => {
+        await watched(ctx, stream(ctx));
+        return formatVerdict(
           stream(ctx).messages.map((m) => m.inspected),
           `${subject} messages`,
-        ),
+        );
+      },
     },
     {
       capability,
@@ -42,8 +44,7 @@ function sensorChecks(
       when: 'unannounced',
       run: async (ctx) => {
         const collector = stream(ctx);
-        const waitMs = ctx.options.streamWindowMs - (performance.now() - collector.startedAtMs);
-        if (waitMs > 0) await sleep(waitMs);
+        await watched(ctx, collector);
         const count = collector.messages.length;
         return count === 0
           ? pass(`nothing in ${ctx.options.streamWindowMs} ms or more`)
@@ -75,6 +76,7 @@ const imuOrientation: Check = {
   title:
     'orientation_quaternion is a unit quaternion {w,x,y,z}, and agrees with heading_rad when sent',
   run: async (ctx) => {
+    await watched(ctx, ctx.imu);
     const payloads = ctx.imu.messages.flatMap((m) =>
       m.inspected.payload ? [m.inspected.payload] : [],
     );
@@ -100,6 +102,7 @@ const rangePerSensor: Check = {
   title:
     "sensor.range.data is the spec's one-sensor message, each naming its sensor, within its range",
   run: async (ctx) => {
+    await watched(ctx, ctx.range);
     const payloads = ctx.range.messages.flatMap((m) =>
       m.inspected.payload ? [m.inspected.payload] : [],
     );
