@@ -33,6 +33,22 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
   }, 30_000);
 
   const remoteState = () => page.evaluate(() => (window as unknown as Hooked).simDemo?.remote());
+  /** Waits for the card's connection to be `wanted`; a timeout says what the card and log showed. */
+  const connection = async (wanted: RemoteState['connection']) => {
+    try {
+      await page.waitForFunction(
+        (w) => (window as unknown as Hooked).simDemo?.remote().connection === w,
+        wanted,
+        { timeout: 15_000 },
+      );
+    } catch (error) {
+      const log = await page.locator('#log').innerText();
+      throw new Error(
+        `the card never showed "${wanted}": ${JSON.stringify(await remoteState())}; log:\n${log}`,
+        { cause: error },
+      );
+    }
+  };
 
   it('connects with URL and token, moves the emulated robot and its twin, and shows the divergence', async () => {
     const token = 'browser-demo-token-123';
@@ -56,19 +72,11 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     await page.locator('#remote-url').fill(wsUrl);
     await page.locator('#remote-token').fill('not-the-right-token');
     await page.locator('#remote-connect').click();
-    await page.waitForFunction(
-      () => (window as unknown as Hooked).simDemo?.remote().connection === 'failed',
-      undefined,
-      { timeout: 15_000 },
-    );
+    await connection('failed');
 
     await page.locator('#remote-token').fill(token);
     await page.locator('#remote-connect').click();
-    await page.waitForFunction(
-      () => (window as unknown as Hooked).simDemo?.remote().connection === 'connected',
-      undefined,
-      { timeout: 15_000 },
-    );
+    await connection('connected');
     expect((await remoteState())?.role).toBe('controller');
     await expect(page.locator('#remote-badge').textContent()).resolves.toBe('CONNECTED');
 
