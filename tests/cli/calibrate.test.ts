@@ -15,6 +15,7 @@ import {
   halOn,
   movesSince,
   stepsFor,
+  HOST_TIMEOUT_MS,
   TIME_SCALE,
   udpOf,
 } from './calibration-rig.js';
@@ -147,6 +148,7 @@ describe('hal calibrate on the emulated robot', () => {
   it('refuses, before any motion, to calibrate a robot whose id cannot name a file', async () => {
     const emulator = await startEmulator({
       timeScale: TIME_SCALE,
+      hostTimeoutMs: HOST_TIMEOUT_MS,
       deviceId: 'cube one',
       pty: false,
     });

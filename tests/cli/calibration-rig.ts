@@ -30,9 +30,14 @@ export function calibrationDirPerTest(): { dir: () => string; env: () => Record<
   return { dir: () => dir, env: () => ({ HAL_CALIBRATION_DIR: dir }) };
 }
 
+// The longest host timeout: scaled by TIME_SCALE it is 1 s of real time, which a heartbeat held
+// back on a loaded machine does not outlast (the default's 200 ms did, stopping a calibration run).
+export const HOST_TIMEOUT_MS = 10_000;
+
 export const emulated = (udpPort?: number) =>
   startEmulator({
     timeScale: TIME_SCALE,
+    hostTimeoutMs: HOST_TIMEOUT_MS,
     deviceId: DEVICE,
     pty: false,
     ...(udpPort === undefined ? {} : { udpPort }),

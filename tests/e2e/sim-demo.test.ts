@@ -17,6 +17,7 @@ interface DemoHooks {
   robotId: string;
   goalState(): string;
   pose(): { x: number; y: number; yaw: number };
+  framesDrawn(): number;
   worldToClient(x: number, y: number): { x: number; y: number };
 }
 
@@ -59,6 +60,14 @@ describe('apps/sim-demo in Chromium', () => {
     // The obstacles map: the robot starts at (-1.8, 0) facing +x, a box spans x -1.1..-0.7.
     await page.goto(`${url}?map=obstacles&speed=20`, { waitUntil: 'load', timeout: 20_000 });
     await page.waitForFunction(() => window.simDemo !== undefined, undefined, { timeout: 15_000 });
+
+    // Nothing moves: the view is drawn on demand, about once a second. (A page drawing every
+    // frame would have drawn ~120 in these 2 s.)
+    const framesDrawn = () => page.evaluate(() => window.simDemo?.framesDrawn() ?? 0);
+    await page.waitForTimeout(500); // the first frames and the map's first draw
+    const idleFrom = await framesDrawn();
+    await page.waitForTimeout(2000);
+    expect((await framesDrawn()) - idleFrom).toBeLessThanOrEqual(4);
 
     // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
     const start = await page.evaluate(() => window.simDemo?.pose());

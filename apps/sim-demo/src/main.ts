@@ -166,17 +166,36 @@ for (let i = 1; i < robotCount; i += 1) await roster.add();
 
 // ---- the frame loop ------------------------------------------------------------------------------
 
+// Frames are drawn on demand: when the scene changed (a robot moved, a path, goal or map was set,
+// a recording is playing back), when the view moved, and once a second whatever happens. A page
+// left open with nothing moving then costs next to nothing (WebGL in software is a core's work
+// at 60 Hz), and a moving robot is still drawn every frame.
+const IDLE_REDRAW_MS = 1000;
 let lastTelemetry = 0;
+let drawnAt = -Infinity;
+let drawnScene = '';
+let framesDrawn = 0;
 function frame(now: number): void {
   scene.update();
-  viewport.render(scene.scene);
-  labels.update();
-  const robot = hal.robot;
-  robotCamera.render(robot.id);
-  plot.record(robot.x, robot.y);
-  plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
   goals.refreshGrid();
   recording.frame(now);
+  const robot = hal.robot;
+  const viewMoved = viewport.update();
+  const sceneState = `${scene.revision} ${recording.revision} ${robot.id}`;
+  const idle = now - drawnAt >= IDLE_REDRAW_MS;
+  const sceneChanged = sceneState !== drawnScene || idle;
+  if (viewMoved || sceneChanged) {
+    framesDrawn += 1;
+    viewport.render(scene.scene);
+    labels.update();
+  }
+  if (sceneChanged) {
+    drawnScene = sceneState;
+    drawnAt = now;
+    robotCamera.render(robot.id);
+    plot.record(robot.x, robot.y);
+    plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
+  }
   if (now - lastTelemetry > 100) {
     lastTelemetry = now;
     telemetry.show(world, hal.robot);
@@ -202,6 +221,8 @@ const hooks = {
   /** The Recording card: a recording running, a playback and where it draws the robot. */
   recording: () => recording.state,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
+  /** How many frames of the 3D view were drawn (on demand: see the frame loop). */
+  framesDrawn: () => framesDrawn,
   /** Every robot's id, label, pose and e-stop state, by number. */
   robots: () =>
     roster.robots.map(({ id, label, hal: { robot } }) => ({

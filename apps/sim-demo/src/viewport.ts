@@ -19,6 +19,8 @@ export class Viewport {
   readonly #robot: () => SimRobot;
   /** Where the followed robot was last frame (Three coordinates); undefined: not following. */
   #followed: THREE.Vector3 | undefined;
+  /** The camera or the canvas changed since the last frame drawn. */
+  #moved = true;
 
   constructor(container: HTMLElement, world: World, robot: () => SimRobot) {
     this.#container = container;
@@ -36,6 +38,7 @@ export class Viewport {
     controls.minDistance = 0.4;
     controls.maxDistance = 25;
     this.controls = controls;
+    controls.addEventListener('change', () => (this.#moved = true));
     this.frameArena();
     new ResizeObserver(() => this.#resize()).observe(container);
     this.#resize();
@@ -67,10 +70,19 @@ export class Viewport {
     this.controls.update();
   }
 
-  /** Draws a frame of `scene` (moving the camera along with a followed robot first). */
-  render(scene: THREE.Scene): void {
+  /**
+   * Moves the camera along with a followed robot and on with the orbit's damping. True when the
+   * view changed since the last frame drawn (the camera moved, or the canvas was resized).
+   */
+  update(): boolean {
     this.#keepFollowing();
-    this.controls.update();
+    this.controls.update(); // a change it makes is reported by its 'change' event
+    return this.#moved;
+  }
+
+  /** Draws a frame of `scene` from the camera. */
+  render(scene: THREE.Scene): void {
+    this.#moved = false;
     this.renderer.render(scene, this.camera);
   }
 
@@ -115,6 +127,8 @@ export class Viewport {
     const robot = this.#robot();
     const now = toThree(robot.x, robot.y);
     const delta = now.clone().sub(this.#followed);
+    if (delta.lengthSq() === 0) return;
+    this.#moved = true;
     this.camera.position.add(delta);
     this.controls.target.add(delta);
     this.#followed = now;
@@ -127,5 +141,6 @@ export class Viewport {
     this.renderer.domElement.style.height = `${h}px`;
     this.camera.aspect = w / Math.max(h, 1);
     this.camera.updateProjectionMatrix();
+    this.#moved = true;
   }
 }

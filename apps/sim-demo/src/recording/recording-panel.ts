@@ -81,6 +81,9 @@ export class RecordingPanel {
   readonly #frame = make('img', { id: 'playback-frame', alt: 'Recorded camera frame' });
   #playback: { player: Playback; robot: PlaybackRobot } | undefined;
   #frameSrc: string | null = null;
+  /** The playback time last shown, and a count of the changes it made to the scene. */
+  #shownT: number | undefined;
+  #revision = 0;
   #busy = false;
 
   constructor(card: HTMLElement, options: RecordingPanelOptions) {
@@ -138,6 +141,11 @@ export class RecordingPanel {
   }
 
   /** Once per animation frame: moves a playback on and draws it. */
+  /** Counts the moves of the played-back robot: the scene needs drawing when it changes. */
+  get revision(): number {
+    return this.#revision;
+  }
+
   frame(now: number): void {
     const playback = this.#playback;
     if (playback === undefined) return;
@@ -234,6 +242,7 @@ export class RecordingPanel {
     const playback = this.#playback;
     if (playback === undefined) return;
     this.#playback = undefined;
+    this.#shownT = undefined;
     this.#options.scene.scene.remove(playback.robot.group);
     playback.robot.dispose();
     this.#options.scene.robotsVisible = true;
@@ -250,6 +259,10 @@ export class RecordingPanel {
     const playback = this.#playback;
     if (playback === undefined) return;
     const view = playback.player.view();
+    if (view.t !== this.#shownT) {
+      this.#shownT = view.t;
+      this.#revision += 1;
+    }
     playback.robot.show(view.pose);
     const src = view.frame?.src ?? null;
     if (src !== this.#frameSrc) {

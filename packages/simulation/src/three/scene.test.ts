@@ -133,4 +133,40 @@ describe('WorldScene', () => {
     expect(visibleMeshes()).toBeGreaterThan(withOne);
     view.dispose();
   });
+
+  it('counts a revision for what changes the picture, and none for a frame where nothing did', () => {
+    const world = new World();
+    const robot = world.addRobot();
+    const view = new WorldScene(world, { shadows: false, showRangeRays: true });
+    view.update();
+    const idle = view.revision;
+    view.update();
+    view.overlaysVisible = false; // the robot camera's own render: not a change of the scene
+    view.overlaysVisible = true;
+    expect(view.revision).toBe(idle);
+    robot.moveCm(5, 5);
+    world.advanceUntil(() => !robot.running, 10_000_000);
+    view.update();
+    const moved = view.revision;
+    expect(moved).toBeGreaterThan(idle);
+    view.update();
+    expect(view.revision).toBe(moved);
+    robot.setLed({ r: 255, g: 0, b: 0, pattern: 'solid' });
+    view.update();
+    expect(view.revision).toBe(moved + 1);
+    view.update();
+    expect(view.revision).toBe(moved + 1);
+    view.setGoal({ x: 1, y: 0 });
+    view.setPlannedPath([
+      { x: 0, y: 0 },
+      { x: 1, y: 0 },
+    ]);
+    view.clearTrails();
+    view.robotsVisible = false;
+    view.robotsVisible = false; // no change
+    expect(view.revision).toBe(moved + 5);
+    world.setMap('obstacles');
+    expect(view.revision).toBeGreaterThan(moved + 5);
+    view.dispose();
+  });
 });

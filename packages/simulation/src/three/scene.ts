@@ -58,6 +58,9 @@ export class WorldScene {
   #goal: THREE.Group | undefined;
   #grid: THREE.Mesh | undefined;
   #robotsVisible = true;
+  /** Each robot's pose and LED as last drawn: an unchanged robot is not followed again. */
+  readonly #drawn = new Map<string, string>();
+  #revision = 0;
   readonly #unsubscribe: Array<() => void> = [];
 
   constructor(world: World, options: WorldSceneOptions = {}) {
@@ -85,23 +88,43 @@ export class WorldScene {
     this.#resetRobots();
   }
 
-  /** Moves every robot's model to its pose, extends trails, lights LEDs. */
+  /**
+   * Counts the changes to what the scene shows: a robot that moved or changed its LED, a path,
+   * goal, grid or map set, trails cleared, robots shown or hidden. A view that drew the scene at
+   * one revision need not draw it again until the revision changes (render on demand).
+   */
+  get revision(): number {
+    return this.#revision;
+  }
+
+  /** Moves every robot's model to its pose, extends trails, lights LEDs (only what changed). */
   update(): void {
+    let moved = false;
     for (const robot of this.world.robots) {
       let view = this.#robots.get(robot.id);
       if (view === undefined) {
         view = this.#addRobot(robot, this.#robots.size);
         this.#robots.set(robot.id, view);
       }
+      const led = robot.led;
+      const drawn = `${robot.x} ${robot.y} ${robot.yaw} ${led.pattern} ${led.r} ${led.g} ${led.b}`;
+      if (this.#drawn.get(robot.id) === drawn) continue;
+      this.#drawn.set(robot.id, drawn);
+      moved = true;
       view.model.follow(robot);
-      view.rays?.follow(this.world, robot);
       view.trail.follow(robot.x, robot.y);
     }
+    if (!moved) return;
+    this.#revision += 1;
+    // every robot's rays: they stop at the other robots too
+    for (const robot of this.world.robots)
+      this.#robots.get(robot.id)?.rays?.follow(this.world, robot);
   }
 
   /**
    * Whether the overlays (trails, planned path, goal, occupancy grid, sensor rays) are drawn.
    * The robot's camera view turns them off while it renders: they are not in the robot's world.
+   * (A toggle for one view's render, so it does not count as a change of the scene.)
    */
   get overlaysVisible(): boolean {
     return this.#overlays.visible;
@@ -118,17 +141,20 @@ export class WorldScene {
     return this.#robotsVisible;
   }
   set robotsVisible(visible: boolean) {
+    if (visible !== this.#robotsVisible) this.#revision += 1;
     this.#robotsVisible = visible;
     for (const view of this.#robots.values()) this.#showRobot(view);
   }
 
   /** Clears every robot's trail. */
   clearTrails(): void {
+    this.#revision += 1;
     for (const view of this.#robots.values()) view.trail.clear();
   }
 
   /** Draws a planned path (world points, metres), or removes it. */
   setPlannedPath(points: ReadonlyArray<{ x: number; y: number }> | undefined): void {
+    this.#revision += 1;
     if (this.#path !== undefined) {
       this.#overlays.remove(this.#path);
       this.#path.geometry.dispose();
@@ -141,6 +167,7 @@ export class WorldScene {
 
   /** Shows a goal marker at a world point, or removes it. */
   setGoal(goal: { x: number; y: number } | undefined): void {
+    this.#revision += 1;
     if (this.#goal !== undefined) this.#overlays.remove(this.#goal);
     this.#goal = undefined;
     if (goal === undefined) return;
@@ -150,6 +177,7 @@ export class WorldScene {
 
   /** Overlays an occupancy grid on the floor, or removes it. */
   setOccupancyGrid(grid: OccupancyGridView | undefined): void {
+    this.#revision += 1;
     if (this.#grid !== undefined) {
       this.#overlays.remove(this.#grid);
       disposeOccupancyGridMesh(this.#grid);
@@ -187,6 +215,7 @@ export class WorldScene {
   // ---- building ---------------------------------------------------------------------------
 
   #buildStatic(): void {
+    this.#revision += 1;
     buildArena(this.#static, this.world, this.#options.shadows);
   }
 
@@ -201,6 +230,8 @@ export class WorldScene {
       this.scene.remove(view.model.group);
     }
     this.#robots.clear();
+    this.#drawn.clear();
+    this.#revision += 1;
     this.world.robots.forEach((robot, i) => {
       this.#robots.set(robot.id, this.#addRobot(robot, i));
     });
