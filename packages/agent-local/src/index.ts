@@ -1,4 +1,5 @@
 export { createLocalChatProvider } from './local-provider.js';
+export { defaultThreads } from './threads.js';
 export type { LocalChatProvider, LocalChatProviderOptions } from './local-provider.js';
 export { checkModelFile, DEFAULT_MODEL_NAME, defaultModelFile } from './model-file.js';
 export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';

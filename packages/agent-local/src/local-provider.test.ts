@@ -1,5 +1,5 @@
 // The real thing: SmolLM2-135M (from `bash scripts/setup.sh`) on the CPU, driving SimulationHAL.
-// Loaded once for the file, on two threads; each run is a few dozen tokens. Nothing here asserts
+// Loaded once for the file, on one thread (other test files share the cores); each run is a few dozen tokens. Nothing here asserts
 // that the small model chose well: only what the code guarantees.
 import { mkdtemp, open, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
@@ -23,7 +23,7 @@ let hal: SimulationHAL;
 beforeAll(async () => {
   // a missing model fails here, with the message that names bash scripts/setup.sh
   provider = await createLocalChatProvider({
-    threads: 2,
+    threads: 1,
     gpu: false,
     offerTools: SMALL_MODEL_TOOLS,
     maxTokens: 48,

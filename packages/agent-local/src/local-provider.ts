@@ -1,4 +1,3 @@
-import { availableParallelism } from 'node:os';
 import { basename } from 'node:path';
 import type { ChatProvider, ChatReply, ChatRequest, ChatTool, ChatTurn } from '@hal/agent';
 import { scoped } from '@hal/types';
@@ -8,6 +7,7 @@ import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
 import { fitHistory } from './history.js';
+import { defaultThreads } from './threads.js';
 import { checkModelFile, defaultModelFile } from './model-file.js';
 import { systemText } from './prompt.js';
 import { readReply } from './reply-json.js';
@@ -18,7 +18,7 @@ export interface LocalChatProviderOptions {
   modelFile?: string;
   /** 'auto' (default): a GPU when llama.cpp finds one and its build is installed, else the CPU. */
   gpu?: 'auto' | false;
-  /** CPU threads. Default the machine's cores, at most 4. */
+  /** CPU threads. Default one fewer than the machine's cores, 1 to 4 ({@link defaultThreads}). */
   threads?: number;
   /** The context window, tokens. Default 2048 (or the model's own, when smaller). */
   contextSize?: number;
@@ -64,7 +64,7 @@ function checkOptions(options: LocalChatProviderOptions) {
   if (!Number.isFinite(temperature) || temperature < 0)
     throw new LocalModelError('CONFIG', `"temperature" must be 0 or more, got ${temperature}`);
   return {
-    threads: positiveInteger('threads', options.threads, Math.min(4, availableParallelism())),
+    threads: positiveInteger('threads', options.threads, defaultThreads()),
     contextSize: positiveInteger('contextSize', options.contextSize, 2048),
     maxTokens: positiveInteger('maxTokens', options.maxTokens, 96),
     answerMaxLength: positiveInteger(

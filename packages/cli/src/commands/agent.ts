@@ -101,7 +101,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     .addOption(
       new Option(
         '--threads <n>',
-        'CPU threads of the local model (default: cores, at most 4)',
+        'CPU threads of the local model (default: one fewer than the cores, 1 to 4)',
       ).argParser(integerArg('--threads', 1, 256)),
     )
     .addOption(
