@@ -1,12 +1,12 @@
 // `hal agent` in-process with the real local model (SmolLM2-135M from bash scripts/setup.sh) on
-// the embedded simulator: one short generation per run, two threads.
+// the embedded simulator: one short generation per run, one thread (other test files share the cores).
 import { describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import type { CapturedIO } from '../capture-io.fixture.js';
 import { runHal } from '../program.js';
 
 const MODEL_MS = 120_000; // a busy shared CPU can be slow; a quiet one takes seconds
-const fast = ['--sim', '--time-scale', '20', '--threads', '2'];
+const fast = ['--sim', '--time-scale', '20', '--threads', '1'];
 
 type Line = { type: string; [key: string]: unknown };
 

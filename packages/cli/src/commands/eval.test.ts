@@ -171,7 +171,7 @@ describe('hal eval', () => {
       const file = join(dir, 'one.json');
       await writeFile(file, JSON.stringify(oneTask));
       const io = captureIO();
-      const args = ['--agent', 'local', '--tasks-file', file, '--trials', '1', '--threads', '2'];
+      const args = ['--agent', 'local', '--tasks-file', file, '--trials', '1', '--threads', '1'];
       const code = await runHal(['--json', 'eval', ...args], io);
       expect(code, io.stderr()).toBe(0);
       const report = io.jsonLines()[0] as EvalReport;
