@@ -3,12 +3,17 @@
 // names the option, so both programs refuse bad input the same way.
 import { InvalidArgumentError } from 'commander';
 
-/** An integer option in `min..max`. */
+/**
+ * An integer option in `min..max`, written in decimal digits (a leading minus where `min` is
+ * negative): `1e3`, `0x10`, `2.0` and ` ` are refused, not read as numbers.
+ */
 export function integerArg(name: string, min: number, max: number) {
   return (value: string): number => {
     const n = Number(value);
-    if (value.trim() === '' || !Number.isInteger(n) || n < min || n > max) {
-      throw new InvalidArgumentError(`"${name}" must be an integer ${min}..${max}, got "${value}"`);
+    if (!/^-?\d+$/.test(value) || !Number.isSafeInteger(n) || n < min || n > max) {
+      throw new InvalidArgumentError(
+        `"${name}" must be an integer in ${min}..${max}, got "${value}"`,
+      );
     }
     return n;
   };

@@ -3,7 +3,8 @@ import { Option } from 'commander';
 import { DEFAULT_DISCOVERY_TIMEOUT_MS, discoverRobots } from '@hal/discovery';
 import type { DiscoverOptions } from '@hal/discovery';
 import { formatRobots } from '../discover/format.js';
-import { intInRange, ipv4Arg } from '../discover/options.js';
+import { ipv4Arg } from '../discover/options.js';
+import { integerArg } from '../values.js';
 import { emit, progress } from '../io.js';
 import { cliLogger } from '../logger.js';
 import type { RegisterCommand } from './context.js';
@@ -19,7 +20,7 @@ export const registerDiscover: RegisterCommand = (program, { io, global }) => {
     .description('list the robots on the local network (mDNS _hal-cube._udp), within --timeout')
     .addOption(
       new Option('--timeout <ms>', 'how long to listen, ms (1..60000)')
-        .argParser(intInRange('--timeout', 1, 60_000))
+        .argParser(integerArg('--timeout', 1, 60_000))
         .default(DEFAULT_DISCOVERY_TIMEOUT_MS),
     )
     .addOption(

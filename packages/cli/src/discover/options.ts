@@ -1,19 +1,6 @@
 // Option parsers shared by `hal discover` and `hal emulate`.
 import { InvalidArgumentError } from 'commander';
 
-/** An integer in min..max, quoted in the error. */
-export function intInRange(name: string, min: number, max: number) {
-  return (value: string): number => {
-    const n = Number(value);
-    if (!/^\d+$/.test(value.trim()) || !Number.isSafeInteger(n) || n < min || n > max) {
-      throw new InvalidArgumentError(
-        `"${name}" must be an integer in ${min}..${max}, got "${value}"`,
-      );
-    }
-    return n;
-  };
-}
-
 /** An IPv4 address (dotted quad). */
 export function ipv4Arg(name: string) {
   return (value: string): string => {

@@ -1,7 +1,8 @@
 // `hal emulate`'s options, and the cube-emulator flags they become.
 import { InvalidArgumentError, Option } from 'commander';
 import type { Command } from 'commander';
-import { intInRange, ipv4Arg } from '../discover/options.js';
+import { ipv4Arg } from '../discover/options.js';
+import { integerArg } from '../values.js';
 import { deviceIdArg } from '../nats-options.js';
 
 export interface EmulateCliOptions {
@@ -37,7 +38,7 @@ export function addEmulateOptions(command: Command): Command {
   return command
     .addOption(
       new Option('--udp-port <port>', 'UDP port (0 = a free one)')
-        .argParser(intInRange('--udp-port', 0, 65_535))
+        .argParser(integerArg('--udp-port', 0, 65_535))
         .default(4210),
     )
     .addOption(
@@ -64,7 +65,7 @@ export function addEmulateOptions(command: Command): Command {
     )
     .addOption(
       new Option('--host-timeout-ms <ms>', 'host timeout, 500..10000').argParser(
-        intInRange('--host-timeout-ms', 500, 10_000),
+        integerArg('--host-timeout-ms', 500, 10_000),
       ),
     )
     .option('--no-pty', 'do not open a pseudo-terminal for the serial link')

@@ -2,6 +2,7 @@
 import { InvalidArgumentError } from 'commander';
 import { CHECK_GROUPS, SPEC_CAPABILITIES, specCapability } from '@hal/compliance';
 import type { CheckGroup, SpecCapability } from '@hal/compliance';
+import { integerArg } from '../values.js';
 
 /** Collects repeated `--capability` values, each one the runner knows. */
 export function capabilityArg(
@@ -28,13 +29,7 @@ export function groupArg(value: string, previous: CheckGroup[] | undefined): Che
   return [...(previous ?? []), group];
 }
 
-export function samplesArg(value: string): number {
-  const n = Number(value);
-  if (!/^\d+$/.test(value) || n < 1 || n > 10_000) {
-    throw new InvalidArgumentError(`samples is a whole number 1..10000, got "${value}"`);
-  }
-  return n;
-}
+export const samplesArg = integerArg('--samples', 1, 10_000);
 
 export function judgeArg(value: string): 'p50' | 'p99' {
   if (value !== 'p50' && value !== 'p99') {
