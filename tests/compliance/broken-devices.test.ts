@@ -64,7 +64,8 @@ const reasonOf = (report: ComplianceReport, id: string) =>
   report.checks.find((c) => c.id === id)?.reason ?? '';
 const ALL_FEATURES: Features = { camera: true, imu: true, range: true };
 
-describe('runCompliance against a fake device written from the spec', () => {
+// Concurrent: each test has a device of its own, and most of a run is waiting on its stream.
+describe.concurrent('runCompliance against a fake device written from the spec', () => {
   it(
     'passes every check when the device has no fault, including honest absence of what it lacks',
     { timeout: 90_000 },
