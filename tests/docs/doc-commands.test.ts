@@ -154,10 +154,11 @@ describe('the shell blocks of README.md and docs/*.md', () => {
     });
   });
 
-  describe.each(runnable)('$file:$line', (block) => {
-    it.concurrent(
-      'runs as written',
-      async () => {
+  // One suite for all of them: vitest runs concurrent tests together only within a suite.
+  describe('run as written', () => {
+    it.concurrent.each(runnable)(
+      '$file:$line',
+      async (block) => {
         const unlockPorts = await lockPorts(blockPorts(block));
         const release = await slot();
         try {
