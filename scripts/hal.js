@@ -129,8 +129,12 @@ async function build() {
     },
   };
   const result = await esbuild.build({
-    entryPoints: [join(root, 'packages', 'cli', 'src', 'main.ts')],
-    outfile: outFile,
+    // the recorder's worker thread is a file of its own, found beside the bundle
+    entryPoints: {
+      hal: join(root, 'packages', 'cli', 'src', 'main.ts'),
+      'mcap-worker': join(root, 'packages', 'recorder', 'src', 'mcap-worker.ts'),
+    },
+    outdir: outDir,
     absWorkingDir: root,
     write: false,
     bundle: true,
