@@ -1,10 +1,8 @@
 // The flight recorder's cost on the robot's path: a PhysicalHAL command round trip (setLED over
 // UDP to the emulator) through recordHal, against the same HAL unrecorded, in one run, interleaved
 // block by block: p50 and p99 of each and their ratio (goal: within 5 %). The recording goes to a
-// real file (zstd chunks) in the temporary folder, written on a worker thread (the default); the
-// same recording with its writer on the caller's thread (`thread: 'caller'`) runs in the same
-// blocks beside it, for the difference the worker makes. The messages written per second of
-// recorded calls and the file's size are reported beside. RECORDER_ROUNDS sets the calls per side
+// real file (zstd chunks) in the temporary folder; the messages it wrote per second of recorded
+// calls, and the file's size, are reported beside. RECORDER_ROUNDS sets the calls per side
 // (default 6000).
 import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -35,8 +33,6 @@ const dir = mkdtempSync(join(tmpdir(), 'hal-bench-recorder-'));
 try {
   const file = join(dir, 'bench.mcap');
   const recorder = await McapRecorder.toFile(file);
-  const onCaller = await McapRecorder.toFile(join(dir, 'caller.mcap'), { thread: 'caller' });
-  if (recorder.thread !== 'worker') throw new Error('the recording did not start a worker thread');
   const hal = new PhysicalHAL({
     mode: 'physical',
     deviceId: 'bench',
@@ -46,14 +42,11 @@ try {
   // no timed pose sampling, which would load the unrecorded blocks too (the HAL is the same);
   // setLED moves nothing, so no pose is read after it either: each call is one call record
   const recorded = recordHal(hal, recorder, { posePeriodMs: 0 });
-  const recordedOnCaller = recordHal(hal, onCaller, { posePeriodMs: 0 });
   await block(hal, WARMUP, []);
   await block(recorded, WARMUP, []);
-  await block(recordedOnCaller, WARMUP, []);
 
   const off: number[] = [];
   const on: number[] = [];
-  const caller: number[] = [];
   let recordedMs = 0;
   // the warm-up's records are written before counting (deferred a turn, then queued)
   await new Promise((resolve) => setTimeout(resolve, 50));
@@ -64,11 +57,9 @@ try {
     const started = performance.now();
     await block(recorded, BLOCK, on);
     recordedMs += performance.now() - started;
-    await block(recordedOnCaller, BLOCK, caller);
   }
   await recorder.drained();
   const stats = await recorder.close();
-  await onCaller.close();
   await hal.cleanup();
   const written = stats.written - writtenBefore;
 
@@ -81,19 +72,9 @@ try {
   );
   for (const [name, recordedValue, plain] of rows) {
     const ratio = recordedValue / plain;
-    const onCallerValue = percentile(caller, name === 'p50' ? 50 : 99);
     console.log(
-      `  ${name}: recorded ${fmt(recordedValue)}, unrecorded ${fmt(plain)} (${ratio.toFixed(3)}x); writer on the caller's thread ${fmt(onCallerValue)} (${(onCallerValue / plain).toFixed(3)}x)`,
+      `  ${name}: recorded ${fmt(recordedValue)}, unrecorded ${fmt(plain)} (${ratio.toFixed(3)}x)`,
     );
-    reportFigure({
-      bench: 'recorder',
-      name: `UDP round trip ${name}, recorded with the writer on the caller's thread`,
-      value: onCallerValue,
-      unit: 'ms',
-      better: 'lower',
-      alternative: { name: 'the same HAL unrecorded', value: plain },
-      note: "thread: 'caller', in the same blocks: what the worker thread saves",
-    });
     reportFigure({
       bench: 'recorder',
       name: `UDP round trip ${name}, recorded`,
@@ -103,7 +84,7 @@ try {
       alternative: { name: 'the same HAL unrecorded', value: plain },
       goal: '<= 1.05x unrecorded',
       met: ratio <= 1.05,
-      note: 'setLED to cube-emulator over UDP on 127.0.0.1, recorded into a zstd MCAP file written on a worker thread (one call record per call); the p99 of both moves by several times between runs on a shared 2-core machine',
+      note: 'setLED to cube-emulator over UDP on 127.0.0.1, recorded into a zstd MCAP file (one call record per call); the p99 of both moves by several times between runs on a shared 2-core machine',
     });
   }
   const perSecond = written / (recordedMs / 1000);

@@ -129,12 +129,8 @@ async function build() {
     },
   };
   const result = await esbuild.build({
-    // the recorder's worker thread is a file of its own, found beside the bundle
-    entryPoints: {
-      hal: join(root, 'packages', 'cli', 'src', 'main.ts'),
-      'mcap-worker': join(root, 'packages', 'recorder', 'src', 'mcap-worker.ts'),
-    },
-    outdir: outDir,
+    entryPoints: [join(root, 'packages', 'cli', 'src', 'main.ts')],
+    outfile: outFile,
     absWorkingDir: root,
     write: false,
     bundle: true,

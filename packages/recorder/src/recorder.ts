@@ -6,7 +6,6 @@ import { chunkCompressor, zstdReady } from './compression.js';
 import type { ChunkCompression } from './compression.js';
 import type { RecordingSink } from './file-sink.js';
 import { openFileSink } from './file-sink.js';
-import type { RecordWriter } from './record-writer.js';
 import type { NamedJsonSchema } from './foxglove-schemas.js';
 import { RECORDER_LOSS, TOPICS } from './messages.js';
 
@@ -28,14 +27,6 @@ export interface RecorderOptions {
   logger?: Logger;
   /** The file's clock, nanoseconds since the epoch. Default: monotonic wall-clock time. */
   clock?: () => bigint;
-  /**
-   * Where {@link McapRecorder.toFile} runs the MCAP writer. 'worker' (default): on a worker
-   * thread, so finishing a chunk (its CRC32 and compression, about 0.3 ms for 64 KiB) never holds
-   * up the thread that answers the robot; where no worker can start (its script is not beside
-   * the recorder's, as in a single-file bundle), on the caller's thread, said in the log.
-   * 'caller': on the caller's thread. {@link McapRecorder.create} always writes on the caller's.
-   */
-  thread?: 'worker' | 'caller';
 }
 
 /** What a recorder wrote and lost. */
@@ -52,25 +43,12 @@ export interface RecorderStats {
 
 interface QueuedOp {
   bytes: number;
-  run: (writer: RecordWriter) => Promise<void>;
+  run: (writer: McapWriter) => Promise<void>;
   /** A message (counted as written or dropped); schema, channel and metadata records are not. */
   message: boolean;
 }
 
 const encoder = new TextEncoder();
-const DEFAULT_CHUNK_SIZE = 64 * 1024;
-
-/** A writer on a worker thread, which can lose what it was handed (a disk that fails later). */
-interface WorkerWriterLike extends RecordWriter {
-  onLost: (count: number, reason: string) => void;
-}
-
-/** The sink of a recording whose worker owns the file: the recorder writes nothing itself. */
-const WORKER_OWNS_THE_FILE: RecordingSink = {
-  position: () => 0n,
-  write: () => Promise.reject(new Error('the recording worker owns the file')),
-  close: () => Promise.resolve(),
-};
 
 /** A later turn of the event loop: setImmediate in Node, a zero timeout in a browser. */
 const nextTurn: (run: () => void) => void =
@@ -83,7 +61,7 @@ const nextTurn: (run: () => void) => void =
  * failed disk drops messages, counts them, logs it, and says so in the file at close.
  */
 export class McapRecorder {
-  readonly #writer: RecordWriter;
+  readonly #writer: McapWriter;
   readonly #sink: RecordingSink;
   readonly #log: ScopedLogger;
   readonly #maxQueuedBytes: number;
@@ -100,29 +78,18 @@ export class McapRecorder {
   #pump: Promise<void> | undefined;
   #closed = false;
   readonly clock: () => bigint;
-  /** Where the MCAP writer runs: a worker thread, or the caller's (see `thread`). */
-  readonly thread: 'worker' | 'caller';
 
-  private constructor(sink: RecordingSink, options: RecorderOptions, writer?: WorkerWriterLike) {
+  private constructor(sink: RecordingSink, options: RecorderOptions) {
+    const compression = options.compression ?? 'zstd';
+    const compressChunk = chunkCompressor(compression);
     this.#sink = sink;
     this.#log = scoped(options.logger ?? silentLogger, 'hal:recorder');
     this.#maxQueuedBytes = options.maxQueuedBytes ?? 16 * 1024 * 1024;
     this.clock = options.clock ?? monotonicEpochClock();
-    this.thread = writer === undefined ? 'caller' : 'worker';
-    if (writer !== undefined) {
-      // messages the worker lost after they were handed over are dropped, not written
-      writer.onLost = (count, reason) => {
-        this.#written -= count;
-        this.#drop(reason, count);
-      };
-      this.#writer = writer;
-      return;
-    }
-    const compressChunk = chunkCompressor(options.compression ?? 'zstd');
     this.#writer = new McapWriter({
       writable: sink,
       useChunks: true,
-      chunkSize: options.chunkSize ?? DEFAULT_CHUNK_SIZE,
+      chunkSize: options.chunkSize ?? 64 * 1024,
       ...(compressChunk ? { compressChunk } : {}),
     });
   }
@@ -130,37 +97,18 @@ export class McapRecorder {
   /** Starts a recording into `sink` (a file's, a memory buffer's, or your own writable). */
   static async create(sink: RecordingSink, options: RecorderOptions = {}): Promise<McapRecorder> {
     if ((options.compression ?? 'zstd') === 'zstd') await zstdReady();
-    return McapRecorder.#started(new McapRecorder(sink, options));
-  }
-
-  /**
-   * Starts a recording into a new file at `path` (replacing one that is there), written on a
-   * worker thread unless `thread: 'caller'`. Rejects when the file cannot be opened.
-   */
-  static async toFile(path: string, options: RecorderOptions = {}): Promise<McapRecorder> {
-    if ((options.thread ?? 'worker') === 'worker') {
-      const { WorkerWriter } = await import('./worker-writer.js');
-      const writer = await WorkerWriter.open(path, {
-        compression: options.compression ?? 'zstd',
-        chunkSize: options.chunkSize ?? DEFAULT_CHUNK_SIZE,
-      });
-      if (writer !== undefined) {
-        return McapRecorder.#started(new McapRecorder(WORKER_OWNS_THE_FILE, options, writer));
-      }
-      scoped(options.logger ?? silentLogger, 'hal:recorder').debug(
-        'no worker thread for the recording here: its writer runs on this thread',
-      );
-    }
-    return McapRecorder.create(await openFileSink(path), options);
-  }
-
-  static #started(recorder: McapRecorder): McapRecorder {
+    const recorder = new McapRecorder(sink, options);
     recorder.#enqueue({
       bytes: 0,
       message: false,
       run: (writer) => writer.start({ profile: '', library: 'hal-recorder' }),
     });
     return recorder;
+  }
+
+  /** Starts a recording into a new file at `path` (replacing one that is there). */
+  static async toFile(path: string, options: RecorderOptions = {}): Promise<McapRecorder> {
+    return McapRecorder.create(await openFileSink(path), options);
   }
 
   /** Declares a JSON channel on `topic` with `schema` (once per topic; later calls are no-ops). */
@@ -364,8 +312,8 @@ export class McapRecorder {
     this.#log.warn(`${this.#failure}; the robot goes on, records are dropped and counted`);
   }
 
-  #drop(reason: string, count = 1): void {
-    this.#dropped += count;
+  #drop(reason: string): void {
+    this.#dropped += 1;
     if (this.#dropReason === undefined) {
       this.#dropReason = reason;
       this.#log.warn(`recorder dropped a message: ${reason}`, { reason });
