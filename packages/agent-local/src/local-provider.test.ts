@@ -1,6 +1,7 @@
 // The real thing: SmolLM2-135M (from `bash scripts/setup.sh`) on the CPU, driving SimulationHAL.
-// Loaded once for the file, on one thread (other test files share the cores); each run is a few dozen tokens. Nothing here asserts
-// that the small model chose well: only what the code guarantees.
+// Loaded once for the file, on one thread (other test files share the cores); each run is a few
+// dozen tokens. Nothing here asserts that the small model chose well: only what the code
+// guarantees.
 import { mkdtemp, open, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';

@@ -7,10 +7,10 @@ import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
 import { fitHistory } from './history.js';
-import { defaultThreads } from './threads.js';
 import { checkModelFile, defaultModelFile } from './model-file.js';
 import { systemText } from './prompt.js';
 import { readReply } from './reply-json.js';
+import { defaultThreads } from './threads.js';
 
 /** Options of {@link createLocalChatProvider}. */
 export interface LocalChatProviderOptions {

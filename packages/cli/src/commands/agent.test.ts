@@ -1,5 +1,6 @@
 // `hal agent` in-process with the real local model (SmolLM2-135M from bash scripts/setup.sh) on
-// the embedded simulator: one short generation per run, one thread (other test files share the cores).
+// the embedded simulator: one short generation per run, on one thread (other test files share
+// the cores).
 import { describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import type { CapturedIO } from '../capture-io.fixture.js';
