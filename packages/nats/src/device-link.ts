@@ -41,11 +41,6 @@ export function errorFromPayload(payload: HalErrorPayload): HalError {
   return new HalError(code, payload.message, { details });
 }
 
-/**
- * One client's link to one device over NATS: requests with retries that reuse the request id (so
- * the gateway runs each call once, however often it is repeated), and liveness from everything the
- * device sends. Every wait is bounded by `callTimeoutMs`.
- */
 /** The reply schemas with the error reply beside them, built once per reply schema. */
 const replyOrErrorSchemas = new WeakMap<z.ZodType, z.ZodType>();
 
@@ -59,6 +54,11 @@ function replyOrError(reply: z.ZodType): z.ZodType {
   return schema;
 }
 
+/**
+ * One client's link to one device over NATS: requests with retries that reuse the request id (so
+ * the gateway runs each call once, however often it is repeated), and liveness from everything the
+ * device sends. Every wait is bounded by `callTimeoutMs`.
+ */
 export class DeviceLink {
   /** The `device_id` of the last reply: who answered (the served id of the default device). */
   sender: string | undefined;

@@ -404,7 +404,6 @@ class Gateway implements HalGateway {
     };
   }
 
-  /** One tick of the streams; a tick still reading when the next is due is not overlapped. */
   /**
    * The optional streams the device offers now: its capabilities are read at every tick (a robot
    * may gain a camera or a sensor), but parsed again only when they change.
@@ -419,6 +418,7 @@ class Gateway implements HalGateway {
     return this.#offered;
   }
 
+  /** One tick of the streams; a tick still reading when the next is due is not overlapped. */
   async #stream(): Promise<void> {
     if (this.#streaming || this.#closed || !this.hal.isReady()) return;
     this.#streaming = true;
