@@ -6,7 +6,7 @@ import { join } from 'node:path';
 import { runHal } from '@hal/cli';
 import { describe, expect, it } from 'vitest';
 import { fakeTty } from '../../packages/cli/src/teleop/fake-tty.fixture.js';
-import { startEmulator } from '../physical/emulator.js';
+import { LONGEST_HOST_TIMEOUT_MS, startEmulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
 import {
   calibrationDirPerTest,
@@ -15,7 +15,6 @@ import {
   halOn,
   movesSince,
   stepsFor,
-  HOST_TIMEOUT_MS,
   TIME_SCALE,
   udpOf,
 } from './calibration-rig.js';
@@ -148,7 +147,7 @@ describe('hal calibrate on the emulated robot', () => {
   it('refuses, before any motion, to calibrate a robot whose id cannot name a file', async () => {
     const emulator = await startEmulator({
       timeScale: TIME_SCALE,
-      hostTimeoutMs: HOST_TIMEOUT_MS,
+      hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS,
       deviceId: 'cube one',
       pty: false,
     });

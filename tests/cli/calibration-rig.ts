@@ -6,7 +6,7 @@ import { join } from 'node:path';
 import { PhysicalHAL } from '@hal/physical';
 import type { PhysicalHALOptions } from '@hal/physical';
 import { afterAll, afterEach, beforeEach } from 'vitest';
-import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { LONGEST_HOST_TIMEOUT_MS, startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator, EmulatorEvent } from '../physical/emulator.js';
 
 export const TIME_SCALE = 10;
@@ -30,14 +30,12 @@ export function calibrationDirPerTest(): { dir: () => string; env: () => Record<
   return { dir: () => dir, env: () => ({ HAL_CALIBRATION_DIR: dir }) };
 }
 
-// The longest host timeout: scaled by TIME_SCALE it is 1 s of real time, which a heartbeat held
-// back on a loaded machine does not outlast (the default's 200 ms did, stopping a calibration run).
-export const HOST_TIMEOUT_MS = 10_000;
-
 export const emulated = (udpPort?: number) =>
   startEmulator({
     timeScale: TIME_SCALE,
-    hostTimeoutMs: HOST_TIMEOUT_MS,
+    // 1 s of real time at TIME_SCALE: the default's 200 ms was outlasted by a heartbeat held back
+    // on a loaded machine, stopping a calibration run
+    hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS,
     deviceId: DEVICE,
     pty: false,
     ...(udpPort === undefined ? {} : { udpPort }),

@@ -4,21 +4,23 @@ import { runHal } from '@hal/cli';
 import type { EvalReport } from '@hal/eval';
 import { stepsPerCm, V1_ROBOT } from '@hal/types';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { EMULATOR_PATH, startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import {
+  EMULATOR_PATH,
+  LONGEST_HOST_TIMEOUT_MS,
+  startEmulator,
+  stopAllEmulators,
+} from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
 
 const TIME_SCALE = 10;
-// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
-// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
-const SCALED_HOST_TIMEOUT_MS = 10_000;
 let emulator: Emulator;
 
 beforeAll(async () => {
   emulator = await startEmulator({
     timeScale: TIME_SCALE,
     pty: false,
-    hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+    hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS, // not a test of the timeout
   });
 });
 afterAll(stopAllEmulators);

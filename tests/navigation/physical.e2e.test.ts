@@ -9,12 +9,9 @@ import { SimulationHAL, World } from '@hal/simulation';
 import type { WorldMapInput } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { afterAll, describe, expect, it } from 'vitest';
-import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { LONGEST_HOST_TIMEOUT_MS, startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 const TIME_SCALE = 20;
-// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
-// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
-const SCALED_HOST_TIMEOUT_MS = 10_000;
 afterAll(stopAllEmulators);
 
 /** A box between the start (the origin, facing +x) and the goal. */
@@ -44,7 +41,7 @@ describe('NavigationBridge through PhysicalHAL to the emulated robot', () => {
     const emulator = await startEmulator({
       timeScale: TIME_SCALE,
       pty: false,
-      hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+      hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS, // not a test of the timeout
     });
     const physical = new PhysicalHAL(
       {

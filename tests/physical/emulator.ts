@@ -17,6 +17,13 @@ export const EMULATOR_PATH =
 /** One line the emulator printed. */
 export type EmulatorEvent = Record<string, unknown> & { event: string };
 
+/**
+ * The robot's longest host timeout (`--host-timeout-ms`'s upper bound), for a time-scaled test
+ * that is not about the timeout: its window is then this / timeScale of real time (500 ms at
+ * x20), which a heartbeat held back on a loaded machine does not outlast.
+ */
+export const LONGEST_HOST_TIMEOUT_MS = 10_000;
+
 export interface EmulatorOptions {
   timeScale?: number;
   /** Pre-shared key, hex. */

@@ -10,7 +10,7 @@ import { createInterface } from 'node:readline';
 import { World } from '@hal/simulation';
 import type { SimRobot } from '@hal/simulation';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { EMULATOR_PATH as EMULATOR } from '../physical/emulator.js';
+import { EMULATOR_PATH as EMULATOR, LONGEST_HOST_TIMEOUT_MS } from '../physical/emulator.js';
 import { AGREEMENT_SCRIPT as SCRIPT, commandSimRobot } from './agreement-script.js';
 import type { Command } from './agreement-script.js';
 
@@ -45,7 +45,7 @@ describe('simulation vs the emulated firmware', () => {
         '--time-scale',
         String(TIME_SCALE),
         '--host-timeout-ms',
-        '10000',
+        String(LONGEST_HOST_TIMEOUT_MS),
         '--exit-on-stdin-eof',
       ],
       { stdio: ['pipe', 'pipe', 'pipe'] },

@@ -6,14 +6,11 @@ import { PhysicalHAL } from '@hal/physical';
 import { SimulationHAL, World } from '@hal/simulation';
 import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 import { afterAll, describe, expect, it } from 'vitest';
-import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { LONGEST_HOST_TIMEOUT_MS, startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 afterAll(stopAllEmulators);
 
 const TIME_SCALE = 20;
-// The robot's longest host timeout, so that its time-scaled window (10 s / TIME_SCALE of real
-// time) outlasts a heartbeat held back on a loaded machine; this test is not about the timeout.
-const SCALED_HOST_TIMEOUT_MS = 10_000;
 
 const SCRIPT: Array<[string, (hal: HardwareAbstractionLayer) => Promise<HALToolResult>]> = [
   ['moveForward(10)', (h) => h.locomotion.moveForward(10)],
@@ -32,7 +29,7 @@ describe('SimulationHAL and PhysicalHAL on the emulated robot', () => {
     const emulator = await startEmulator({
       timeScale: TIME_SCALE,
       pty: false,
-      hostTimeoutMs: SCALED_HOST_TIMEOUT_MS,
+      hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS, // not a test of the timeout
     });
     const physical = new PhysicalHAL(
       {
