@@ -1,9 +1,15 @@
+const ORIGIN_NS = BigInt(Math.round(performance.timeOrigin * 1e6));
+
+/** Nanoseconds since the epoch at `ms`, a reading of `performance.now()`. */
+export function epochNsAt(ms: number): bigint {
+  return ORIGIN_NS + BigInt(Math.round(ms * 1e6));
+}
+
 /** Nanoseconds since the epoch, never going backwards (the wall clock may step; this does not). */
 export function monotonicEpochClock(): () => bigint {
-  const origin = BigInt(Math.round(performance.timeOrigin * 1e6));
   let last = 0n;
   return () => {
-    const now = origin + BigInt(Math.round(performance.now() * 1e6));
+    const now = epochNsAt(performance.now());
     last = now > last ? now : last + 1n;
     return last;
   };

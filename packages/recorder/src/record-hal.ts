@@ -184,8 +184,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     }
   }
 
-  function watchLatch(): void {
-    const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
+  /** Writes a trip: the latch, read now (or as `latched`), changed with no safety call. */
+  function watchLatch(latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched)): void {
     if (latched === lastLatched) return;
     lastLatched = latched;
     const event: SafetyEvent = {
@@ -292,23 +292,29 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     }
   }
 
+  /**
+   * What must be read the moment a call answers: its duration, the latch, and after an action
+   * that can move the robot, the pose. The record itself is made off the call's path (deferred
+   * to a moment with no call on its way), so this is all a call pays on its path.
+   */
   function record(
     info: CallInfo,
-    start: bigint,
+    start: number | bigint,
     startMs: number,
     outcome: HalCallRecord['outcome'],
     value: unknown,
   ): void {
     const durationMs = Math.max(0, performance.now() - startMs);
-    // The pose this call left is asked for now, before the caller can start another motion; the
-    // record itself is made off the call's path, so the caller has its answer first.
+    // The pose this call left is asked for now, before the caller can start another motion.
     let poseAfter: Promise<Pose> | undefined;
-    const poseAskedAt = recorder.clock();
+    let poseAskedAt = 0n;
     try {
       // after a motion, and where the robot stands once ready (the start of the run, for replay)
-      const ready = info.subsystem === undefined && info.method === 'initialize';
       const moved = MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value);
-      if ((moved || (ready && outcome === 'resolved')) && hal.isReady()) {
+      const ready =
+        info.subsystem === undefined && info.method === 'initialize' && outcome === 'resolved';
+      if ((moved || ready) && hal.isReady()) {
+        poseAskedAt = recorder.clock();
         poseAfter = hal.locomotion.getPose();
         poseAfter.catch(() => undefined);
       }
@@ -319,7 +325,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
     // a change any other call finds is a trip (rare, so written at once)
     if (info.subsystem === 'safety') lastLatched = latched;
-    else watchLatch();
+    else watchLatch(latched);
     recorder.defer(() =>
       recordNow(info, start, durationMs, outcome, value, poseAfter, poseAskedAt, latched),
     );
@@ -327,7 +333,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
 
   function recordNow(
     info: CallInfo,
-    start: bigint,
+    start: number | bigint,
     durationMs: number,
     outcome: HalCallRecord['outcome'],
     value: unknown,
@@ -344,7 +350,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         outcome,
         ...status,
         ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),
-        start_ns: start.toString(),
+        start_ns: recorder.timeOf(start).toString(),
         duration_ms: durationMs,
       };
       const finish = (poseAfter?: Pose): void => {
@@ -381,65 +387,93 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   ) {
     return function recorded(...args: unknown[]): unknown {
       const info: CallInfo = { subsystem, method, args };
-      const start = recorder.clock();
-      const startMs = performance.now();
+      const start = recorder.stamp();
+      const startMs = typeof start === 'number' ? start : performance.now();
       // the link's last figures and steps, read while the link is still open
       if (subsystem === undefined && method === 'cleanup' && safe(() => hal.isReady(), false)) {
         writeSteps();
         writeLink();
       }
+      // the recording's work waits while the call is on its way, so its reply never waits for it
+      const answered = recorder.callStarted();
       let out: unknown;
       try {
         out = fn.apply(owner, args);
       } catch (error) {
         record(info, start, startMs, 'threw', error);
+        answered();
         throw error;
       }
       if (!isPromiseLike(out)) {
         record(info, start, startMs, 'returned', out);
+        answered();
         return out;
       }
       return Promise.resolve(out).then(
         (value) => {
           record(info, start, startMs, 'resolved', value);
+          answered();
           return value;
         },
         (error: unknown) => {
           record(info, start, startMs, 'rejected', error);
+          answered();
           throw error;
         },
       );
     };
   }
 
-  /** A proxy whose function properties are recorded; everything else reads through unchanged. */
+  /**
+   * The recorded object: a plain object in front of a Proxy of the real one. The first read of
+   * a method (or, on the HAL, a subsystem) goes through the Proxy, which puts an accessor for it
+   * on the front object; every later read is that accessor, which the JIT inlines, where a Proxy
+   * trap on every call cost a paced loop's call microseconds. The accessor wraps the real
+   * object's current function (a replaced method is recorded as replaced); a write goes to the
+   * real object. Everything else (fields, getters, `in`, `instanceof`) reads through the Proxy
+   * to the real object, with the real object as receiver: getters and #private fields need it.
+   */
   function wrapObject<O extends object>(target: O, subsystem: string | undefined): O {
-    const wrapped = new Map<PropertyKey, { fn: unknown; wrapper: unknown }>();
-    return new Proxy(target, {
-      get(obj, prop) {
-        // Read with the real object as receiver: getters and #private fields need it.
-        const value: unknown = Reflect.get(obj, prop, obj);
-        if (
-          subsystem === undefined &&
-          typeof prop === 'string' &&
-          (SUBSYSTEMS as readonly string[]).includes(prop)
-        ) {
-          if (typeof value !== 'object' || value === null) return value;
-          const cached = wrapped.get(prop);
-          if (cached?.fn === value) return cached.wrapper;
-          const wrapper = wrapObject(value, prop);
-          wrapped.set(prop, { fn: value, wrapper });
-          return wrapper;
+    const front: Record<PropertyKey, unknown> = {};
+    const keep = (prop: string, wrap: (value: unknown) => unknown): unknown => {
+      let seen: unknown;
+      let wrapper: unknown;
+      const current = (): unknown => {
+        const value: unknown = Reflect.get(target, prop, target);
+        if (value !== seen) {
+          seen = value;
+          wrapper = wrap(value);
         }
-        if (typeof value !== 'function' || typeof prop !== 'string' || prop === 'constructor')
-          return value;
-        const cached = wrapped.get(prop);
-        if (cached?.fn === value) return cached.wrapper;
-        const wrapper = wrapMethod(value as (...args: unknown[]) => unknown, obj, subsystem, prop);
-        wrapped.set(prop, { fn: value, wrapper });
         return wrapper;
+      };
+      Object.defineProperty(front, prop, {
+        configurable: true,
+        get: current,
+        set: (value: unknown) => Reflect.set(target, prop, value, target),
+      });
+      return current();
+    };
+    const proxy = new Proxy(target, {
+      get(obj, prop) {
+        const value: unknown = Reflect.get(obj, prop, obj);
+        if (typeof prop !== 'string' || prop === 'constructor') return value;
+        if (subsystem === undefined && (SUBSYSTEMS as readonly string[]).includes(prop)) {
+          if (typeof value !== 'object' || value === null) return value;
+          return keep(prop, (sub) =>
+            typeof sub === 'object' && sub !== null ? wrapObject(sub, prop) : sub,
+          );
+        }
+        if (typeof value !== 'function') return value;
+        return keep(prop, (fn) =>
+          typeof fn === 'function'
+            ? wrapMethod(fn as (...args: unknown[]) => unknown, obj, subsystem, prop)
+            : fn,
+        );
       },
+      set: (obj, prop, value: unknown) => Reflect.set(obj, prop, value, obj),
     });
+    Object.setPrototypeOf(front, proxy);
+    return front as O;
   }
 
   // a HAL handed over already initialised (as the `hal` command opens its targets)

@@ -1,7 +1,9 @@
 import { scoped, silentLogger } from '@hal/types';
 import type { Logger, ScopedLogger } from '@hal/types';
 import { McapWriter } from '@mcap/core';
-import { monotonicEpochClock } from './clock.js';
+import { BackgroundWork } from './background-work.js';
+import { period } from './call-values.js';
+import { epochNsAt, monotonicEpochClock } from './clock.js';
 import { chunkCompressor, zstdReady } from './compression.js';
 import type { ChunkCompression } from './compression.js';
 import type { RecordingSink } from './file-sink.js';
@@ -27,6 +29,12 @@ export interface RecorderOptions {
   logger?: Logger;
   /** The file's clock, nanoseconds since the epoch. Default: monotonic wall-clock time. */
   clock?: () => bigint;
+  /**
+   * The longest the recording's work waits for a moment with no recorded call on its way to the
+   * robot (ms, default 250). Past it, while calls keep coming back to back, the work runs between
+   * them. A process killed meanwhile loses what waits, besides the chunk being filled.
+   */
+  maxHoldMs?: number;
 }
 
 /** What a recorder wrote and lost. */
@@ -50,15 +58,21 @@ interface QueuedOp {
 
 const encoder = new TextEncoder();
 
-/** A later turn of the event loop: setImmediate in Node, a zero timeout in a browser. */
-const nextTurn: (run: () => void) => void =
-  typeof setImmediate === 'function' ? (run) => setImmediate(run) : (run) => setTimeout(run, 0);
+/** The longest one turn of the recording's work runs before a reply or a call may go first. */
+const WORK_SLICE_MS = 1;
+/** How often waiting work looks for a moment with no recorded call on its way. */
+const WORK_TICK_MS = 10;
+/** The longest {@link McapRecorder.drained} and `close` wait for deferred tasks still waiting. */
+const DEFERRED_WAIT_MS = 2000;
 
 /**
  * An MCAP file being written, chunked and compressed, with JSON-encoded channels. Every method
  * but {@link close} returns at once: records wait in a bounded queue that a single background
- * loop hands to the writer in order, so no caller ever waits for the disk. A full queue or a
- * failed disk drops messages, counts them, logs it, and says so in the file at close.
+ * loop hands to the writer in order, so no caller ever waits for the disk. The loop works in
+ * the moments no recorded call is on its way to the robot ({@link callStarted}), so a reply
+ * never waits for the recording's work, and goes on between calls only once work has waited
+ * `maxHoldMs`. A full queue or a failed disk drops messages, counts them, logs it, and says so
+ * in the file at close.
  */
 export class McapRecorder {
   readonly #writer: McapWriter;
@@ -69,15 +83,19 @@ export class McapRecorder {
   readonly #channels = new Map<string, number>();
   readonly #schemas = new Map<string, number>();
   readonly #pendingTopics = new Set<string>();
-  readonly #deferred = new Set<Promise<void>>();
+  /** Deferred tasks not yet run. */
+  readonly #tasks: (() => void | PromiseLike<void>)[] = [];
+  /** Deferred tasks that ran and wait for something (a pose) before they write. */
+  readonly #waitingTasks = new Set<Promise<void>>();
+  readonly #work: BackgroundWork;
   #queuedBytes = 0;
   #written = 0;
   #dropped = 0;
   #dropReason: string | undefined;
   #failure: string | undefined;
-  #pump: Promise<void> | undefined;
   #closed = false;
   readonly clock: () => bigint;
+  readonly #ownClock: boolean;
 
   private constructor(sink: RecordingSink, options: RecorderOptions) {
     const compression = options.compression ?? 'zstd';
@@ -86,11 +104,19 @@ export class McapRecorder {
     this.#log = scoped(options.logger ?? silentLogger, 'hal:recorder');
     this.#maxQueuedBytes = options.maxQueuedBytes ?? 16 * 1024 * 1024;
     this.clock = options.clock ?? monotonicEpochClock();
+    this.#ownClock = options.clock !== undefined;
     this.#writer = new McapWriter({
       writable: sink,
       useChunks: true,
       chunkSize: options.chunkSize ?? 64 * 1024,
       ...(compressChunk ? { compressChunk } : {}),
+    });
+    this.#work = new BackgroundWork({
+      step: () => this.#step(),
+      hasWork: () => this.#tasks.length > 0 || this.#queue.length > 0,
+      maxHoldMs: period('maxHoldMs', options.maxHoldMs ?? 250),
+      sliceMs: WORK_SLICE_MS,
+      tickMs: WORK_TICK_MS,
     });
   }
 
@@ -109,6 +135,19 @@ export class McapRecorder {
   /** Starts a recording into a new file at `path` (replacing one that is there). */
   static async toFile(path: string, options: RecorderOptions = {}): Promise<McapRecorder> {
     return McapRecorder.create(await openFileSink(path), options);
+  }
+
+  /**
+   * A reading of the file's clock, to be made a time with {@link timeOf} later: with the default
+   * clock, `performance.now()`, which costs a call's path less than {@link clock}.
+   */
+  stamp(): number | bigint {
+    return this.#ownClock ? this.clock() : performance.now();
+  }
+
+  /** The file's time (ns) of a {@link stamp}. */
+  timeOf(stamp: number | bigint): bigint {
+    return typeof stamp === 'bigint' ? stamp : epochNsAt(stamp);
   }
 
   /** Declares a JSON channel on `topic` with `schema` (once per topic; later calls are no-ops). */
@@ -184,14 +223,23 @@ export class McapRecorder {
   }
 
   /**
-   * Runs `task` off the caller's path: after the current turn of the event loop, so the caller
-   * (the robot's next command) goes first and the recording work overlaps its wait for the
-   * robot. {@link close} waits for deferred tasks (at most 2 s). A task that throws is ignored.
+   * Runs `task` off the caller's path, with the rest of the recording's work: in a later turn
+   * of the event loop with no recorded call on its way (or once work has waited `maxHoldMs`).
+   * {@link drained} and {@link close} wait for deferred tasks (at most 2 s for one that waits on
+   * a promise). A task that throws is ignored.
    */
   defer(task: () => void | PromiseLike<void>): void {
-    const run = new Promise<void>((resolve) => nextTurn(resolve)).then(task).catch(() => undefined);
-    this.#deferred.add(run);
-    void run.finally(() => this.#deferred.delete(run));
+    this.#tasks.push(task);
+    this.#work.kick();
+  }
+
+  /**
+   * Marks a call on its way to the robot: until the function it returns is called (once the
+   * call has answered), the recording's work waits, so the call's reply never waits for it.
+   * `recordHal` calls it around every call.
+   */
+  callStarted(): () => void {
+    return this.#work.callStarted();
   }
 
   /** What has been written and lost so far. */
@@ -204,9 +252,25 @@ export class McapRecorder {
     };
   }
 
-  /** Resolves once everything queued so far has reached the writer. */
+  /**
+   * Resolves once everything queued and deferred so far has gone through the writer to the
+   * sink, and the sink has it (a file: the operating system), calls on their way or not. A
+   * deferred task waiting on a promise is waited for at most 2 s.
+   */
   async drained(): Promise<void> {
-    while (this.#pump) await this.#pump;
+    const deadline = performance.now() + DEFERRED_WAIT_MS;
+    for (;;) {
+      await this.#work.flush();
+      await this.#sink.flushed?.();
+      const left = deadline - performance.now();
+      if (this.#waitingTasks.size === 0 || left <= 0) return;
+      let timer: ReturnType<typeof setTimeout> | undefined;
+      await Promise.race([
+        Promise.all([...this.#waitingTasks]),
+        new Promise((resolve) => (timer = setTimeout(resolve, left))),
+      ]);
+      clearTimeout(timer);
+    }
   }
 
   /**
@@ -219,13 +283,7 @@ export class McapRecorder {
       return this.stats();
     }
     // what was deferred before close is part of the recording (a task may defer another)
-    const deadline = performance.now() + 2000;
-    while (this.#deferred.size > 0 && performance.now() < deadline) {
-      await Promise.race([
-        Promise.all([...this.#deferred]),
-        new Promise((resolve) => setTimeout(resolve, Math.max(0, deadline - performance.now()))),
-      ]);
-    }
+    await this.drained();
     this.channel(TOPICS.loss, RECORDER_LOSS);
     const lossLater = (): Record<string, unknown> => ({
       written: this.#written,
@@ -258,6 +316,7 @@ export class McapRecorder {
     this.#enqueue({ bytes: 0, message: false, run: (writer) => writer.end() });
     this.#closed = true;
     await this.drained();
+    this.#work.stop();
     try {
       await this.#sink.close();
     } catch (error) {
@@ -283,27 +342,47 @@ export class McapRecorder {
     }
     this.#queue.push(op);
     this.#queuedBytes += op.bytes;
-    this.#pump ??= this.#run();
+    this.#work.kick();
   }
 
-  async #run(): Promise<void> {
-    // Start on a later turn, so the caller that queued the first record is never held up.
-    await Promise.resolve();
-    for (let op = this.#queue.shift(); op; op = this.#queue.shift()) {
-      this.#queuedBytes -= op.bytes;
-      if (this.#failure !== undefined) {
-        if (op.message) this.#drop(this.#failure);
-        continue;
-      }
-      try {
-        await op.run(this.#writer);
-        if (op.message) this.#written += 1;
-      } catch (error) {
-        if (op.message) this.#drop(String(error));
-        this.#fail(error);
-      }
+  /** One piece of the background work: a deferred task, else the next record for the writer. */
+  async #step(): Promise<boolean> {
+    const task = this.#tasks.shift();
+    if (task !== undefined) {
+      this.#runTask(task);
+      return true;
     }
-    this.#pump = undefined;
+    const op = this.#queue.shift();
+    if (op === undefined) return false;
+    this.#queuedBytes -= op.bytes;
+    if (this.#failure !== undefined) {
+      if (op.message) this.#drop(this.#failure);
+      return true;
+    }
+    try {
+      await op.run(this.#writer);
+      if (op.message) this.#written += 1;
+    } catch (error) {
+      if (op.message) this.#drop(String(error));
+      this.#fail(error);
+    }
+    return true;
+  }
+
+  #runTask(task: () => void | PromiseLike<void>): void {
+    let result: void | PromiseLike<void>;
+    try {
+      result = task();
+    } catch {
+      return;
+    }
+    if (result === undefined) return;
+    const waiting = Promise.resolve(result).then(
+      () => undefined,
+      () => undefined,
+    );
+    this.#waitingTasks.add(waiting);
+    void waiting.finally(() => this.#waitingTasks.delete(waiting));
   }
 
   #fail(error: unknown): void {
