@@ -31,6 +31,45 @@ const calls = (recording: Recording): HalCallRecord[] =>
   recording.messages.filter((m) => m.topic === TOPICS.calls).map((m) => m.value as HalCallRecord);
 
 describe('recordHal', () => {
+  it('is the HAL it wraps to its users: instanceof, getters, a replaced method, an assignment', async () => {
+    const sim = new SimulationHAL({ deviceId: 'sim-front' });
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink);
+    const hal = recordHal(sim, recorder, { posePeriodMs: 0 });
+    expect(hal).toBeInstanceOf(SimulationHAL);
+    expect(hal.mode).toBe('simulation');
+    expect('locomotion' in hal).toBe(true);
+    await hal.initialize();
+    expect(hal.isReady()).toBe(true);
+    expect(await hal.communication.setLED(1, 2, 3, 'solid')).toMatchObject({ success: true });
+    // a method replaced on the HAL after it was first called through the recording
+    const replaced: string[] = [];
+    sim.communication.log = (message: string) => {
+      replaced.push(message);
+    };
+    hal.communication.log('through the replacement');
+    expect(replaced).toEqual(['through the replacement']);
+    // an assignment through the recording reaches the HAL itself
+    const assigned = (message: string): void => {
+      replaced.push(`assigned: ${message}`);
+    };
+    hal.communication.log = assigned;
+    expect(sim.communication.log).toBe(assigned);
+    hal.communication.log('again');
+    expect(replaced).toEqual(['through the replacement', 'assigned: again']);
+    await hal.cleanup();
+    await recorder.close();
+    const recording = await readRecording(sink.bytes());
+    expect(calls(recording).map((c) => c.call)).toEqual([
+      'initialize',
+      'isReady',
+      'communication.setLED',
+      'communication.log',
+      'communication.log',
+      'cleanup',
+    ]);
+  });
+
   it('records every call with its arguments, result, code and timing, and the pose after each motion', async () => {
     const recording = await recorded(async (hal) => {
       await hal.initialize();

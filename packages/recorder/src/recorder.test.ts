@@ -137,6 +137,37 @@ describe('McapRecorder', () => {
     );
   });
 
+  it('writes nothing while a recorded call is on its way, and writes once it has answered', async () => {
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink);
+    recorder.channel(TOPICS.calls, CALL_RECORD);
+    await recorder.drained();
+    const before = sink.position();
+    const answered = recorder.callStarted();
+    recorder.write(TOPICS.calls, call(1));
+    recorder.defer(() => recorder.write(TOPICS.calls, call(2)));
+    await new Promise((resolve) => setTimeout(resolve, 60));
+    expect(recorder.stats().written).toBe(0);
+    expect(sink.position()).toBe(before);
+    answered();
+    await expect.poll(() => recorder.stats().written, { timeout: 2000, interval: 5 }).toBe(2);
+    await recorder.close();
+    const recording = await readRecording(sink.bytes());
+    expect(recording.messages.filter((m) => m.topic === TOPICS.calls).map((m) => m.value)).toEqual([
+      call(1),
+      call(2),
+    ]);
+  });
+
+  it('refuses a maxHoldMs that is not a finite number of ms >= 0 with INVALID_PARAMETER', async () => {
+    for (const maxHoldMs of [-1, Number.NaN, Number.POSITIVE_INFINITY]) {
+      await expect(McapRecorder.create(memorySink(), { maxHoldMs })).rejects.toMatchObject({
+        code: 'INVALID_PARAMETER',
+        message: expect.stringContaining('maxHoldMs'),
+      });
+    }
+  });
+
   it('drops, and counts, a message on a topic never declared and one that cannot be encoded', async () => {
     const recorder = await McapRecorder.create(memorySink());
     recorder.write('/nowhere', { a: 1 });
