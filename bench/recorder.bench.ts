@@ -2,7 +2,8 @@
 // UDP to the emulator) through recordHal, against the same HAL unrecorded, in one run,
 // interleaved: p50 and p99 of each and their ratio (goal: within 5 %). Three kinds of loop:
 //  - bursts: blocks of 200 calls sent back to back, with a pause after each block, in which the
-//    recording's work runs (the pause is not timed, for either side);
+//    recording's work runs and the block's garbage is collected (the pause is not timed, and is
+//    the same for both sides, so a collection lands in neither side's timing);
 //  - paced: one call every 2 ms (a 500 Hz control loop), the work running between the calls;
 //  - sustained: 10,000 calls back to back a side, twice over, far longer than the recorder's
 //    hold (250 ms), so the work has to run between the calls.
@@ -12,6 +13,8 @@
 import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { setFlagsFromString } from 'node:v8';
+import { runInNewContext } from 'node:vm';
 import { PhysicalHAL } from '@hal/physical';
 import { McapRecorder, recordHal } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
@@ -26,6 +29,9 @@ const PACED_BLOCK = 100;
 const PACE_MS = 2;
 const SUSTAINED_STRETCH = 10_000;
 const SUSTAINED_STRETCHES = 2;
+
+setFlagsFromString('--expose-gc');
+const gc = runInNewContext('gc') as () => void;
 
 const fmt = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
 const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
@@ -93,16 +99,18 @@ try {
   await recorder.drained();
 
   // Bursts. The recording's work waits while calls come back to back (up to its 250 ms hold);
-  // each block's is done before the next block, so it lands in neither side's timing.
+  // each block's is done, and each block's garbage collected, before the next block.
   const bursts: Sides = { on: [], off: [] };
   let recordedMs = 0;
   const writtenBefore = recorder.stats().written;
   for (let done = 0; done < ROUNDS; done += BLOCK) {
     await calls(hal, BLOCK, bursts.off);
+    gc();
     const started = performance.now();
     await calls(recorded, BLOCK, bursts.on);
     recordedMs += performance.now() - started;
     await recorder.drained();
+    gc();
   }
   const written = recorder.stats().written - writtenBefore;
 
@@ -122,15 +130,16 @@ try {
     await recorder.drained();
   }
 
+  // cleaned up through the recording, which stops its link sampling, before the file is closed
+  await recorded.cleanup();
   const stats = await recorder.close();
-  await hal.cleanup();
 
   console.log('recorder: UDP round trip (setLED), recorded against the same HAL unrecorded');
   report(
     'bursts',
     bursts,
     true,
-    `${ROUNDS} calls a side, interleaved blocks of ${BLOCK} back to back, the recording's work done in the pause after each block (not timed)`,
+    `${ROUNDS} calls a side, interleaved blocks of ${BLOCK} back to back, the recording's work done, and each block's garbage collected, in the pause after each block (not timed)`,
   );
   report(
     'paced',

@@ -74,6 +74,26 @@ describe('BackgroundWork', () => {
     background.stop();
   });
 
+  it('holds work again after a pause: the hold counts from the work held back, not an earlier burst', async () => {
+    const { background, add, done } = work({ maxHoldMs: 100 });
+    const first = background.callStarted();
+    add(1);
+    await sleep(30);
+    first();
+    // the work runs before a tick has seen the call answered
+    await background.flush();
+    expect(done).toEqual([1]);
+    // a pause longer than the hold, then a new burst: its work waits again
+    await sleep(120);
+    const second = background.callStarted();
+    add(2);
+    await sleep(40);
+    expect(done).toEqual([1]);
+    second();
+    await expect.poll(() => done, { timeout: 2000, interval: 5 }).toEqual([1, 2]);
+    background.stop();
+  });
+
   it('counts each call once, however often its end is marked', async () => {
     const { background, add, done } = work();
     const first = background.callStarted();

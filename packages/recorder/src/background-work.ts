@@ -40,8 +40,8 @@ export class BackgroundWork {
   #running: Promise<void> | undefined;
   #ticker: ReturnType<typeof setInterval> | undefined;
   #idleTicks = 0;
-  /** When a tick first found a call on its way, since the last that found none. */
-  #busySince: number | undefined;
+  /** When a tick first found work held back by a call on its way (reset by one finding none). */
+  #heldSince: number | undefined;
   /** Work has waited `maxHoldMs`: it runs every turn until a tick finds no call on its way. */
   #catchingUp = false;
   #flushing = 0;
@@ -92,20 +92,26 @@ export class BackgroundWork {
   }
 
   #tick(): void {
-    if (!this.#options.hasWork()) {
+    const waiting = this.#options.hasWork();
+    if (this.#inFlight === 0) {
+      this.#heldSince = undefined;
+      this.#catchingUp = false;
+    } else if (!waiting) {
+      // the hold counts from work held back, not from an earlier burst's
+      this.#heldSince = undefined;
+    }
+    if (!waiting) {
       if (++this.#idleTicks >= IDLE_TICKS_BEFORE_STOP) this.stop();
       return;
     }
     this.#idleTicks = 0;
-    if (this.#inFlight === 0) {
-      this.#busySince = undefined;
-      this.#catchingUp = false;
+    if (this.#inFlight === 0 || this.#catchingUp) {
       this.#start(true);
       return;
     }
     const now = performance.now();
-    this.#busySince ??= now;
-    if (now - this.#busySince >= this.#options.maxHoldMs) {
+    this.#heldSince ??= now;
+    if (now - this.#heldSince >= this.#options.maxHoldMs) {
       this.#catchingUp = true;
       this.#start(true);
     }

@@ -321,7 +321,12 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     } catch {
       poseAfter = undefined;
     }
-    const latched = safe(() => hal.safety.isEmergencyStopped(), lastLatched);
+    let latched = lastLatched;
+    try {
+      latched = hal.safety.isEmergencyStopped();
+    } catch {
+      // a HAL whose latch cannot be read now: taken as unchanged
+    }
     // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
     // a change any other call finds is a trip (rare, so written at once)
     if (info.subsystem === 'safety') lastLatched = latched;
