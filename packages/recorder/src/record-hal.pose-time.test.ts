@@ -7,9 +7,9 @@ import { recordHal } from './record-hal.js';
 import { McapRecorder } from './recorder.js';
 
 describe('recordHal', () => {
-  it('logs the pose a call left at the time it was read, not when its record is made later', async () => {
+  it('logs a call, and the pose it left, at the time it answered, not when its record is made later', async () => {
     // The file's clock is set by hand: it jumps far ahead right after the call has answered,
-    // before the record (made a turn of the event loop later) is written.
+    // before the record (made later, with no call on its way) is written.
     let now = 1_000n;
     const later = 1_000_000_000n;
     const sink = memorySink();
@@ -30,11 +30,14 @@ describe('recordHal', () => {
     );
     expect(moved).toBeDefined();
     expect(moved?.logTime).toBeLessThan(later);
-    // its call record is still made (and timed) after it
+    // and so is its call record, though made after the jump
     const call = recording.messages.find(
       (m) =>
         m.topic === TOPICS.calls && (m.value as { call: string }).call === 'locomotion.moveForward',
     );
-    expect(call?.logTime).toBeGreaterThanOrEqual(later);
+    expect(call?.logTime).toBe(moved?.logTime);
+    expect(BigInt((call?.value as { start_ns: string }).start_ns)).toBeLessThanOrEqual(
+      call!.logTime,
+    );
   });
 });

@@ -12,11 +12,12 @@ import {
 import {
   errorOf,
   failureOf,
-  isPromiseLike,
   isToolResult,
   period,
   withoutTrailingUndefined,
 } from './call-values.js';
+import { interceptCalls } from './call-interceptor.js';
+import type { CallHooks, InterceptedCall } from './call-interceptor.js';
 import { jsonSafe } from './json-safe.js';
 import { linkTelemetry, sameSteps } from './link-telemetry.js';
 import { CALL_RECORD, HAL_POSE, LINK_STATS, SAFETY_EVENT, WHEEL_STEPS } from './messages.js';
@@ -56,14 +57,22 @@ export interface RecordHalOptions {
 export const RECORDER_VERSION = '0.1.0';
 
 const SUBSYSTEMS = ['locomotion', 'vision', 'manipulation', 'communication', 'safety'] as const;
+/** What is read of a call the moment it answers, for its record made later. */
+interface Answer {
+  /** The file's clock as the call started and as it answered ({@link McapRecorder.stamp}). */
+  start: number | bigint;
+  end: number | bigint;
+  durationMs: number;
+  outcome: HalCallRecord['outcome'];
+  value: unknown;
+  /** The pose the call left, asked for as it answered (after an action that can move). */
+  poseAfter?: Promise<Pose>;
+  /** The e-stop latch as it answered. */
+  latched: boolean;
+}
+
 /** The subsystems whose action calls can move the robot: the pose is read after each of them. */
 const MOVING_SUBSYSTEMS: ReadonlySet<string> = new Set(['locomotion', 'manipulation', 'safety']);
-
-interface CallInfo {
-  subsystem: string | undefined;
-  method: string;
-  args: unknown[];
-}
 
 /**
  * Wraps `hal` so that everything passing through it is recorded into `recorder`, and otherwise
@@ -76,9 +85,10 @@ interface CallInfo {
  * (`/hal/camera`), log lines (`/hal/log`), e-stops, resets and trips (`/hal/safety`), for a
  * physical robot its reported step counters (`/hal/steps`) and link statistics (`/hal/link`),
  * and the robot's metadata (`hal.robot`) once it is ready. With `namespace`, all of it goes under
- * `/<namespace>` (several robots in one file). A call answers its caller first: only the
- * latch and (after an action that can move) the pose are read at once; the record is made a turn
- * later and queued, never waiting for the disk.
+ * `/<namespace>` (several robots in one file). A call answers its caller first: only its times,
+ * the latch and (after an action that can move) the pose are read at once; the record is made
+ * later, in a moment with no call on its way, logged at the time the call answered, and queued,
+ * never waiting for the disk.
  */
 export function recordHal<T extends HardwareAbstractionLayer>(
   hal: T,
@@ -233,7 +243,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   options.signal?.addEventListener('abort', stopSampling, { once: true });
 
   function afterCall(
-    info: CallInfo,
+    info: InterceptedCall,
     value: unknown,
     ok: boolean,
     code: string | undefined,
@@ -298,54 +308,52 @@ export function recordHal<T extends HardwareAbstractionLayer>(
    * to a moment with no call on its way), so this is all a call pays on its path.
    */
   function record(
-    info: CallInfo,
+    info: InterceptedCall,
     start: number | bigint,
     startMs: number,
     outcome: HalCallRecord['outcome'],
     value: unknown,
   ): void {
-    const durationMs = Math.max(0, performance.now() - startMs);
+    const endMs = performance.now();
+    // the file's time it answered: the record, and what it writes beside, are logged at it
+    const end = typeof start === 'number' ? endMs : recorder.clock();
+    const answer: Answer = {
+      start,
+      end,
+      durationMs: Math.max(0, endMs - startMs),
+      outcome,
+      value,
+      latched: lastLatched,
+    };
     // The pose this call left is asked for now, before the caller can start another motion.
-    let poseAfter: Promise<Pose> | undefined;
-    let poseAskedAt = 0n;
     try {
       // after a motion, and where the robot stands once ready (the start of the run, for replay)
       const moved = MOVING_SUBSYSTEMS.has(info.subsystem ?? '') && isToolResult(value);
       const ready =
         info.subsystem === undefined && info.method === 'initialize' && outcome === 'resolved';
       if ((moved || ready) && hal.isReady()) {
-        poseAskedAt = recorder.clock();
-        poseAfter = hal.locomotion.getPose();
+        const poseAfter = hal.locomotion.getPose();
         poseAfter.catch(() => undefined);
+        answer.poseAfter = poseAfter;
       }
     } catch {
-      poseAfter = undefined;
+      // a HAL whose getPose throws at once: no pose after this call
     }
-    let latched = lastLatched;
     try {
-      latched = hal.safety.isEmergencyStopped();
+      answer.latched = hal.safety.isEmergencyStopped();
     } catch {
       // a HAL whose latch cannot be read now: taken as unchanged
     }
     // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
     // a change any other call finds is a trip (rare, so written at once)
-    if (info.subsystem === 'safety') lastLatched = latched;
-    else watchLatch(latched);
-    recorder.defer(() =>
-      recordNow(info, start, durationMs, outcome, value, poseAfter, poseAskedAt, latched),
-    );
+    if (info.subsystem === 'safety') lastLatched = answer.latched;
+    else watchLatch(answer.latched);
+    recorder.defer(() => recordNow(info, answer));
   }
 
-  function recordNow(
-    info: CallInfo,
-    start: number | bigint,
-    durationMs: number,
-    outcome: HalCallRecord['outcome'],
-    value: unknown,
-    poseAfter: Promise<Pose> | undefined,
-    poseAskedAt: bigint,
-    latchedAfter: boolean,
-  ): Promise<void> | undefined {
+  function recordNow(info: InterceptedCall, answer: Answer): Promise<void> | undefined {
+    const { outcome, value, poseAfter } = answer;
+    const at = recorder.timeOf(answer.end);
     try {
       const failed = outcome === 'rejected' || outcome === 'threw';
       const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
@@ -355,21 +363,22 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         outcome,
         ...status,
         ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),
-        start_ns: recorder.timeOf(start).toString(),
-        duration_ms: durationMs,
+        start_ns: recorder.timeOf(answer.start).toString(),
+        duration_ms: answer.durationMs,
       };
       const finish = (poseAfter?: Pose): void => {
         recorder.write(
           topics.calls,
           poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
+          at,
         );
-        afterCall(info, value, status.success, status.code, recorder.clock(), latchedAfter);
+        afterCall(info, value, status.success, status.code, at, answer.latched);
       };
       if (poseAfter !== undefined) {
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
         return poseAfter.then(
           (pose) => {
-            writePose(pose, poseAskedAt);
+            writePose(pose, at);
             finish(pose);
           },
           () => finish(),
@@ -384,104 +393,35 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     return undefined;
   }
 
-  function wrapMethod(
-    fn: (...args: unknown[]) => unknown,
-    owner: object,
-    subsystem: string | undefined,
-    method: string,
-  ) {
-    return function recorded(...args: unknown[]): unknown {
-      const info: CallInfo = { subsystem, method, args };
+  /** What a call's start leaves for its record. */
+  interface Started {
+    start: number | bigint;
+    startMs: number;
+    answered: () => void;
+  }
+  const hooks: CallHooks<Started> = {
+    started(call) {
       const start = recorder.stamp();
       const startMs = typeof start === 'number' ? start : performance.now();
       // the link's last figures and steps, read while the link is still open
-      if (subsystem === undefined && method === 'cleanup' && safe(() => hal.isReady(), false)) {
+      if (
+        call.subsystem === undefined &&
+        call.method === 'cleanup' &&
+        safe(() => hal.isReady(), false)
+      ) {
         writeSteps();
         writeLink();
       }
       // the recording's work waits while the call is on its way, so its reply never waits for it
-      const answered = recorder.callStarted();
-      let out: unknown;
-      try {
-        out = fn.apply(owner, args);
-      } catch (error) {
-        record(info, start, startMs, 'threw', error);
-        answered();
-        throw error;
-      }
-      if (!isPromiseLike(out)) {
-        record(info, start, startMs, 'returned', out);
-        answered();
-        return out;
-      }
-      return Promise.resolve(out).then(
-        (value) => {
-          record(info, start, startMs, 'resolved', value);
-          answered();
-          return value;
-        },
-        (error: unknown) => {
-          record(info, start, startMs, 'rejected', error);
-          answered();
-          throw error;
-        },
-      );
-    };
-  }
-
-  /**
-   * The recorded object: a plain object in front of a Proxy of the real one. The first read of
-   * a method (or, on the HAL, a subsystem) goes through the Proxy, which puts an accessor for it
-   * on the front object; every later read is that accessor, which the JIT inlines, where a Proxy
-   * trap on every call cost a paced loop's call microseconds. The accessor wraps the real
-   * object's current function (a replaced method is recorded as replaced); a write goes to the
-   * real object. Everything else (fields, getters, `in`, `instanceof`) reads through the Proxy
-   * to the real object, with the real object as receiver: getters and #private fields need it.
-   */
-  function wrapObject<O extends object>(target: O, subsystem: string | undefined): O {
-    const front: Record<PropertyKey, unknown> = {};
-    const keep = (prop: string, wrap: (value: unknown) => unknown): unknown => {
-      let seen: unknown;
-      let wrapper: unknown;
-      const current = (): unknown => {
-        const value: unknown = Reflect.get(target, prop, target);
-        if (value !== seen) {
-          seen = value;
-          wrapper = wrap(value);
-        }
-        return wrapper;
-      };
-      Object.defineProperty(front, prop, {
-        configurable: true,
-        get: current,
-        set: (value: unknown) => Reflect.set(target, prop, value, target),
-      });
-      return current();
-    };
-    const proxy = new Proxy(target, {
-      get(obj, prop) {
-        const value: unknown = Reflect.get(obj, prop, obj);
-        if (typeof prop !== 'string' || prop === 'constructor') return value;
-        if (subsystem === undefined && (SUBSYSTEMS as readonly string[]).includes(prop)) {
-          if (typeof value !== 'object' || value === null) return value;
-          return keep(prop, (sub) =>
-            typeof sub === 'object' && sub !== null ? wrapObject(sub, prop) : sub,
-          );
-        }
-        if (typeof value !== 'function') return value;
-        return keep(prop, (fn) =>
-          typeof fn === 'function'
-            ? wrapMethod(fn as (...args: unknown[]) => unknown, obj, subsystem, prop)
-            : fn,
-        );
-      },
-      set: (obj, prop, value: unknown) => Reflect.set(obj, prop, value, obj),
-    });
-    Object.setPrototypeOf(front, proxy);
-    return front as O;
-  }
+      return { start, startMs, answered: recorder.callStarted() };
+    },
+    answered(call, started, outcome, value) {
+      record(call, started.start, started.startMs, outcome, value);
+      started.answered();
+    },
+  };
 
   // a HAL handed over already initialised (as the `hal` command opens its targets)
   if (safe(() => hal.isReady(), false)) onReady();
-  return wrapObject(hal, undefined);
+  return interceptCalls(hal, SUBSYSTEMS, hooks);
 }
