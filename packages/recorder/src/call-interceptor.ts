@@ -21,87 +21,93 @@ export interface CallHooks<S> {
 
 /**
  * `target` with every method, and every method of the subsystems named, seen by `hooks`; it
- * otherwise behaves exactly as `target`: the same results, the same errors, synchronous calls
- * still synchronous. Methods are found as they are read, not listed, so a method added to the
- * object is seen with no change here.
+ * otherwise behaves as `target`: the same results, the same errors, synchronous calls still
+ * synchronous. Methods are found as they are read, not listed, so a method added to the object
+ * is seen with no change here.
  *
  * The object handed back is a plain object in front of a Proxy of the real one. The first read
- * of a method (or a subsystem) goes through the Proxy, which puts an accessor for it on the
- * front object; every later read is that accessor, which the JIT inlines, where a Proxy trap on
- * every call cost a paced loop's call microseconds. The accessor wraps the real object's current
- * function (a method replaced on the real object is seen as replaced); a write goes to the real
- * object. Everything else (fields, getters, `in`, `instanceof`) reads through the Proxy to the
- * real object, with the real object as receiver: getters and #private fields need it.
+ * of a method (or a subsystem) goes through the Proxy, which puts the wrapped one on the front
+ * object as a read-only property, so every later read is a plain property read: a Proxy trap,
+ * or an accessor, on every call cost a paced loop's call microseconds. A wrapped method calls
+ * the real object's current function of its name, and a wrapped subsystem reads through to the
+ * object's current subsystem, so a method or subsystem replaced on the real object is seen as
+ * replaced. Assigning a method or a subsystem through the wrapper is a TypeError (replace it on
+ * the real object); everything else (fields, getters, `in`, `instanceof`, other assignments)
+ * goes through the Proxy to the real object, with it as receiver: getters and #private fields
+ * need it.
  */
 export function interceptCalls<O extends object, S>(
   target: O,
   subsystems: readonly string[],
   hooks: CallHooks<S>,
 ): O {
-  return front(target, undefined, subsystems, hooks);
+  return front(target, () => target, undefined, subsystems, hooks);
 }
 
 function front<O extends object, S>(
   target: O,
+  current: () => object,
   subsystem: string | undefined,
   subsystems: readonly string[],
   hooks: CallHooks<S>,
 ): O {
   const out: Record<PropertyKey, unknown> = {};
-  const keep = (prop: string, wrap: (value: unknown) => unknown): unknown => {
-    let seen: unknown;
-    let wrapper: unknown;
-    const current = (): unknown => {
-      const value: unknown = Reflect.get(target, prop, target);
-      if (value !== seen) {
-        seen = value;
-        wrapper = wrap(value);
-      }
-      return wrapper;
-    };
-    Object.defineProperty(out, prop, {
-      configurable: true,
-      get: current,
-      set: (value: unknown) => Reflect.set(target, prop, value, target),
-    });
-    return current();
+  const keep = <V>(prop: string, value: V): V => {
+    Object.defineProperty(out, prop, { value, writable: false, configurable: true });
+    return value;
   };
+  const isSubsystem = (prop: PropertyKey): prop is string =>
+    subsystem === undefined && typeof prop === 'string' && subsystems.includes(prop);
   const proxy = new Proxy(target, {
-    get(obj, prop) {
+    get(_target, prop) {
+      const obj = current();
       const value: unknown = Reflect.get(obj, prop, obj);
       if (typeof prop !== 'string' || prop === 'constructor') return value;
-      if (subsystem === undefined && subsystems.includes(prop)) {
+      if (isSubsystem(prop)) {
         if (typeof value !== 'object' || value === null) return value;
-        return keep(prop, (sub) =>
-          typeof sub === 'object' && sub !== null ? front(sub, prop, subsystems, hooks) : sub,
-        );
+        const sub = (): object => {
+          const now: unknown = (current() as Record<string, unknown>)[prop];
+          return typeof now === 'object' && now !== null ? now : value;
+        };
+        return keep(prop, front(value, sub, prop, subsystems, hooks));
       }
       if (typeof value !== 'function') return value;
-      return keep(prop, (fn) =>
-        typeof fn === 'function'
-          ? method(fn as (...args: unknown[]) => unknown, obj, subsystem, prop, hooks)
-          : fn,
-      );
+      return keep(prop, method(current, subsystem, prop, hooks));
     },
-    set: (obj, prop, value: unknown) => Reflect.set(obj, prop, value, obj),
+    set(_target, prop, value: unknown) {
+      const obj = current();
+      if (
+        isSubsystem(prop) ||
+        typeof value === 'function' ||
+        typeof Reflect.get(obj, prop, obj) === 'function'
+      ) {
+        throw new TypeError(
+          `cannot assign ${String(prop)} through a recorded HAL: assign it on the HAL itself`,
+        );
+      }
+      return Reflect.set(obj, prop, value, obj);
+    },
   });
   Object.setPrototypeOf(out, proxy);
   return out as O;
 }
 
 function method<S>(
-  fn: (...args: unknown[]) => unknown,
-  owner: object,
+  owner: () => object,
   subsystem: string | undefined,
   name: string,
   hooks: CallHooks<S>,
 ) {
+  const label = subsystem === undefined ? name : `${subsystem}.${name}`;
   return function intercepted(...args: unknown[]): unknown {
+    const self = owner();
+    const fn: unknown = (self as Record<string, unknown>)[name];
+    if (typeof fn !== 'function') throw new TypeError(`${label} is not a function`);
     const call: InterceptedCall = { subsystem, method: name, args };
     const started = hooks.started(call);
     let out: unknown;
     try {
-      out = fn.apply(owner, args);
+      out = (fn as (...a: unknown[]) => unknown).apply(self, args);
     } catch (error) {
       hooks.answered(call, started, 'threw', error);
       throw error;
