@@ -1,6 +1,7 @@
 // The flight recorder's cost on the robot's path: a PhysicalHAL command round trip (setLED over
 // UDP to the emulator) through recordHal, against the same HAL unrecorded, in one run,
-// interleaved: p50 and p99 of each and their ratio (goal: within 5 %). Three kinds of loop:
+// interleaved (in alternating order): p50 and p99 of each and their ratio (goal: within 5 %).
+// Three kinds of loop:
 //  - bursts: blocks of 200 calls sent back to back, with a pause after each block, in which the
 //    recording's work runs and the block's garbage is collected (the pause is not timed, and is
 //    the same for both sides, so a collection lands in neither side's timing);
@@ -98,37 +99,48 @@ try {
   await calls(recorded, WARMUP, []);
   await recorder.drained();
 
+  /**
+   * Runs `rounds` blocks of each side, unrecorded then recorded in even rounds and the other way
+   * in odd ones (so neither side always follows the other), the recording's work done after
+   * each recorded block and `pause` run after every block, neither of them timed.
+   */
+  async function interleaved(
+    into: Sides,
+    rounds: number,
+    block: number,
+    paceMs: number,
+    pause: () => void = () => undefined,
+  ): Promise<number> {
+    let recordedMs = 0;
+    for (let round = 0; round < rounds; round++) {
+      const sides = round % 2 === 0 ? (['off', 'on'] as const) : (['on', 'off'] as const);
+      for (const side of sides) {
+        const started = performance.now();
+        await calls(side === 'on' ? recorded : hal, block, into[side], paceMs);
+        if (side === 'on') {
+          recordedMs += performance.now() - started;
+          await recorder.drained();
+        }
+        pause();
+      }
+    }
+    return recordedMs;
+  }
+
   // Bursts. The recording's work waits while calls come back to back (up to its 250 ms hold);
   // each block's is done, and each block's garbage collected, before the next block.
   const bursts: Sides = { on: [], off: [] };
-  let recordedMs = 0;
   const writtenBefore = recorder.stats().written;
-  for (let done = 0; done < ROUNDS; done += BLOCK) {
-    await calls(hal, BLOCK, bursts.off);
-    gc();
-    const started = performance.now();
-    await calls(recorded, BLOCK, bursts.on);
-    recordedMs += performance.now() - started;
-    await recorder.drained();
-    gc();
-  }
+  const recordedMs = await interleaved(bursts, ROUNDS / BLOCK, BLOCK, 0, gc);
   const written = recorder.stats().written - writtenBefore;
 
   // Paced: the work runs in the 2 ms between two calls.
   const paced: Sides = { on: [], off: [] };
-  for (let done = 0; done < PACED_ROUNDS; done += PACED_BLOCK) {
-    await calls(hal, PACED_BLOCK, paced.off, PACE_MS);
-    await calls(recorded, PACED_BLOCK, paced.on, PACE_MS);
-    await recorder.drained();
-  }
+  await interleaved(paced, PACED_ROUNDS / PACED_BLOCK, PACED_BLOCK, PACE_MS);
 
   // Sustained: no pause for longer than the hold, so the work runs between the calls.
   const sustained: Sides = { on: [], off: [] };
-  for (let stretch = 0; stretch < SUSTAINED_STRETCHES; stretch++) {
-    await calls(hal, SUSTAINED_STRETCH, sustained.off);
-    await calls(recorded, SUSTAINED_STRETCH, sustained.on);
-    await recorder.drained();
-  }
+  await interleaved(sustained, SUSTAINED_STRETCHES, SUSTAINED_STRETCH, 0);
 
   // cleaned up through the recording, which stops its link sampling, before the file is closed
   await recorded.cleanup();
