@@ -50,6 +50,21 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     }
   };
 
+  /**
+   * Waits for `holds` to be true in the page (up to 15 s: a loaded machine slows every hop from
+   * the page to the emulated robot); a timeout says what the card and the log showed.
+   */
+  const eventually = async (what: string, holds: () => boolean) => {
+    try {
+      await page.waitForFunction(holds, undefined, { timeout: 15_000 });
+    } catch (error) {
+      const log = await page.locator('#log').innerText();
+      throw new Error(`${what} never came: ${JSON.stringify(await remoteState())}; log:\n${log}`, {
+        cause: error,
+      });
+    }
+  };
+
   it('connects with URL and token, moves the emulated robot and its twin, and shows the divergence', async () => {
     const token = 'browser-demo-token-123';
     const emulator = await startEmulator({ pty: false, hostTimeoutMs: 10_000 });
@@ -86,10 +101,9 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
       undefined,
       { timeout: 30_000 },
     );
-    await page.waitForFunction(
+    await eventually(
+      'the moved pose',
       () => ((window as unknown as Hooked).simDemo?.remote().pose?.x ?? 0) > 0.09,
-      undefined,
-      { timeout: 5_000 },
     );
     const state = await remoteState();
     expect(state?.lastResult).toEqual({ call: 'forward', success: true });
@@ -101,10 +115,9 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
 
     // The e-stop button latches the remote robot; the badge says so.
     await page.locator('[data-remote="estop"]').click();
-    await page.waitForFunction(
+    await eventually(
+      'the E-STOP badge',
       () => document.getElementById('remote-badge')?.textContent === 'E-STOP',
-      undefined,
-      { timeout: 5_000 },
     );
     // The only console error is the browser's own report of the refused wrong token.
     expect(demo.problems.filter((p) => !p.includes('not-the-right-token'))).toEqual([]);
