@@ -1,3 +1,5 @@
+import { connect, createServer } from 'node:net';
+import type { AddressInfo } from 'node:net';
 import { afterEach, describe, expect, it } from 'vitest';
 import { ReferenceHAL } from '../testing/reference-hal.fixture.js';
 import { scoped } from '../vocabulary/logger.js';
@@ -110,5 +112,43 @@ describe('ControllerWatch', () => {
     watches.push(watch);
     watch.watch('agent-1');
     await expect.poll(() => silent, { timeout: 2000 }).toEqual(['agent-1']);
+  });
+
+  it('reads what waited while this process was held up before calling a client silent', async () => {
+    const hal = new ReferenceHAL();
+    await hal.initialize();
+    const silent: string[] = [];
+    const watch = new ControllerWatch(hal, {
+      timeoutMs: 100,
+      log: scoped({ log: () => undefined }, 'test'),
+      onSilent: (client) => silent.push(client),
+    });
+    watches.push(watch);
+    // a real socket: the client's message waits in the kernel while this process is busy
+    const server = createServer((socket) => socket.on('data', () => watch.heard('agent-1')));
+    await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+    const { port } = server.address() as AddressInfo;
+    const client = connect(port, '127.0.0.1');
+    await new Promise<void>((resolve) => client.once('connect', resolve));
+    try {
+      watch.watch('agent-1');
+      const busyUntil = performance.now() + 300;
+      let sent = false;
+      while (performance.now() < busyUntil) {
+        // the client speaks 250 ms into the stall, within the timeout of its last message
+        if (!sent && performance.now() > busyUntil - 50) {
+          client.write('heartbeat');
+          sent = true;
+        }
+      }
+      // the timer is due (300 ms since watch) before the message is read
+      await new Promise((resolve) => setTimeout(resolve, 30));
+      expect(silent).toEqual([]);
+      // and a client that really says nothing is still called silent
+      await expect.poll(() => silent, { timeout: 2000 }).toEqual(['agent-1']);
+    } finally {
+      client.destroy();
+      await new Promise((resolve) => server.close(resolve));
+    }
   });
 });

@@ -15,6 +15,10 @@ export interface ControllerWatchOptions {
   now?: () => number;
 }
 
+/** A later turn of the event loop, after the input already waiting has been read. */
+const afterInput: (run: () => void) => void =
+  typeof setImmediate === 'function' ? (run) => setImmediate(run) : (run) => setTimeout(run, 0);
+
 /**
  * The server side of "a controller that vanishes has its motion stopped within the heartbeat
  * timeout", for every server of a HAL (WebSocket, NATS). The server watches the clients whose
@@ -29,13 +33,14 @@ export class ControllerWatch {
   /** The watched clients and when each was last heard, ms. */
   readonly #lastHeard = new Map<string, number>();
   readonly #timer: ReturnType<typeof setInterval>;
+  #checking = false;
 
   constructor(hal: HardwareAbstractionLayer, options: ControllerWatchOptions) {
     this.#hal = hal;
     this.#options = options;
     this.#now = options.now ?? Date.now;
     const every = Math.max(10, Math.min(250, options.timeoutMs / 5));
-    this.#timer = setInterval(() => this.check(), every);
+    this.#timer = setInterval(() => this.#checkAfterInput(), every);
     (this.#timer as { unref?: () => void }).unref?.();
   }
 
@@ -93,6 +98,23 @@ export class ControllerWatch {
       if (this.#options.onSilent !== undefined) this.#options.onSilent(client, silentMs);
       else void this.stopFor(client, `silent for ${silentMs} ms`);
     }
+  }
+
+  /**
+   * The timer's check. A client can look silent only because this process was held up (a long
+   * task, a starved CPU) with its messages waiting unread, and timers run before input is read:
+   * so a client that looks silent gets its verdict a turn later, once what was waiting is read.
+   */
+  #checkAfterInput(): void {
+    if (this.#checking) return;
+    const now = this.#now();
+    const timeout = this.#options.timeoutMs;
+    if (![...this.#lastHeard.values()].some((heard) => now - heard > timeout)) return;
+    this.#checking = true;
+    afterInput(() => {
+      this.#checking = false;
+      this.check();
+    });
   }
 
   close(): void {
