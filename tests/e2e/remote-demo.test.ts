@@ -69,7 +69,16 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     const token = 'browser-demo-token-123';
     const emulator = await startEmulator({ pty: false, hostTimeoutMs: 10_000 });
     const wsUrl = await startServe(
-      ['--udp', `127.0.0.1:${emulator.udpPort}`, '--device', 'cube-remote'],
+      // the page's heartbeats come from Chromium's timers, which a loaded machine can hold up
+      // past the default 2 s; the silent-controller stop is tested in tests/remote
+      [
+        '--udp',
+        `127.0.0.1:${emulator.udpPort}`,
+        '--device',
+        'cube-remote',
+        '--heartbeat-timeout',
+        '10000',
+      ],
       {
         HAL_SERVE_TOKEN: token,
       },
