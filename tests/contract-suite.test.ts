@@ -1,17 +1,17 @@
-import { spawnSync } from 'node:child_process';
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
+import { runProcess } from './helpers/run-process.js';
 
 const vitestCli = createRequire(import.meta.url).resolve('vitest/vitest.mjs');
 
 /** Runs the contract suite on a fixture HAL in its own vitest; returns the titles that failed. */
-function failedContractTests(name: string): string[] {
+async function failedContractTests(name: string): Promise<string[]> {
   const fixture = fileURLToPath(new URL(`./fixtures/${name}/`, import.meta.url));
-  const run = spawnSync(
+  const run = await runProcess(
     process.execPath,
     [vitestCli, 'run', '--config', `${fixture}vitest.config.ts`, '--reporter', 'json'],
-    { cwd: fixture, encoding: 'utf8', timeout: 50_000 },
+    { cwd: fixture, timeoutMs: 50_000 },
   );
   expect(run.status).toBe(1);
   const report = JSON.parse(run.stdout.slice(run.stdout.indexOf('{'))) as {
@@ -25,8 +25,8 @@ function failedContractTests(name: string): string[] {
 }
 
 describe('the HAL contract suite', () => {
-  it('fails a HAL whose reads bypass the boundary, on exactly the boundary and lifecycle tests', () => {
-    expect(failedContractTests('lenient-hal')).toEqual([
+  it('fails a HAL whose reads bypass the boundary, on exactly the boundary and lifecycle tests', async () => {
+    expect(await failedContractTests('lenient-hal')).toEqual([
       'never throws from log, whatever it is given, and keeps working',
       'refuses every call with NOT_READY after cleanup(), and stays not ready',
       'refuses every call with NOT_READY before initialize(), and the safety reads answer',
@@ -34,8 +34,8 @@ describe('the HAL contract suite', () => {
     ]);
   });
 
-  it('fails a HAL whose rotate("left") turns clockwise, on exactly the direction tests', () => {
-    expect(failedContractTests('mirrored-hal')).toEqual([
+  it('fails a HAL whose rotate("left") turns clockwise, on exactly the direction tests', async () => {
+    expect(await failedContractTests('mirrored-hal')).toEqual([
       'rotate("left", 90) turns counter-clockwise to +pi/2, then forward goes +y',
       'rotate("right", 90) turns clockwise to -pi/2',
     ]);
