@@ -15,6 +15,11 @@ export default defineConfig({
     // (vitest's default on two cores is one worker). On a 2-core machine, in one full run each:
     // 378 s with three workers, 330 s with four, with the cores still 15 % idle.
     maxWorkers: 4,
+    // A timeout is there to catch a hang, not to time a test: the CPU-bound property and
+    // simulation tests take seconds, and several times that on a loaded 2-core machine, past
+    // vitest's default of 5 s.
+    testTimeout: 30_000,
+    hookTimeout: 30_000,
     projects: [
       ...packageNames.map((name) => ({
         extends: true as const,
