@@ -8,7 +8,7 @@ import { runHal } from '@hal/cli';
 import { readRecordingFile } from '@hal/recorder';
 import { afterAll, describe, expect, it } from 'vitest';
 import { captureIO } from '../cli/capture-io.js';
-import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { LONGEST_HOST_TIMEOUT_MS, startEmulator, stopAllEmulators } from '../physical/emulator.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'hal-record-emulator-'));
 afterAll(async () => {
@@ -28,7 +28,14 @@ async function halJson(argv: string[]): Promise<{ code: number; value: Record<st
 
 describe('a run of the emulated cube, recorded and replayed', () => {
   it('records the motions and the e-stop, and replays them on the simulator within 0.2 mm, steps equal', async () => {
-    const emulator = await startEmulator({ pty: false, timeScale: 8, deviceId: 'cube-rec' });
+    // the longest host timeout: at 8x the default 2 s is 250 ms of real time, which a loaded
+    // machine can hold a heartbeat back for, and the robot would stop a motion for it
+    const emulator = await startEmulator({
+      pty: false,
+      timeScale: 8,
+      deviceId: 'cube-rec',
+      hostTimeoutMs: LONGEST_HOST_TIMEOUT_MS,
+    });
     const file = join(dir, 'cube.mcap');
     try {
       const { value: recorded } = await halJson([
