@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { BackgroundWork, nextTurn } from './background-work.js';
+import { nextTurn } from '@hal/types';
+import { BackgroundWork } from './background-work.js';
 
 const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 

@@ -1,6 +1,4 @@
-/** A later turn of the event loop: setImmediate in Node, a zero timeout in a browser. */
-export const nextTurn: (run: () => void) => void =
-  typeof setImmediate === 'function' ? (run) => setImmediate(run) : (run) => setTimeout(run, 0);
+import { nextTurn } from '@hal/types';
 
 /** How a recorder's background work is scheduled. */
 export interface BackgroundWorkOptions {

@@ -164,6 +164,7 @@ export type { PlanarPose } from './vocabulary/planar-pose.js';
 export { TypedEmitter } from './vocabulary/typed-emitter.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
+export { nextTurn } from './vocabulary/next-turn.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
 
 // The server side shared by every server of a HAL (WebSocket, NATS).

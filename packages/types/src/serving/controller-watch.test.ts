@@ -43,6 +43,20 @@ async function rig(timeoutMs: number) {
   return { hal, time, lines, silent, make, stops: () => stops };
 }
 
+/** A watch on the real clock and its own timer, and the clients it called silent. */
+async function timedWatch(timeoutMs: number) {
+  const hal = new ReferenceHAL();
+  await hal.initialize();
+  const silent: string[] = [];
+  const watch = new ControllerWatch(hal, {
+    timeoutMs,
+    log: scoped({ log: () => undefined }, 'test'),
+    onSilent: (client) => silent.push(client),
+  });
+  watches.push(watch);
+  return { watch, silent };
+}
+
 describe('ControllerWatch', () => {
   it('tells of a watched client silent longer than the timeout, once', async () => {
     const { time, make, silent } = await rig(1000);
@@ -101,29 +115,13 @@ describe('ControllerWatch', () => {
   });
 
   it('checks on its own timer, without being asked', async () => {
-    const hal = new ReferenceHAL();
-    await hal.initialize();
-    const silent: string[] = [];
-    const watch = new ControllerWatch(hal, {
-      timeoutMs: 50,
-      log: scoped({ log: () => undefined }, 'test'),
-      onSilent: (client) => silent.push(client),
-    });
-    watches.push(watch);
+    const { watch, silent } = await timedWatch(50);
     watch.watch('agent-1');
     await expect.poll(() => silent, { timeout: 2000 }).toEqual(['agent-1']);
   });
 
   it('reads what waited while this process was held up before calling a client silent', async () => {
-    const hal = new ReferenceHAL();
-    await hal.initialize();
-    const silent: string[] = [];
-    const watch = new ControllerWatch(hal, {
-      timeoutMs: 100,
-      log: scoped({ log: () => undefined }, 'test'),
-      onSilent: (client) => silent.push(client),
-    });
-    watches.push(watch);
+    const { watch, silent } = await timedWatch(100);
     // a real socket: the client's message waits in the kernel while this process is busy
     const server = createServer((socket) => socket.on('data', () => watch.heard('agent-1')));
     await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));

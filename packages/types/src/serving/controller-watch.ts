@@ -1,5 +1,6 @@
 import type { HardwareAbstractionLayer } from '../interfaces.js';
 import type { ScopedLogger } from '../vocabulary/logger.js';
+import { nextTurn } from '../vocabulary/next-turn.js';
 
 export interface ControllerWatchOptions {
   /** A watched client that has sent nothing for longer than this, ms, has gone silent. */
@@ -14,10 +15,6 @@ export interface ControllerWatchOptions {
   /** The clock, ms. Default `Date.now`. */
   now?: () => number;
 }
-
-/** A later turn of the event loop, after the input already waiting has been read. */
-const afterInput: (run: () => void) => void =
-  typeof setImmediate === 'function' ? (run) => setImmediate(run) : (run) => setTimeout(run, 0);
 
 /**
  * The server side of "a controller that vanishes has its motion stopped within the heartbeat
@@ -111,7 +108,7 @@ export class ControllerWatch {
     const timeout = this.#options.timeoutMs;
     if (![...this.#lastHeard.values()].some((heard) => now - heard > timeout)) return;
     this.#checking = true;
-    afterInput(() => {
+    nextTurn(() => {
       this.#checking = false;
       this.check();
     });
