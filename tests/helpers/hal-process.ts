@@ -7,10 +7,13 @@ import type { Readable, Writable } from 'node:stream';
 import { fileURLToPath } from 'node:url';
 import { readEventLines } from '../physical/event-lines.js';
 import type { EventLines } from '../physical/event-lines.js';
+import { runProcess } from './run-process.js';
 
 /** The CLI's entry, run from source. */
 export const HAL_MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', import.meta.url));
 const MAIN = HAL_MAIN;
+/** Node's flags to run the CLI from source. */
+const HAL_FLAGS = ['--conditions=@hal/source', '--import', 'tsx'];
 type Child = ChildProcessByStdio<Writable, Readable, Readable>;
 const running = new Set<Child>();
 process.on('exit', () => {
@@ -18,13 +21,9 @@ process.on('exit', () => {
 });
 
 function spawnHal(args: readonly string[]): Child {
-  const child = spawn(
-    process.execPath,
-    ['--conditions=@hal/source', '--import', 'tsx', MAIN, ...args],
-    {
-      stdio: ['pipe', 'pipe', 'pipe'],
-    },
-  );
+  const child = spawn(process.execPath, [...HAL_FLAGS, MAIN, ...args], {
+    stdio: ['pipe', 'pipe', 'pipe'],
+  });
   running.add(child);
   child.once('exit', () => running.delete(child));
   return child;
@@ -37,20 +36,13 @@ export interface HalRun {
 }
 
 /** Runs `hal args` to its end (killed after `timeoutMs`). */
-export function runHalProcess(args: readonly string[], timeoutMs = 30_000): Promise<HalRun> {
-  const child = spawnHal(args);
-  child.stdin.end();
-  let stdout = '';
-  let stderr = '';
-  child.stdout.on('data', (chunk: Buffer) => (stdout += chunk.toString()));
-  child.stderr.on('data', (chunk: Buffer) => (stderr += chunk.toString()));
-  return new Promise((resolve) => {
-    const timer = setTimeout(() => child.kill('SIGKILL'), timeoutMs);
-    child.once('close', (code) => {
-      clearTimeout(timer);
-      resolve({ code, stdout, stderr });
-    });
-  });
+export async function runHalProcess(args: readonly string[], timeoutMs = 30_000): Promise<HalRun> {
+  const { status, stdout, stderr } = await runProcess(
+    process.execPath,
+    [...HAL_FLAGS, MAIN, ...args],
+    { timeoutMs },
+  );
+  return { code: status, stdout, stderr };
 }
 
 export interface HalProcess<E> extends EventLines<E> {

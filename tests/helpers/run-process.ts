@@ -3,6 +3,12 @@
 // on a loaded machine), vitest's own call to the main process times out in that worker, and the
 // run fails with an unhandled "Timeout calling onTaskUpdate" although every test passed.
 import { spawn } from 'node:child_process';
+import type { ChildProcess } from 'node:child_process';
+
+const running = new Set<ChildProcess>();
+process.on('exit', () => {
+  for (const child of running) child.kill('SIGKILL');
+});
 
 export interface ProcessRun {
   /** The exit code, or null when the child was killed (a timeout, or a signal). */
@@ -18,7 +24,10 @@ export interface RunProcessOptions {
   timeoutMs: number;
 }
 
-/** Runs `command` with `args` to its end (or its timeout) and resolves its status and output. */
+/**
+ * Runs `command` with `args` to its end (or its timeout) and resolves its status and output. A
+ * child still running when this process exits is killed.
+ */
 export function runProcess(
   command: string,
   args: readonly string[],
@@ -30,6 +39,7 @@ export function runProcess(
       env: options.env ?? process.env,
       stdio: ['ignore', 'pipe', 'pipe'],
     });
+    running.add(child);
     let stdout = '';
     let stderr = '';
     child.stdout.setEncoding('utf8').on('data', (chunk: string) => (stdout += chunk));
@@ -37,10 +47,12 @@ export function runProcess(
     const timer = setTimeout(() => child.kill('SIGKILL'), options.timeoutMs);
     child.on('error', (error) => {
       clearTimeout(timer);
+      running.delete(child);
       reject(new Error(`cannot run ${command}: ${error.message}`));
     });
     child.on('close', (status) => {
       clearTimeout(timer);
+      running.delete(child);
       resolve({ status, stdout, stderr });
     });
   });
