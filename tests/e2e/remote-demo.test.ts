@@ -33,30 +33,17 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
   }, 30_000);
 
   const remoteState = () => page.evaluate(() => (window as unknown as Hooked).simDemo?.remote());
-  /** Waits for the card's connection to be `wanted`; a timeout says what the card and log showed. */
-  const connection = async (wanted: RemoteState['connection']) => {
-    try {
-      await page.waitForFunction(
-        (w) => (window as unknown as Hooked).simDemo?.remote().connection === w,
-        wanted,
-        { timeout: 15_000 },
-      );
-    } catch (error) {
-      const log = await page.locator('#log').innerText();
-      throw new Error(
-        `the card never showed "${wanted}": ${JSON.stringify(await remoteState())}; log:\n${log}`,
-        { cause: error },
-      );
-    }
-  };
-
   /**
-   * Waits for `holds` to be true in the page (up to 15 s: a loaded machine slows every hop from
-   * the page to the emulated robot); a timeout says what the card and the log showed.
+   * Waits for `holds(arg)` to be true in the page (up to 15 s: a loaded machine slows every hop
+   * from the page to the emulated robot); a timeout says what the card and the log showed.
    */
-  const eventually = async (what: string, holds: () => boolean) => {
+  const eventually = async (
+    what: string,
+    holds: (arg: string | undefined) => boolean,
+    arg?: string,
+  ) => {
     try {
-      await page.waitForFunction(holds, undefined, { timeout: 15_000 });
+      await page.waitForFunction(holds, arg, { timeout: 15_000 });
     } catch (error) {
       const log = await page.locator('#log').innerText();
       throw new Error(`${what} never came: ${JSON.stringify(await remoteState())}; log:\n${log}`, {
@@ -64,6 +51,13 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
       });
     }
   };
+  /** Waits for the card's connection to be `wanted`. */
+  const connection = (wanted: RemoteState['connection']) =>
+    eventually(
+      `the card's "${wanted}"`,
+      (w) => (window as unknown as Hooked).simDemo?.remote().connection === w,
+      wanted,
+    );
 
   it('connects with URL and token, moves the emulated robot and its twin, and shows the divergence', async () => {
     const token = 'browser-demo-token-123';
