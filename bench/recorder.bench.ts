@@ -23,13 +23,13 @@ import { startEmulator } from '../tests/physical/emulator.js';
 import { percentile, reportFigure } from './report/figures.js';
 
 const ROUNDS = Number(process.env['RECORDER_ROUNDS'] ?? 6000);
-const BLOCK = 200;
+const BLOCK = 500;
 const WARMUP = 2000;
 const PACED_ROUNDS = 2000;
 const PACED_BLOCK = 100;
 const PACE_MS = 2;
 const SUSTAINED_STRETCH = 10_000;
-const SUSTAINED_STRETCHES = 2;
+const SUSTAINED_STRETCHES = 6;
 
 setFlagsFromString('--expose-gc');
 const gc = runInNewContext('gc') as () => void;

@@ -146,3 +146,74 @@ describe('BackgroundWork', () => {
     background.stop();
   });
 });
+
+describe('BackgroundWork while calls come back to back', () => {
+  /** Marks `count` calls of `ms` each, one after another (busy: time passes). */
+  function callsOf(background: BackgroundWork, count: number, ms: number): void {
+    for (let i = 0; i < count; i++) {
+      const answered = background.callStarted();
+      const until = performance.now() + ms;
+      while (performance.now() < until);
+      answered();
+    }
+  }
+
+  it('takes a quarter of a typical call for a window, and one slow call moves it little', () => {
+    let clock = 0;
+    const background = new BackgroundWork({
+      step: () => false,
+      hasWork: () => false,
+      maxHoldMs: 0,
+      sliceMs: 1,
+      tickMs: 5,
+      now: () => clock,
+    });
+    const callOf = (ms: number): void => {
+      const answered = background.callStarted();
+      clock += ms;
+      answered();
+    };
+    // no call yet: a slice
+    expect(background.windowMs()).toBe(1);
+    callOf(2);
+    expect(background.windowMs()).toBe(0.5);
+    // a stall: the average moves by 1/16 of twice the typical call, not of the stall
+    callOf(100);
+    expect(background.windowMs()).toBeCloseTo((2 + (4 - 2) / 16) / 4, 10);
+    // short calls take it down, to 0.02 ms at least; long ones up, to the slice at most
+    for (let i = 0; i < 200; i++) callOf(0.001);
+    expect(background.windowMs()).toBe(0.02);
+    for (let i = 0; i < 200; i++) callOf(50);
+    expect(background.windowMs()).toBe(1);
+  });
+
+  it('gives each call one window of work in the next turn once work has waited maxHoldMs', async () => {
+    const { background, add, done } = work({ maxHoldMs: 0, sliceMs: 1, pieceMs: 0.1 });
+    callsOf(background, 4, 2);
+    const window = background.windowMs();
+    const perWindow = Math.ceil(window / 0.1) + 1;
+    let onItsWay = background.callStarted();
+    add(...Array.from({ length: 200 }, (_, i) => i));
+    // the first tick finds work held past the hold, a call on its way: one window
+    await expect.poll(() => done.length, { timeout: 2000, interval: 1 }).toBeGreaterThan(0);
+    for (let call = 0; call < 5; call++) {
+      const before = done.length;
+      // the next call starts before this one answers: a call is on its way all along
+      const next = background.callStarted();
+      onItsWay();
+      onItsWay = next;
+      expect(done.length).toBe(before);
+      await new Promise<void>((resolve) => nextTurn(resolve));
+      await new Promise<void>((resolve) => nextTurn(resolve));
+      const ran = done.length - before;
+      expect(ran).toBeGreaterThanOrEqual(1);
+      // a window's worth (a tick's window may have run besides)
+      expect(ran).toBeLessThanOrEqual(2 * perWindow);
+    }
+    expect(done.length).toBeLessThan(200);
+    onItsWay();
+    // once no call is on its way, a tick runs the rest in slices
+    await expect.poll(() => done.length, { timeout: 2000, interval: 5 }).toBe(200);
+    background.stop();
+  });
+});

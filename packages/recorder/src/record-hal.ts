@@ -305,7 +305,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   /**
    * What must be read the moment a call answers: its duration, the latch, and after an action
    * that can move the robot, the pose. The record itself is made off the call's path (deferred
-   * to a moment with no call on its way), so this is all a call pays on its path.
+   * to a moment with no call on its way), so this is all a call pays on its path. Returns the
+   * time it answered (`performance.now()`).
    */
   function record(
     info: InterceptedCall,
@@ -313,7 +314,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     startMs: number,
     outcome: HalCallRecord['outcome'],
     value: unknown,
-  ): void {
+  ): number {
     const endMs = performance.now();
     // the file's time it answered: the record, and what it writes beside, are logged at it
     const end = typeof start === 'number' ? endMs : recorder.clock();
@@ -349,6 +350,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     if (info.subsystem === 'safety') lastLatched = answer.latched;
     else watchLatch(answer.latched);
     recorder.defer(() => recordNow(info, answer));
+    return endMs;
   }
 
   function recordNow(info: InterceptedCall, answer: Answer): Promise<void> | undefined {
@@ -397,7 +399,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   interface Started {
     start: number | bigint;
     startMs: number;
-    answered: () => void;
+    answered: (answeredAt: number) => void;
   }
   const hooks: CallHooks<Started> = {
     started(call) {
@@ -413,11 +415,10 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         writeLink();
       }
       // the recording's work waits while the call is on its way, so its reply never waits for it
-      return { start, startMs, answered: recorder.callStarted() };
+      return { start, startMs, answered: recorder.callStarted(startMs) };
     },
     answered(call, started, outcome, value) {
-      record(call, started.start, started.startMs, outcome, value);
-      started.answered();
+      started.answered(record(call, started.start, started.startMs, outcome, value));
     },
   };
 

@@ -4,12 +4,14 @@ import { McapWriter } from '@mcap/core';
 import { BackgroundWork } from './background-work.js';
 import { period } from './call-values.js';
 import { epochNsAt, monotonicEpochClock } from './clock.js';
+import { Fifo } from './fifo.js';
 import { chunkCompressor, zstdReady } from './compression.js';
 import type { ChunkCompression } from './compression.js';
 import type { RecordingSink } from './file-sink.js';
 import { openFileSink } from './file-sink.js';
 import type { NamedJsonSchema } from './foxglove-schemas.js';
 import { RECORDER_LOSS, TOPICS } from './messages.js';
+import { utf8 } from './utf8.js';
 
 /** How a recorder writes. */
 export interface RecorderOptions {
@@ -49,14 +51,24 @@ export interface RecorderStats {
   failure?: string;
 }
 
-interface QueuedOp {
+/** A message for the writer: data, not a closure, as there is one for every record. */
+interface QueuedMessage {
+  kind: 'message';
+  topic: string;
+  logTime: bigint;
+  /** The JSON text (made UTF-8 as it is written). */
+  json: string;
   bytes: number;
-  run: (writer: McapWriter) => Promise<void>;
-  /** A message (counted as written or dropped); schema, channel and metadata records are not. */
-  message: boolean;
 }
 
-const encoder = new TextEncoder();
+/** A schema, channel, metadata or end record (few, counted neither as written nor dropped). */
+interface QueuedRecord {
+  kind: 'record';
+  bytes: number;
+  run: (writer: McapWriter) => Promise<void>;
+}
+
+type QueuedOp = QueuedMessage | QueuedRecord;
 
 /** The longest one turn of the recording's work runs before a reply or a call may go first. */
 const WORK_SLICE_MS = 1;
@@ -79,12 +91,12 @@ export class McapRecorder {
   readonly #sink: RecordingSink;
   readonly #log: ScopedLogger;
   readonly #maxQueuedBytes: number;
-  readonly #queue: QueuedOp[] = [];
+  readonly #queue = new Fifo<QueuedOp>();
   readonly #channels = new Map<string, number>();
   readonly #schemas = new Map<string, number>();
   readonly #pendingTopics = new Set<string>();
   /** Deferred tasks not yet run. */
-  readonly #tasks: (() => void | PromiseLike<void>)[] = [];
+  readonly #tasks = new Fifo<() => void | PromiseLike<void>>();
   /** Deferred tasks that ran and wait for something (a pose) before they write. */
   readonly #waitingTasks = new Set<Promise<void>>();
   readonly #work: BackgroundWork;
@@ -125,8 +137,8 @@ export class McapRecorder {
     if ((options.compression ?? 'zstd') === 'zstd') await zstdReady();
     const recorder = new McapRecorder(sink, options);
     recorder.#enqueue({
+      kind: 'record',
       bytes: 0,
-      message: false,
       run: (writer) => writer.start({ profile: '', library: 'hal-recorder' }),
     });
     return recorder;
@@ -154,10 +166,10 @@ export class McapRecorder {
   channel(topic: string, schema: NamedJsonSchema): void {
     if (this.#pendingTopics.has(topic) || this.#closed) return;
     this.#pendingTopics.add(topic);
-    const data = encoder.encode(JSON.stringify(schema.schema));
+    const data = utf8(JSON.stringify(schema.schema));
     this.#enqueue({
+      kind: 'record',
       bytes: data.byteLength,
-      message: false,
       run: async (writer) => {
         let schemaId = this.#schemas.get(schema.name);
         if (schemaId === undefined) {
@@ -188,36 +200,26 @@ export class McapRecorder {
       this.#drop(`message on undeclared topic ${topic}`);
       return;
     }
-    let data: Uint8Array;
+    let json: string | undefined;
     try {
-      data = encoder.encode(JSON.stringify(value));
+      json = JSON.stringify(value);
     } catch (error) {
       this.#drop(`a message on ${topic} could not be encoded: ${String(error)}`);
       return;
     }
-    this.#enqueue({
-      bytes: data.byteLength,
-      message: true,
-      run: async (writer) => {
-        const channelId = this.#channels.get(topic);
-        if (channelId === undefined) throw new Error(`channel ${topic} was never registered`);
-        await writer.addMessage({
-          channelId,
-          sequence: this.#written,
-          logTime,
-          publishTime: logTime,
-          data,
-        });
-      },
-    });
+    if (json === undefined) {
+      this.#drop(`a message on ${topic} has no JSON form (${typeof value})`);
+      return;
+    }
+    this.#enqueue({ kind: 'message', topic, logTime, json, bytes: json.length });
   }
 
   /** Queues a metadata record (strings only, as MCAP has them). */
   metadata(name: string, values: Record<string, string>): void {
     const metadata = new Map(Object.entries(values));
     this.#enqueue({
+      kind: 'record',
       bytes: JSON.stringify(values).length,
-      message: false,
       run: (writer) => writer.addMetadata({ name, metadata }),
     });
   }
@@ -236,10 +238,13 @@ export class McapRecorder {
   /**
    * Marks a call on its way to the robot: until the function it returns is called (once the
    * call has answered), the recording's work waits, so the call's reply never waits for it.
-   * `recordHal` calls it around every call.
+   * Past `maxHoldMs` of calls back to back, a window of it runs while the call waits for its
+   * reply, of a quarter of a typical call's round trip. `recordHal` calls it around every call.
+   * The call's start and answer, as `performance.now()` times, may be given where the caller
+   * has read them already.
    */
-  callStarted(): () => void {
-    return this.#work.callStarted();
+  callStarted(startedAt?: number): (answeredAt?: number) => void {
+    return this.#work.callStarted(startedAt);
   }
 
   /** What has been written and lost so far. */
@@ -292,8 +297,8 @@ export class McapRecorder {
     });
     // The loss record is built when its turn comes, so it counts everything before it.
     this.#enqueue({
+      kind: 'record',
       bytes: 0,
-      message: false,
       run: async (writer) => {
         const channelId = this.#channels.get(TOPICS.loss);
         const loss = lossLater();
@@ -304,7 +309,7 @@ export class McapRecorder {
             sequence: this.#written,
             logTime,
             publishTime: logTime,
-            data: encoder.encode(JSON.stringify(loss)),
+            data: utf8(JSON.stringify(loss)),
           });
         }
         await writer.addMetadata({
@@ -313,7 +318,7 @@ export class McapRecorder {
         });
       },
     });
-    this.#enqueue({ bytes: 0, message: false, run: (writer) => writer.end() });
+    this.#enqueue({ kind: 'record', bytes: 0, run: (writer) => writer.end() });
     this.#closed = true;
     await this.drained();
     this.#work.stop();
@@ -333,10 +338,10 @@ export class McapRecorder {
 
   #enqueue(op: QueuedOp): void {
     if (this.#closed || this.#failure !== undefined) {
-      if (op.message) this.#drop(this.#failure ?? 'the recording was closed');
+      if (op.kind === 'message') this.#drop(this.#failure ?? 'the recording was closed');
       return;
     }
-    if (op.message && this.#queuedBytes + op.bytes > this.#maxQueuedBytes) {
+    if (op.kind === 'message' && this.#queuedBytes + op.bytes > this.#maxQueuedBytes) {
       this.#drop(`the disk is behind: ${this.#queuedBytes} bytes already waiting`);
       return;
     }
@@ -356,17 +361,32 @@ export class McapRecorder {
     if (op === undefined) return false;
     this.#queuedBytes -= op.bytes;
     if (this.#failure !== undefined) {
-      if (op.message) this.#drop(this.#failure);
+      if (op.kind === 'message') this.#drop(this.#failure);
       return true;
     }
     try {
-      await op.run(this.#writer);
-      if (op.message) this.#written += 1;
+      if (op.kind === 'record') await op.run(this.#writer);
+      else {
+        await this.#writeMessage(op);
+        this.#written += 1;
+      }
     } catch (error) {
-      if (op.message) this.#drop(String(error));
+      if (op.kind === 'message') this.#drop(String(error));
       this.#fail(error);
     }
     return true;
+  }
+
+  #writeMessage({ topic, logTime, json }: QueuedMessage): Promise<void> {
+    const channelId = this.#channels.get(topic);
+    if (channelId === undefined) throw new Error(`channel ${topic} was never registered`);
+    return this.#writer.addMessage({
+      channelId,
+      sequence: this.#written,
+      logTime,
+      publishTime: logTime,
+      data: utf8(json),
+    });
   }
 
   #runTask(task: () => void | PromiseLike<void>): void {
