@@ -1,15 +1,6 @@
 import { scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, Pose } from '@hal/types';
 import {
-  COMPRESSED_IMAGE,
-  FOXGLOVE_LOG_LEVEL,
-  FRAME_TRANSFORM,
-  LOG,
-  POSE_IN_FRAME,
-  foxgloveTime,
-  quaternionFromEuler,
-} from './foxglove-schemas.js';
-import {
   errorOf,
   failureOf,
   isToolResult,
@@ -20,10 +11,10 @@ import { interceptCalls } from './call-interceptor.js';
 import type { CallHooks, InterceptedCall } from './call-interceptor.js';
 import { jsonSafe } from './json-safe.js';
 import { linkTelemetry, sameSteps } from './link-telemetry.js';
-import { CALL_RECORD, HAL_POSE, LINK_STATS, SAFETY_EVENT, WHEEL_STEPS } from './messages.js';
 import type { HalCallRecord, SafetyEvent, WheelSteps } from './messages.js';
 import { robotNamespace } from './namespace.js';
 import type { McapRecorder } from './recorder.js';
+import { robotTopicWriter } from './robot-topics.js';
 
 /** What `recordHal` records besides the calls. */
 export interface RecordHalOptions {
@@ -98,22 +89,12 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   const posePeriodMs = period('posePeriodMs', options.posePeriodMs ?? 100);
   const linkPeriodMs = period('linkPeriodMs', options.linkPeriodMs ?? 1000);
   const space = robotNamespace(options.namespace);
-  const topics = space.topics;
   const telemetry = linkTelemetry(hal);
-  for (const [topic, schema] of [
-    [topics.calls, CALL_RECORD],
-    [topics.pose, POSE_IN_FRAME],
-    [topics.halPose, HAL_POSE],
-    [topics.tf, FRAME_TRANSFORM],
-    [topics.camera, COMPRESSED_IMAGE],
-    [topics.log, LOG],
-    [topics.safety, SAFETY_EVENT],
-  ] as const) {
-    recorder.channel(topic, schema);
-  }
   // a physical robot's own reports (a HAL without them records neither topic)
-  if (telemetry.steps) recorder.channel(topics.steps, WHEEL_STEPS);
-  if (telemetry.link) recorder.channel(topics.link, LINK_STATS);
+  const write = robotTopicWriter(recorder, space, {
+    steps: telemetry.steps !== undefined,
+    link: telemetry.link !== undefined,
+  });
 
   let timer: ReturnType<typeof setInterval> | undefined;
   let linkTimer: ReturnType<typeof setInterval> | undefined;
@@ -130,45 +111,17 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     }
   }
 
-  /** Writes `pose` at `now`: the time it was asked for (the robot may have moved on since). */
-  function writePose(pose: Pose, now: bigint): void {
-    const timestamp = foxgloveTime(now);
-    const { x, y, z } = pose.position;
-    const orientation = quaternionFromEuler(
-      pose.rotation.yaw,
-      pose.rotation.pitch,
-      pose.rotation.roll,
-    );
-    recorder.write(
-      topics.pose,
-      { timestamp, frame_id: 'world', pose: { position: { x, y, z }, orientation } },
-      now,
-    );
-    recorder.write(
-      topics.tf,
-      {
-        timestamp,
-        parent_frame_id: 'world',
-        child_frame_id: space.frame('base_link'),
-        translation: { x, y, z },
-        rotation: orientation,
-      },
-      now,
-    );
-    recorder.write(topics.halPose, jsonSafe(pose), now);
-  }
-
   /** The wheel counters the robot last reported, when they are a new report. */
   function writeSteps(): void {
     const steps = safe(() => telemetry.steps?.(), undefined);
     if (steps === undefined || sameSteps(lastSteps, steps)) return;
     lastSteps = steps;
-    recorder.write(topics.steps, steps);
+    write.steps(steps);
   }
 
   function writeLink(): void {
     const link = safe(() => telemetry.link?.(), undefined);
-    if (link !== undefined) recorder.write(topics.link, link);
+    if (link !== undefined) write.link(link);
   }
 
   /** Reads the pose, the latch and the reported steps from the HAL itself (not recorded calls). */
@@ -182,7 +135,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       hal.locomotion.getPose().then(
         (pose) => {
           sampling = false;
-          writePose(pose, askedAt);
+          write.pose(pose, askedAt);
         },
         () => {
           sampling = false;
@@ -203,14 +156,14 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       success: true,
       emergency_stopped: latched,
     };
-    recorder.write(topics.safety, event);
+    write.safety(event);
   }
 
   function writeRobot(): void {
     if (robotWritten) return;
     robotWritten = true;
     const info = safe(() => hal.getDeviceInfo(), undefined);
-    recorder.metadata(space.metadataName, {
+    write.robot({
       device_id: options.deviceId ?? info?.id ?? '',
       type: info?.type ?? '',
       mode: String(hal.mode),
@@ -253,32 +206,13 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
     if (name === 'initialize' && ok) onReady();
     if (name === 'cleanup') stopSampling();
-    if (name === 'vision.captureFrame' && ok && typeof value === 'string') {
-      const comma = value.indexOf(',');
-      const format = /^data:image\/(\w+)/.exec(value)?.[1] ?? 'jpeg';
-      recorder.write(
-        topics.camera,
-        {
-          timestamp: foxgloveTime(now),
-          frame_id: space.frame('camera'),
-          data: comma >= 0 ? value.slice(comma + 1) : value,
-          format,
-        },
-        now,
-      );
-    }
+    if (name === 'vision.captureFrame' && ok && typeof value === 'string') write.camera(value, now);
     if (name === 'communication.log') {
       const [message, level] = info.args;
-      recorder.write(
-        topics.log,
-        {
-          timestamp: foxgloveTime(now),
-          level: FOXGLOVE_LOG_LEVEL[level as keyof typeof FOXGLOVE_LOG_LEVEL] ?? 2,
-          message: String(message),
-          name: safe(() => hal.getDeviceInfo().id, 'hal'),
-          file: '',
-          line: 0,
-        },
+      write.log(
+        message,
+        level,
+        safe(() => hal.getDeviceInfo().id, 'hal'),
         now,
       );
     }
@@ -292,7 +226,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         ...(code !== undefined ? { code } : {}),
         emergency_stopped: latched,
       };
-      recorder.write(topics.safety, event, now);
+      write.safety(event, now);
     }
     if (
       (info.subsystem === 'locomotion' && info.method !== 'getPose') ||
@@ -369,9 +303,10 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         duration_ms: answer.durationMs,
       };
       const finish = (poseAfter?: Pose): void => {
-        recorder.write(
-          topics.calls,
-          poseAfter ? { ...entry, pose_after: jsonSafe(poseAfter) } : entry,
+        write.call(
+          poseAfter
+            ? { ...entry, pose_after: jsonSafe(poseAfter) as HalCallRecord['pose_after'] }
+            : entry,
           at,
         );
         afterCall(info, value, status.success, status.code, at, answer.latched);
@@ -380,7 +315,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
         return poseAfter.then(
           (pose) => {
-            writePose(pose, at);
+            write.pose(pose, at);
             finish(pose);
           },
           () => finish(),

@@ -33,8 +33,9 @@ export interface RecorderOptions {
   clock?: () => bigint;
   /**
    * The longest the recording's work waits for a moment with no recorded call on its way to the
-   * robot (ms, default 250). Past it, while calls keep coming back to back, the work runs between
-   * them. A process killed meanwhile loses what waits, besides the chunk being filled.
+   * robot (ms, default 250). Past it, while calls keep coming back to back, the work runs in a
+   * window while each call waits for its reply. A process killed meanwhile loses what waits,
+   * besides the chunk being filled.
    */
   maxHoldMs?: number;
 }
@@ -82,8 +83,8 @@ const DEFERRED_WAIT_MS = 2000;
  * but {@link close} returns at once: records wait in a bounded queue that a single background
  * loop hands to the writer in order, so no caller ever waits for the disk. The loop works in
  * the moments no recorded call is on its way to the robot ({@link callStarted}), so a reply
- * never waits for the recording's work, and goes on between calls only once work has waited
- * `maxHoldMs`. A full queue or a failed disk drops messages, counts them, logs it, and says so
+ * never waits for the recording's work; once work has waited `maxHoldMs`, it goes on in short
+ * windows while calls wait for their replies. A full queue or a failed disk drops messages, counts them, logs it, and says so
  * in the file at close.
  */
 export class McapRecorder {
