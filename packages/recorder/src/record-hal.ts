@@ -302,32 +302,41 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         start_ns: recorder.timeOf(answer.start).toString(),
         duration_ms: answer.durationMs,
       };
-      const finish = (poseAfter?: Pose): void => {
-        write.call(
-          poseAfter
-            ? { ...entry, pose_after: jsonSafe(poseAfter) as HalCallRecord['pose_after'] }
-            : entry,
-          at,
-        );
-        afterCall(info, value, status.success, status.code, at, answer.latched);
-      };
       if (poseAfter !== undefined) {
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
         return poseAfter.then(
           (pose) => {
             write.pose(pose, at);
-            finish(pose);
+            finishCall(info, answer, entry, status, at, pose);
           },
-          () => finish(),
+          () => finishCall(info, answer, entry, status, at),
         );
       }
-      finish();
+      finishCall(info, answer, entry, status, at);
     } catch (error) {
       scoped(options.logger ?? silentLogger, 'hal:recorder').warn(
         `recorder could not record ${info.method}: ${String(error)}`,
       );
     }
     return undefined;
+  }
+
+  /** Writes a call's record, with the pose it left when there is one, and what follows from it. */
+  function finishCall(
+    info: InterceptedCall,
+    answer: Answer,
+    entry: HalCallRecord,
+    status: { success: boolean; code?: string },
+    at: bigint,
+    poseAfter?: Pose,
+  ): void {
+    write.call(
+      poseAfter
+        ? { ...entry, pose_after: jsonSafe(poseAfter) as HalCallRecord['pose_after'] }
+        : entry,
+      at,
+    );
+    afterCall(info, answer.value, status.success, status.code, at, answer.latched);
   }
 
   /** What a call's start leaves for its record. */
