@@ -132,7 +132,7 @@ export class BackgroundWork {
 
   #noteDuration(ms: number): void {
     const typical = this.#typicalCallMs;
-    // one slow call (a motion, a stall) moves the average by at most its own weight of twice it
+    // a slow call (a motion, a stall) counts as at most twice the average, so one moves it little
     this.#typicalCallMs =
       typical === undefined ? ms : typical + (Math.min(ms, 2 * typical) - typical) * TYPICAL_WEIGHT;
   }

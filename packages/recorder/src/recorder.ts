@@ -4,9 +4,9 @@ import { McapWriter } from '@mcap/core';
 import { BackgroundWork } from './background-work.js';
 import { period } from './call-values.js';
 import { epochNsAt, monotonicEpochClock } from './clock.js';
-import { Fifo } from './fifo.js';
 import { chunkCompressor, zstdReady } from './compression.js';
 import type { ChunkCompression } from './compression.js';
+import { Fifo } from './fifo.js';
 import type { RecordingSink } from './file-sink.js';
 import { openFileSink } from './file-sink.js';
 import type { NamedJsonSchema } from './foxglove-schemas.js';
@@ -59,6 +59,7 @@ interface QueuedMessage {
   logTime: bigint;
   /** The JSON text (made UTF-8 as it is written). */
   json: string;
+  /** Its length, counted against `maxQueuedBytes` (the UTF-8 bytes, for ASCII text). */
   bytes: number;
 }
 
@@ -84,8 +85,8 @@ const DEFERRED_WAIT_MS = 2000;
  * loop hands to the writer in order, so no caller ever waits for the disk. The loop works in
  * the moments no recorded call is on its way to the robot ({@link callStarted}), so a reply
  * never waits for the recording's work; once work has waited `maxHoldMs`, it goes on in short
- * windows while calls wait for their replies. A full queue or a failed disk drops messages, counts them, logs it, and says so
- * in the file at close.
+ * windows while calls wait for their replies. A full queue or a failed disk drops messages,
+ * counts them, logs it, and says so in the file at close.
  */
 export class McapRecorder {
   readonly #writer: McapWriter;
@@ -301,17 +302,9 @@ export class McapRecorder {
       kind: 'record',
       bytes: 0,
       run: async (writer) => {
-        const channelId = this.#channels.get(TOPICS.loss);
         const loss = lossLater();
-        const logTime = this.clock();
-        if (channelId !== undefined) {
-          await writer.addMessage({
-            channelId,
-            sequence: this.#written,
-            logTime,
-            publishTime: logTime,
-            data: utf8(JSON.stringify(loss)),
-          });
+        if (this.#channels.has(TOPICS.loss)) {
+          await this.#writeMessage(TOPICS.loss, this.clock(), loss);
         }
         await writer.addMetadata({
           name: 'recorder.loss',
@@ -368,7 +361,7 @@ export class McapRecorder {
     try {
       if (op.kind === 'record') await op.run(this.#writer);
       else {
-        await this.#writeMessage(op);
+        await this.#writeMessage(op.topic, op.logTime, op.json);
         this.#written += 1;
       }
     } catch (error) {
@@ -378,7 +371,8 @@ export class McapRecorder {
     return true;
   }
 
-  #writeMessage({ topic, logTime, json }: QueuedMessage): Promise<void> {
+  /** Hands one message to the writer: `json` is its JSON text, or a value made into it here. */
+  #writeMessage(topic: string, logTime: bigint, json: string | object): Promise<void> {
     const channelId = this.#channels.get(topic);
     if (channelId === undefined) throw new Error(`channel ${topic} was never registered`);
     return this.#writer.addMessage({
@@ -386,7 +380,7 @@ export class McapRecorder {
       sequence: this.#written,
       logTime,
       publishTime: logTime,
-      data: utf8(json),
+      data: utf8(typeof json === 'string' ? json : JSON.stringify(json)),
     });
   }
 
