@@ -210,6 +210,36 @@ describe('recordHal', () => {
     expect(events).toEqual([{ event: 'latched', success: true, emergency_stopped: true }]);
   });
 
+  it("records the step report a motion ended on, though the next motion's replaced it before the record was made", async () => {
+    // a HAL that reports steps as PhysicalHAL does, its report set by the test
+    const report = (steps: number) => ({
+      leftSteps: steps,
+      rightSteps: steps,
+      leftStepsPerS: 0,
+      rightStepsPerS: 0,
+      robotUptimeMs: steps,
+    });
+    class ReportingSim extends SimulationHAL {
+      current = report(0);
+      reportedSteps(): ReturnType<typeof report> {
+        return this.current;
+      }
+    }
+    const inner = new ReportingSim({ deviceId: 'sim-steps' });
+    const recording = await recorded(async (hal) => {
+      await hal.initialize();
+      inner.current = report(10);
+      await hal.locomotion.moveForward(1);
+      // the next motion's first reply lands before the record of the first is made
+      inner.current = report(20);
+      await hal.locomotion.moveForward(1);
+    }, inner);
+    const steps = recording.messages
+      .filter((m) => m.topic === TOPICS.steps)
+      .map((m) => (m.value as { left_steps: number }).left_steps);
+    expect(steps).toEqual([10, 20]);
+  });
+
   it('leaves the wrapped HAL untouched: the same results and its own properties', async () => {
     const inner = new SimulationHAL({ deviceId: 'same' });
     const hal = recordHal(inner, await McapRecorder.create(memorySink()), { posePeriodMs: 0 });

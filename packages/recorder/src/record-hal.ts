@@ -60,10 +60,20 @@ interface Answer {
   poseAfter?: Promise<Pose>;
   /** The e-stop latch as it answered. */
   latched: boolean;
+  /** The robot's step report as it answered, when it was new (after an action that samples). */
+  steps?: WheelSteps;
 }
 
 /** The subsystems whose action calls can move the robot: the pose is read after each of them. */
 const MOVING_SUBSYSTEMS: ReadonlySet<string> = new Set(['locomotion', 'manipulation', 'safety']);
+
+/** The calls after which the latch, the step report and the pose are sampled. */
+function samplesAfter(info: InterceptedCall): boolean {
+  if (info.subsystem === 'locomotion') return info.method !== 'getPose';
+  if (info.subsystem === 'safety')
+    return info.method !== 'isEmergencyStopped' && info.method !== 'getSafetyStatus';
+  return false;
+}
 
 /**
  * Wraps `hal` so that everything passing through it is recorded into `recorder`, and otherwise
@@ -111,12 +121,20 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     }
   }
 
-  /** The wheel counters the robot last reported, when they are a new report. */
-  function writeSteps(): void {
+  /**
+   * The wheel counters the robot last reported, when they are a report not yet taken. Taken as it
+   * is read, so each report is written once, at the time it was first read.
+   */
+  function newSteps(): WheelSteps | undefined {
     const steps = safe(() => telemetry.steps?.(), undefined);
-    if (steps === undefined || sameSteps(lastSteps, steps)) return;
+    if (steps === undefined || sameSteps(lastSteps, steps)) return undefined;
     lastSteps = steps;
-    write.steps(steps);
+    return steps;
+  }
+
+  function writeSteps(): void {
+    const steps = newSteps();
+    if (steps !== undefined) write.steps(steps);
   }
 
   function writeLink(): void {
@@ -202,6 +220,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     code: string | undefined,
     now: bigint,
     latchedAfter: boolean,
+    stepsAtAnswer: WheelSteps | undefined,
   ): void {
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
     if (name === 'initialize' && ok) onReady();
@@ -228,11 +247,9 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       };
       write.safety(event, now);
     }
-    if (
-      (info.subsystem === 'locomotion' && info.method !== 'getPose') ||
-      info.subsystem === 'safety'
-    ) {
-      if (info.method !== 'isEmergencyStopped' && info.method !== 'getSafetyStatus') sample();
+    if (samplesAfter(info)) {
+      if (stepsAtAnswer !== undefined) write.steps(stepsAtAnswer, now);
+      sample();
     }
   }
 
@@ -283,6 +300,12 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     // a change any other call finds is a trip (rare, so written at once)
     if (info.subsystem === 'safety') lastLatched = answer.latched;
     else watchLatch(answer.latched);
+    // The report the motion ended on, taken now: by the time the record is made, the next
+    // motion's status replies may have replaced it.
+    if (telemetry.steps !== undefined && samplesAfter(info)) {
+      const steps = newSteps();
+      if (steps !== undefined) answer.steps = steps;
+    }
     recorder.defer(() => recordNow(info, answer));
     return endMs;
   }
@@ -336,7 +359,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         : entry,
       at,
     );
-    afterCall(info, answer.value, status.success, status.code, at, answer.latched);
+    afterCall(info, answer.value, status.success, status.code, at, answer.latched, answer.steps);
   }
 
   /** What a call's start leaves for its record. */

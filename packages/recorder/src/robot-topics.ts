@@ -20,8 +20,8 @@ export interface RobotTopicWriter {
   call(entry: HalCallRecord, at: bigint): void;
   /** The pose as asked for at `at` (the robot may have moved on since): `/hal/pose`, `/tf`, `/hal/pose/raw`. */
   pose(pose: Pose, at: bigint): void;
-  /** The wheel counters the robot reported (`/hal/steps`). */
-  steps(steps: WheelSteps): void;
+  /** The wheel counters the robot reported (`/hal/steps`), read at `at` or now. */
+  steps(steps: WheelSteps, at?: bigint): void;
   /** The link's statistics (`/hal/link`). */
   link(link: LinkStats): void;
   /** An e-stop, a reset or a trip (`/hal/safety`), at `at` or now. */
@@ -85,7 +85,7 @@ export function robotTopicWriter(
       );
       recorder.write(topics.halPose, jsonSafe(pose), at);
     },
-    steps: (steps) => recorder.write(topics.steps, steps),
+    steps: (steps, at) => recorder.write(topics.steps, steps, at),
     link: (link) => recorder.write(topics.link, link),
     safety: (event, at) => recorder.write(topics.safety, event, at),
     camera(dataUrl, at) {
