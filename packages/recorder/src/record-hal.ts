@@ -213,15 +213,15 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   }
   options.signal?.addEventListener('abort', stopSampling, { once: true });
 
+  /** What follows from a call answered as `answer`, written at `now` (the time it answered). */
   function afterCall(
     info: InterceptedCall,
-    value: unknown,
-    ok: boolean,
-    code: string | undefined,
+    answer: Answer,
+    status: { success: boolean; code?: string },
     now: bigint,
-    latchedAfter: boolean,
-    stepsAtAnswer: WheelSteps | undefined,
   ): void {
+    const { value } = answer;
+    const { success: ok, code } = status;
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
     if (name === 'initialize' && ok) onReady();
     if (name === 'cleanup') stopSampling();
@@ -236,7 +236,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       );
     }
     if (name === 'safety.emergencyStop' || name === 'safety.resetEmergencyStop') {
-      const latched = latchedAfter;
+      const latched = answer.latched;
       const reason = info.args[0];
       const event: SafetyEvent = {
         event: name === 'safety.emergencyStop' ? 'emergency_stop' : 'reset',
@@ -248,7 +248,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       write.safety(event, now);
     }
     if (samplesAfter(info)) {
-      if (stepsAtAnswer !== undefined) write.steps(stepsAtAnswer, now);
+      if (answer.steps !== undefined) write.steps(answer.steps, now);
       sample();
     }
   }
@@ -359,7 +359,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         : entry,
       at,
     );
-    afterCall(info, answer.value, status.success, status.code, at, answer.latched, answer.steps);
+    afterCall(info, answer, status, at);
   }
 
   /** What a call's start leaves for its record. */
