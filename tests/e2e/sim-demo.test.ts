@@ -18,6 +18,7 @@ interface DemoHooks {
   goalState(): string;
   pose(): { x: number; y: number; yaw: number };
   framesDrawn(): number;
+  render(): { name: string; rendererName?: string; minFrameIntervalMs: number };
   worldToClient(x: number, y: number): { x: number; y: number };
 }
 
@@ -69,9 +70,20 @@ describe('apps/sim-demo in Chromium', () => {
     await page.waitForTimeout(2000);
     expect((await framesDrawn()) - idleFrom).toBeLessThanOrEqual(4);
 
+    // This Chromium draws WebGL in software (--disable-gpu: SwiftShader), so the page chose the
+    // light render profile by itself, and said so.
+    const render = await page.evaluate(() => window.simDemo?.render());
+    expect(render?.name).toBe('light');
+    expect(render?.rendererName).toMatch(/swiftshader/i);
+    expect(render?.minFrameIntervalMs).toBeGreaterThan(0);
+    await expect(page.locator('#status').textContent()).resolves.toMatch(
+      /light rendering: WebGL drawn in software \(SwiftShader\)/i,
+    );
+
     // Teleop: hold the up arrow, then let go; the robot has moved forward (+x) and stopped.
     const start = await page.evaluate(() => window.simDemo?.pose());
     await page.locator('#viewport > canvas').focus();
+    const framesBeforeDrive = await framesDrawn();
     await page.keyboard.down('ArrowUp');
     await page.waitForFunction((x0) => (window.simDemo?.pose().x ?? 0) > x0 + 0.1, start?.x ?? 0, {
       timeout: 20_000,
@@ -82,6 +94,8 @@ describe('apps/sim-demo in Chromium', () => {
       undefined,
       { timeout: 10_000 },
     );
+    // While it moved, the view was drawn (the frame interval itself is FrameSchedule's unit test).
+    expect((await framesDrawn()) - framesBeforeDrive).toBeGreaterThan(0);
     const afterTeleop = await page.evaluate(() => window.simDemo?.pose());
     expect(afterTeleop?.x ?? 0).toBeGreaterThan((start?.x ?? 0) + 0.1);
     expect(Math.abs(afterTeleop?.y ?? 1)).toBeLessThan(0.01);

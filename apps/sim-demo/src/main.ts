@@ -6,6 +6,7 @@ import { DemoFleet } from './fleet/demo-fleet.js';
 import { FleetPanel } from './fleet/fleet-panel.js';
 import { fleetLogger } from './fleet/fleet-logger.js';
 import { element } from './dom.js';
+import { FrameSchedule } from './frame-schedule.js';
 import { GoalDriver } from './goal-driver.js';
 import { KeyboardTeleop } from './keyboard-teleop.js';
 import { TrajectoryPlot } from './plot.js';
@@ -20,6 +21,7 @@ import { TelemetryPanel } from './telemetry-panel.js';
 import { RecordingPanel } from './recording/recording-panel.js';
 import { SessionRecorder } from './recording/session-recorder.js';
 import { RemotePanel } from './remote-panel.js';
+import { chooseRenderProfile, webglRendererName } from './render-profile.js';
 import { readUrlSettings } from './url-settings.js';
 import { Viewport } from './viewport.js';
 
@@ -30,12 +32,18 @@ import { Viewport } from './viewport.js';
 
 // ---- the world, its view and the robots' HALs ------------------------------------------------
 
-const { mapName, speed, robots: robotCount } = readUrlSettings(location.search);
+const { mapName, speed, robots: robotCount, render } = readUrlSettings(location.search);
+const rendererName = webglRendererName();
+const renderProfile = chooseRenderProfile(render, rendererName, window.devicePixelRatio);
 const world = new World({ map: mapName, seed: 1 });
 world.startRealtime({ speed });
 const colors = new Map<string, string>();
 const scene = new WorldScene(world, { showRangeRays: true, robotColor: (id) => colors.get(id) });
-const robotCamera = createThreeFrameSource(scene, { canvas: element('camera-view') });
+const robotCamera = createThreeFrameSource(scene, {
+  canvas: element('camera-view'),
+  antialias: renderProfile.antialias,
+  shadows: renderProfile.shadows,
+});
 const roster = await RobotRoster.create({ world, frameSource: robotCamera.frameSource });
 // Every robot has its own HAL; the panels hold this one, which is always the selected robot's
 // (through its recorder while the Recording card records it).
@@ -44,7 +52,7 @@ const hal = selectedHal(() => sessions.halFor(roster.selected.hal));
 
 // ---- the panels ----------------------------------------------------------------------------------
 
-const viewport = new Viewport(element('viewport'), world, () => hal.robot);
+const viewport = new Viewport(element('viewport'), world, () => hal.robot, renderProfile);
 const status = new StatusLine(element('status'));
 const log = new ResultsLog(element('log'));
 let currentMap: string = mapName;
@@ -168,32 +176,28 @@ for (let i = 1; i < robotCount; i += 1) await roster.add();
 
 // Frames are drawn on demand: when the scene changed (a robot moved, a path, goal or map was set,
 // a recording is playing back), when the view moved, and once a second whatever happens. A page
-// left open with nothing moving then costs next to nothing (WebGL in software is a core's work
-// at 60 Hz), and a moving robot is still drawn every frame.
-const IDLE_REDRAW_MS = 1000;
+// left open with nothing moving then costs next to nothing, and a moving robot is drawn every
+// frame, or under the light render profile (WebGL drawn in software) at most five times a
+// second: a change then waits for the next frame due and is drawn with it.
+const frames = new FrameSchedule({
+  minIntervalMs: renderProfile.minFrameIntervalMs,
+  idleRedrawMs: 1000,
+});
 let lastTelemetry = 0;
-let drawnAt = -Infinity;
-let drawnScene = '';
-let framesDrawn = 0;
 function frame(now: number): void {
   scene.update();
   goals.refreshGrid();
   recording.frame(now);
   const robot = hal.robot;
+  plot.record(robot.x, robot.y);
   const viewMoved = viewport.update();
-  const sceneState = `${scene.revision} ${recording.revision} ${robot.id}`;
-  const idle = now - drawnAt >= IDLE_REDRAW_MS;
-  const sceneChanged = sceneState !== drawnScene || idle;
-  if (viewMoved || sceneChanged) {
-    framesDrawn += 1;
+  const draw = frames.next(now, viewMoved, `${scene.revision} ${recording.revision} ${robot.id}`);
+  if (draw.view) {
     viewport.render(scene.scene);
     labels.update();
   }
-  if (sceneChanged) {
-    drawnScene = sceneState;
-    drawnAt = now;
+  if (draw.scene) {
     robotCamera.render(robot.id);
-    plot.record(robot.x, robot.y);
     plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));
   }
   if (now - lastTelemetry > 100) {
@@ -204,7 +208,10 @@ function frame(now: number): void {
   requestAnimationFrame(frame);
 }
 requestAnimationFrame(frame);
-status.set(`Map "${mapName}": ${BUILTIN_MAPS[mapName].description}`);
+status.set(
+  `Map "${mapName}": ${BUILTIN_MAPS[mapName].description}` +
+    (renderProfile.name === 'light' ? ` · light rendering: ${renderProfile.reason}` : ''),
+);
 
 /** Hooks for the end-to-end test and for curious people at the console. */
 const hooks = {
@@ -222,7 +229,9 @@ const hooks = {
   recording: () => recording.state,
   pose: () => ({ x: hal.robot.x, y: hal.robot.y, yaw: hal.robot.yaw }),
   /** How many frames of the 3D view were drawn (on demand: see the frame loop). */
-  framesDrawn: () => framesDrawn,
+  framesDrawn: () => frames.framesDrawn,
+  /** How the 3D view is drawn (`?render=`), and the WebGL renderer the browser reports. */
+  render: () => ({ ...renderProfile, rendererName }),
   /** Every robot's id, label, pose and e-stop state, by number. */
   robots: () =>
     roster.robots.map(({ id, label, hal: { robot } }) => ({

@@ -1,5 +1,7 @@
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
+import { RENDER_SETTINGS } from './render-profile.js';
+import type { RenderSetting } from './render-profile.js';
 import { MAX_ROBOTS } from './robots/palette.js';
 
 /** The built-in maps, in the order the map menu lists them. */
@@ -9,12 +11,14 @@ export const MAP_NAMES = Object.keys(BUILTIN_MAPS) as BuiltinMapName[];
 const SPEEDS = [1, 2, 5, 10, 20];
 
 /**
- * What the page's URL asks for (`?map=maze&speed=10&robots=3`), with defaults for anything else.
+ * What the page's URL asks for (`?map=maze&speed=10&robots=3&render=light`), with defaults for
+ * anything else.
  */
 export function readUrlSettings(search: string): {
   mapName: BuiltinMapName;
   speed: number;
   robots: number;
+  render: RenderSetting;
 } {
   const params = new URLSearchParams(search);
   const requestedMap = params.get('map');
@@ -28,5 +32,7 @@ export function readUrlSettings(search: string): {
     Number.isInteger(requestedRobots) && requestedRobots >= 1 && requestedRobots <= MAX_ROBOTS
       ? requestedRobots
       : 1;
-  return { mapName, speed, robots };
+  const requestedRender = params.get('render');
+  const render = RENDER_SETTINGS.find((setting) => setting === requestedRender) ?? 'auto';
+  return { mapName, speed, robots, render };
 }

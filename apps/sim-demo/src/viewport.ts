@@ -2,6 +2,7 @@ import type { SimRobot, World } from '@hal/simulation';
 import { fromThree, toThree } from '@hal/simulation/three';
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import type { RenderProfile } from './render-profile.js';
 
 /** A press that moves further than this before release is a drag (it orbits), not a click, px. */
 const CLICK_SLOP_PX = 5;
@@ -22,13 +23,18 @@ export class Viewport {
   /** The camera or the canvas changed since the last frame drawn. */
   #moved = true;
 
-  constructor(container: HTMLElement, world: World, robot: () => SimRobot) {
+  constructor(
+    container: HTMLElement,
+    world: World,
+    robot: () => SimRobot,
+    profile: Pick<RenderProfile, 'antialias' | 'shadows' | 'pixelRatio'>,
+  ) {
     this.#container = container;
     this.#world = world;
     this.#robot = robot;
-    const renderer = new THREE.WebGLRenderer({ antialias: true });
-    renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-    renderer.shadowMap.enabled = true;
+    const renderer = new THREE.WebGLRenderer({ antialias: profile.antialias });
+    renderer.setPixelRatio(profile.pixelRatio);
+    renderer.shadowMap.enabled = profile.shadows;
     renderer.shadowMap.type = THREE.PCFShadowMap;
     container.prepend(renderer.domElement);
     this.renderer = renderer;
