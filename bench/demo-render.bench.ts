@@ -2,7 +2,7 @@
 // SwiftShader), as on a machine without a GPU. The full render profile (`?render=full`) beside
 // the light one the page picks there by itself (`?render=auto`), in interleaved rounds, each on a
 // fresh browser: the CPU that Chromium's processes take (from /proc) and the frames of the view
-// drawn, while three robots turn in place.
+// drawn, with three robots in the arena, one turning in place.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
