@@ -7,15 +7,15 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
-import { build, preview } from 'vite';
+import { requireChromium } from '../tests/e2e/chromium.js';
+import { serveBuiltDemo } from '../tests/e2e/demo-server.js';
 import { reportFigure } from './report/figures.js';
 
 const ROUNDS = 3;
 const WARM_MS = 1500;
 const MEASURE_MS = 6000;
-const CHROMIUM = process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium';
+const CHROMIUM = requireChromium();
 const TICKS_PER_SECOND = Number(execFileSync('getconf', ['CLK_TCK'], { encoding: 'utf8' }));
 
 /** CPU seconds used so far by the process tree under the process whose command line has `mark`. */
@@ -86,30 +86,16 @@ async function measure(url: string, render: 'full' | 'auto'): Promise<Sample> {
   }
 }
 
-const demoRoot = fileURLToPath(new URL('../apps/sim-demo', import.meta.url));
-const outDir = mkdtempSync(join(tmpdir(), 'demo-render-build-'));
-const configFile = join(demoRoot, 'vite.config.ts');
-await build({ root: demoRoot, configFile, logLevel: 'silent', build: { outDir } });
-const server = await preview({
-  root: demoRoot,
-  configFile,
-  logLevel: 'silent',
-  build: { outDir },
-  preview: { host: '127.0.0.1', port: 0, strictPort: false },
-});
-const url = server.resolvedUrls?.local[0];
-if (url === undefined) throw new Error('the preview server of the demo has no URL');
-
+const demo = await serveBuiltDemo();
 const full: Sample[] = [];
 const light: Sample[] = [];
 try {
   for (let round = 0; round < ROUNDS; round += 1) {
-    full.push(await measure(url, 'full'));
-    light.push(await measure(url, 'auto'));
+    full.push(await measure(demo.url, 'full'));
+    light.push(await measure(demo.url, 'auto'));
   }
 } finally {
-  await server.close();
-  rmSync(outDir, { recursive: true, force: true });
+  await demo.close();
 }
 
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)] ?? 0;
@@ -118,7 +104,7 @@ const lightCores = median(light.map((s) => s.cores));
 const fullFps = median(full.map((s) => s.fps));
 const lightFps = median(light.map((s) => s.fps));
 console.log(
-  `demo view drawn in software (headless Chromium, SwiftShader), 3 robots turning, median of ` +
+  `demo view drawn in software (headless Chromium, SwiftShader), 3 robots, one turning, median of ` +
     `${ROUNDS} interleaved rounds of ${MEASURE_MS / 1000} s:`,
 );
 console.log(
