@@ -7,10 +7,9 @@
  * half the pixels, at most five frames a second.
  */
 
-/** What `?render=` asks for: the profile chosen from the renderer (auto), or one named. */
-export type RenderSetting = 'auto' | 'full' | 'light';
-
-export const RENDER_SETTINGS: readonly RenderSetting[] = ['auto', 'full', 'light'];
+/** What `?render=` may ask for: the profile chosen from the renderer (auto), or one named. */
+export const RENDER_SETTINGS = ['auto', 'full', 'light'] as const;
+export type RenderSetting = (typeof RENDER_SETTINGS)[number];
 
 export interface RenderProfile {
   name: 'full' | 'light';
