@@ -160,6 +160,23 @@ class SerialBridge : public cube::LinkHandler {
   uint8_t out_[cube::kMaxMessage];
 };
 
+// The step interrupt, and with it the motion part of the task or the whole
+// task, as on the board. At a high time scale more steps fall due per pass
+// than the queue holds, so repeat while steps are still being made.
+void CatchUpSteps(cube::Cube& robot, bool with_task) {
+  for (int pass = 0; pass < 256; ++pass) {
+    const int64_t l = robot.left_position();
+    const int64_t r = robot.right_position();
+    robot.Tick();
+    if (with_task) {
+      robot.Poll();
+    } else {
+      robot.UpdateMotion();
+    }
+    if (robot.left_position() == l && robot.right_position() == r) break;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -248,6 +265,15 @@ int main(int argc, char** argv) {
     if (opt.exit_on_stdin_eof) fds[n++] = {STDIN_FILENO, POLLIN, 0};
     poll(fds, n, 1);
 
+    // On the board the step interrupt runs on its own, so a request is
+    // answered with every step that fell due before it. Here the steps are
+    // made between passes of this loop, and a process kept off the CPU wakes
+    // up behind: make the steps due now before reading what came in.
+    const bool request_waiting =
+        (fds[0].revents & POLLIN) != 0 ||
+        (pty_index >= 0 && (fds[pty_index].revents & POLLIN) != 0);
+    if (request_waiting) CatchUpSteps(robot, /*with_task=*/false);
+
     if ((fds[0].revents & POLLIN) != 0) {
       for (int i = 0; i < 64; ++i) {
         sockaddr_in from{};
@@ -274,16 +300,7 @@ int main(int argc, char** argv) {
         break;
       }
     }
-    // The step interrupt and the task, as on the board. At a high time
-    // scale more steps fall due per pass than the queue holds, so repeat
-    // while steps are still being made.
-    for (int pass = 0; pass < 256; ++pass) {
-      const int64_t l = robot.left_position();
-      const int64_t r = robot.right_position();
-      robot.Tick();
-      robot.Poll();
-      if (robot.left_position() == l && robot.right_position() == r) break;
-    }
+    CatchUpSteps(robot, /*with_task=*/true);
     link.Poll(real_clock.NowUs() / 1000);
     log.CheckConfig();
   }

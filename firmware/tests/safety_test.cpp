@@ -169,6 +169,36 @@ TEST(HostTimeout, StopsMotionWhenTheHostGoesQuietAndRecordsATrip) {
       d.Send({{"cmd", "move_steps"}, {"left", 10}, {"right", 10}})["ok"]);
 }
 
+// The emulator's catch-up before it reads waiting requests: the move goes on
+// and ends, and the host timeout waits for Poll(), after the requests.
+TEST(HostTimeout, UpdateMotionMovesAndEndsAMoveButLeavesTheTimeoutToPoll) {
+  Device d;
+  const json r = d.Send({{"cmd", "move_steps"}, {"left", 100}, {"right", 100}});
+  ASSERT_TRUE(r["ok"]);
+  // One long stall (longer than the move and the host timeout), then the
+  // step interrupt and the motion update until no step is left to make.
+  d.clock.now_us += 2500 * 1000;
+  for (int pass = 0; pass < 256; ++pass) {
+    const int64_t before = d.cube->left_position();
+    d.cube->Tick();
+    d.cube->UpdateMotion();
+    if (d.cube->left_position() == before) break;
+  }
+  EXPECT_EQ(d.cube->left_position(), 100);
+  EXPECT_FALSE(d.cube->running());
+  EXPECT_EQ(d.cube->trips(), 0u);
+  // With a move still running, UpdateMotion() makes steps but never trips.
+  d.Send({{"cmd", "move_steps"}, {"left", 10000}, {"right", 10000}});
+  d.clock.now_us += 2500 * 1000;
+  d.cube->Tick();
+  d.cube->UpdateMotion();
+  EXPECT_TRUE(d.cube->running());
+  EXPECT_EQ(d.cube->trips(), 0u);
+  d.cube->Poll();
+  EXPECT_FALSE(d.cube->running());
+  EXPECT_EQ(d.cube->last_trip().reason, std::string("host_timeout"));
+}
+
 TEST(HostTimeout, HeartbeatsKeepAMoveLongerThanTheTimeoutRunning) {
   Device d;
   const json r =

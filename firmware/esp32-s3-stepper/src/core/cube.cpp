@@ -92,6 +92,11 @@ void Cube::IntegratePending() {
   if (dl != 0 || dr != 0) IntegrateOdometry(pose_, dl, dr, config_.geometry);
 }
 
+void Cube::UpdateMotion() {
+  motion_.Update(clock_.NowUs());
+  IntegratePending();
+}
+
 void Cube::Poll() {
   const uint64_t now = clock_.NowUs();
   motion_.Update(now);

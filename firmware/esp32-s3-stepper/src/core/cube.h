@@ -107,6 +107,11 @@ class Cube : private MotionListener {
   // Task context, about every millisecond: queue refill, end of motion,
   // odometry, host timeout, LED, watchdog.
   void Poll();
+  // The motion part of Poll() alone: queue refill, end of motion, odometry.
+  // The host emulator calls it (with Tick()) before it reads requests, as its
+  // step interrupt runs only between passes of its loop; the host timeout is
+  // left to Poll(), after the requests that were waiting have been read.
+  void UpdateMotion();
   // Interrupt context: executes due steps.
   void Tick();
 
