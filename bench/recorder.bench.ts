@@ -1,8 +1,13 @@
 // The flight recorder's cost on the robot's path: a PhysicalHAL command round trip (setLED over
 // UDP to the emulator) through recordHal, against the same HAL unrecorded, in one run,
-// interleaved (in alternating order): p50 and p99 of each and their ratio (goal: within 5 %).
+// interleaved (in rotating order): p50 and p99 of each and their ratio (goal: within 5 %).
+// A third side runs the same unrecorded HAL again, as a control: its ratio to the first is what
+// this run can resolve. Where the two unrecorded sides differ by more than 5 %, a ratio within
+// 5 % cannot be told from noise, and the run says so instead of calling the goal met or not. The
+// CPU time the hypervisor stole meanwhile (Linux) is reported beside: on a shared virtual
+// machine it is what makes the millisecond stalls at the tail.
 // Three kinds of loop:
-//  - bursts: blocks of 200 calls sent back to back, with a pause after each block, in which the
+//  - bursts: blocks of 500 calls sent back to back, with a pause after each block, in which the
 //    recording's work runs and the block's garbage is collected (the pause is not timed, and is
 //    the same for both sides, so a collection lands in neither side's timing);
 //  - paced: one call every 2 ms (a 500 Hz control loop), the work running between the calls;
@@ -21,6 +26,7 @@ import { McapRecorder, recordHal } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { percentile, reportFigure } from './report/figures.js';
+import { stolenMs } from './report/stolen-time.js';
 
 const ROUNDS = Number(process.env['RECORDER_ROUNDS'] ?? 6000);
 const BLOCK = 500;
@@ -53,21 +59,50 @@ async function calls(
   }
 }
 
-interface Sides {
-  on: number[];
-  off: number[];
-}
+type Side = 'on' | 'off' | 'again';
+type Sides = Record<Side, number[]>;
+const noSides = (): Sides => ({ on: [], off: [], again: [] });
+/** Every order of the three sides, one per round in turn, so none always follows another. */
+const ORDERS: readonly (readonly Side[])[] = [
+  ['off', 'on', 'again'],
+  ['on', 'again', 'off'],
+  ['again', 'off', 'on'],
+  ['off', 'again', 'on'],
+  ['on', 'off', 'again'],
+  ['again', 'on', 'off'],
+];
+const GOAL_RATIO = 1.05;
 
-/** Prints and reports one kind of loop's p50 and p99, recorded against unrecorded. */
-function report(kind: string, sides: Sides, goal: boolean, note: string): void {
-  console.log(`  ${kind}:`);
+/**
+ * Prints and reports one kind of loop's p50 and p99, recorded against unrecorded, beside the
+ * control (unrecorded against itself) and the CPU time stolen while the loop ran (ms).
+ */
+function report(
+  kind: string,
+  sides: Sides,
+  goal: boolean,
+  note: string,
+  stolen: number | undefined,
+): void {
+  const stolenNote =
+    stolen === undefined ? '' : `; ${stolen.toFixed(0)} ms of CPU time stolen by the hypervisor`;
+  console.log(`  ${kind}${stolen === undefined ? '' : ` (${stolen.toFixed(0)} ms stolen)`}:`);
   for (const p of [50, 99]) {
     const recorded = percentile(sides.on, p);
     const plain = percentile(sides.off, p);
+    const again = percentile(sides.again, p);
     const ratio = recorded / plain;
+    const noise = again / plain;
+    // within the goal's margin of each other, the two unrecorded sides let the run tell
+    const resolved = Math.abs(noise - 1) <= GOAL_RATIO - 1;
     console.log(
-      `    p${p}: recorded ${fmt(recorded)}, unrecorded ${fmt(plain)} (${ratio.toFixed(3)}x)`,
+      `    p${p}: recorded ${fmt(recorded)}, unrecorded ${fmt(plain)} (${ratio.toFixed(3)}x); unrecorded again ${fmt(again)} (${noise.toFixed(3)}x${resolved ? '' : ', more than the goal: not resolved'})`,
     );
+    const verdict = goal
+      ? resolved
+        ? { goal: `<= ${GOAL_RATIO}x unrecorded`, met: ratio <= GOAL_RATIO }
+        : { goal: `<= ${GOAL_RATIO}x unrecorded (not resolved in this run)` }
+      : {};
     reportFigure({
       bench: 'recorder',
       name: `UDP round trip p${p}, recorded, ${kind}`,
@@ -75,8 +110,8 @@ function report(kind: string, sides: Sides, goal: boolean, note: string): void {
       unit: 'ms',
       better: 'lower',
       alternative: { name: 'the same HAL unrecorded', value: plain },
-      ...(goal ? { goal: '<= 1.05x unrecorded', met: ratio <= 1.05 } : {}),
-      note: `${note}; setLED to cube-emulator over UDP on 127.0.0.1, recorded into a zstd MCAP file (one call record per call); the p99 of both moves between runs on a shared 2-core machine`,
+      ...verdict,
+      note: `${note}; setLED to cube-emulator over UDP on 127.0.0.1, recorded into a zstd MCAP file (one call record per call); the control, the same HAL unrecorded run again, interleaved, came to ${noise.toFixed(3)}x of the first unrecorded side${stolenNote}`,
     });
   }
 }
@@ -100,9 +135,9 @@ try {
   await recorder.drained();
 
   /**
-   * Runs `rounds` blocks of each side, unrecorded then recorded in even rounds and the other way
-   * in odd ones (so neither side always follows the other), the recording's work done after
-   * each recorded block and `pause` run after every block, neither of them timed.
+   * Runs `rounds` blocks of each side, in the orders of {@link ORDERS} in turn, the recording's
+   * work done after each recorded block and `pause` run after every block, neither of them
+   * timed. Returns the time the recorded blocks took and the CPU time stolen meanwhile.
    */
   async function interleaved(
     into: Sides,
@@ -110,11 +145,11 @@ try {
     block: number,
     paceMs: number,
     pause: () => void = () => undefined,
-  ): Promise<number> {
+  ): Promise<{ recordedMs: number; stolen: number | undefined }> {
+    const stolenBefore = stolenMs();
     let recordedMs = 0;
     for (let round = 0; round < rounds; round++) {
-      const sides = round % 2 === 0 ? (['off', 'on'] as const) : (['on', 'off'] as const);
-      for (const side of sides) {
+      for (const side of ORDERS[round % ORDERS.length]!) {
         const started = performance.now();
         await calls(side === 'on' ? recorded : hal, block, into[side], paceMs);
         if (side === 'on') {
@@ -124,23 +159,29 @@ try {
         pause();
       }
     }
-    return recordedMs;
+    const stolenAfter = stolenMs();
+    const stolen =
+      stolenBefore === undefined || stolenAfter === undefined
+        ? undefined
+        : stolenAfter - stolenBefore;
+    return { recordedMs, stolen };
   }
 
   // Bursts. The recording's work waits while calls come back to back (up to its 250 ms hold);
   // each block's is done, and each block's garbage collected, before the next block.
-  const bursts: Sides = { on: [], off: [] };
+  const bursts = noSides();
   const writtenBefore = recorder.stats().written;
-  const recordedMs = await interleaved(bursts, ROUNDS / BLOCK, BLOCK, 0, gc);
+  const burstRun = await interleaved(bursts, ROUNDS / BLOCK, BLOCK, 0, gc);
+  const recordedMs = burstRun.recordedMs;
   const written = recorder.stats().written - writtenBefore;
 
   // Paced: the work runs in the 2 ms between two calls.
-  const paced: Sides = { on: [], off: [] };
-  await interleaved(paced, PACED_ROUNDS / PACED_BLOCK, PACED_BLOCK, PACE_MS);
+  const paced = noSides();
+  const pacedRun = await interleaved(paced, PACED_ROUNDS / PACED_BLOCK, PACED_BLOCK, PACE_MS);
 
   // Sustained: no pause for longer than the hold, so the work runs between the calls.
-  const sustained: Sides = { on: [], off: [] };
-  await interleaved(sustained, SUSTAINED_STRETCHES, SUSTAINED_STRETCH, 0);
+  const sustained = noSides();
+  const sustainedRun = await interleaved(sustained, SUSTAINED_STRETCHES, SUSTAINED_STRETCH, 0);
 
   // cleaned up through the recording, which stops its link sampling, before the file is closed
   await recorded.cleanup();
@@ -152,18 +193,21 @@ try {
     bursts,
     true,
     `${ROUNDS} calls a side, interleaved blocks of ${BLOCK} back to back, the recording's work done, and each block's garbage collected, in the pause after each block (not timed)`,
+    burstRun.stolen,
   );
   report(
     'paced',
     paced,
     true,
     `${PACED_ROUNDS} calls a side, one every ${PACE_MS} ms, interleaved blocks of ${PACED_BLOCK}`,
+    pacedRun.stolen,
   );
   report(
     'sustained',
     sustained,
     false,
     `${SUSTAINED_STRETCHES} stretches of ${SUSTAINED_STRETCH} calls back to back a side, longer than the recorder's 250 ms hold, so its work runs between the calls`,
+    sustainedRun.stolen,
   );
   const perSecond = written / (recordedMs / 1000);
   const size = statSync(file).size;

@@ -6,6 +6,7 @@ import { collectRecords } from './collect.js';
 import { BENCH_JSON_PREFIX, percentile } from './figures.js';
 import type { Figure } from './figures.js';
 import { figuresTable, formatRatioNumber } from './markdown.js';
+import { stolenMsFromProcStat } from './stolen-time.js';
 import { writeReport } from './write.js';
 
 const latency: Figure = {
@@ -114,6 +115,22 @@ describe('percentile', () => {
     expect(percentile(samples, 50)).toBe(50);
     expect(percentile(samples, 99)).toBe(99);
     expect(percentile(samples, 100)).toBe(100);
+  });
+});
+
+describe('stolenMsFromProcStat', () => {
+  it('reads the steal column of the cpu line, in ms', () => {
+    const text = [
+      'cpu  1965852 7910 314332 11104267 7769 0 6160 254633 0 0',
+      'cpu0 982926 3955 157166 5552133 3884 0 3080 127316 0 0',
+      'intr 1',
+    ].join('\n');
+    expect(stolenMsFromProcStat(text)).toBe(2_546_330);
+  });
+
+  it('is undefined for a kernel without the column or without the line', () => {
+    expect(stolenMsFromProcStat('cpu  1 2 3 4\n')).toBeUndefined();
+    expect(stolenMsFromProcStat('intr 1\n')).toBeUndefined();
   });
 });
 
