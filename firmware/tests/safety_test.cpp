@@ -173,7 +173,8 @@ TEST(HostTimeout, StopsMotionWhenTheHostGoesQuietAndRecordsATrip) {
 // and ends, and the host timeout waits for Poll(), after the requests.
 TEST(HostTimeout, UpdateMotionMovesAndEndsAMoveButLeavesTheTimeoutToPoll) {
   Device d;
-  const json r = d.Send({{"cmd", "move_steps"}, {"left", 100}, {"right", 100}});
+  const json r =
+      d.Send({{"cmd", "move_steps"}, {"left", 100}, {"right", 100}});
   ASSERT_TRUE(r["ok"]);
   // One long stall (longer than the move and the host timeout), then the
   // step interrupt and the motion update until no step is left to make.

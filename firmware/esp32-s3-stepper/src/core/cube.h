@@ -1,6 +1,6 @@
 // The stepper cube: protocol 1.1 (docs/protocol.md) on top of the motion
-// core. One instance per robot. Handle()/HandleOversize()/Poll() run in one
-// task; Tick() runs in the step interrupt.
+// core. One instance per robot. Handle()/HandleOversize()/Poll()/UpdateMotion()
+// run in one task; Tick() runs in the step interrupt.
 #ifndef CUBE_CORE_CUBE_H_
 #define CUBE_CORE_CUBE_H_
 
@@ -107,7 +107,8 @@ class Cube : private MotionListener {
   // Task context, about every millisecond: queue refill, end of motion,
   // odometry, host timeout, LED, watchdog.
   void Poll();
-  // The motion part of Poll() alone: queue refill, end of motion, odometry.
+  // Task context: the motion part of Poll() alone (queue refill, end of
+  // motion, odometry).
   // The host emulator calls it (with Tick()) before it reads requests, as its
   // step interrupt runs only between passes of its loop; the host timeout is
   // left to Poll(), after the requests that were waiting have been read.
