@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -265,28 +266,32 @@ int main(int argc, char** argv) {
     if (opt.exit_on_stdin_eof) fds[n++] = {STDIN_FILENO, POLLIN, 0};
     poll(fds, n, 1);
 
-    // On the board the step interrupt runs on its own, so a request is
-    // answered with every step that fell due before it. Here the steps are
-    // made between passes of this loop, and a process kept off the CPU wakes
-    // up behind: make the steps due now before reading what came in.
-    const bool request_waiting =
-        (fds[0].revents & POLLIN) != 0 ||
-        (pty_index >= 0 && (fds[pty_index].revents & POLLIN) != 0);
-    if (request_waiting) CatchUpSteps(robot, /*with_task=*/false);
-
+    // On the board the step interrupt runs on its own and a request is read
+    // as it comes. Here the steps are made between passes of this loop, and a
+    // process kept off the CPU wakes up behind. So each datagram is handled
+    // at the time the kernel received it: the robot's clock is held there
+    // while the steps, the task (with the host timeout) and the request run.
     if ((fds[0].revents & POLLIN) != 0) {
       for (int i = 0; i < 64; ++i) {
         sockaddr_in from{};
-        const long got = udp.Receive(buf, sizeof(buf), &from);
+        std::chrono::steady_clock::time_point arrived;
+        const long got = udp.Receive(buf, sizeof(buf), &from, &arrived);
         if (got < 0) break;
+        robot_clock.HoldAt(arrived);
+        CatchUpSteps(robot, /*with_task=*/true);
         const size_t len = static_cast<size_t>(got);
         const size_t r = len > cube::kMaxMessage
                              ? robot.HandleOversize(len, reply, sizeof(reply))
                              : robot.Handle(buf, len, reply, sizeof(reply));
+        robot_clock.Release();
         udp.SendTo(reply, r, from);
       }
     }
+    // The pty's bytes carry no time stamp: the steps due now are made
+    // before a frame is read, so a reply counts every step the board's
+    // interrupt would have made.
     if (pty_index >= 0 && (fds[pty_index].revents & POLLIN) != 0) {
+      CatchUpSteps(robot, /*with_task=*/false);
       const ssize_t got = read(pty.fd(), buf, sizeof(buf));
       if (got > 0) {
         link.Receive(buf, static_cast<size_t>(got), real_clock.NowUs() / 1000);

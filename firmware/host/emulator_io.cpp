@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -47,13 +48,49 @@ bool UdpEndpoint::Open(const std::string& address, uint16_t port,
   socklen_t len = sizeof(addr);
   getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len);
   port_ = ntohs(addr.sin_port);
+  // the kernel's receive time of each datagram (best effort: without it a
+  // datagram counts as received when it is read)
+  const int on = 1;
+  setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof(on));
   return true;
 }
 
-long UdpEndpoint::Receive(uint8_t* buf, size_t cap, sockaddr_in* from) {
-  socklen_t len = sizeof(*from);
-  return static_cast<long>(recvfrom(fd_, buf, cap, MSG_TRUNC,
-                                    reinterpret_cast<sockaddr*>(from), &len));
+long UdpEndpoint::Receive(uint8_t* buf, size_t cap, sockaddr_in* from,
+                          std::chrono::steady_clock::time_point* arrived) {
+  iovec iov{buf, cap};
+  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec))];
+  msghdr msg{};
+  msg.msg_name = from;
+  msg.msg_namelen = sizeof(*from);
+  msg.msg_iov = &iov;
+  msg.msg_iovlen = 1;
+  msg.msg_control = control;
+  msg.msg_controllen = sizeof(control);
+  const long got = static_cast<long>(recvmsg(fd_, &msg, MSG_TRUNC));
+  if (got < 0 || arrived == nullptr) return got;
+  const auto steady_now = std::chrono::steady_clock::now();
+  *arrived = steady_now;
+  for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c != nullptr;
+       c = CMSG_NXTHDR(&msg, c)) {
+    if (c->cmsg_level != SOL_SOCKET || c->cmsg_type != SCM_TIMESTAMPNS) {
+      continue;
+    }
+    timespec ts{};
+    std::memcpy(&ts, CMSG_DATA(c), sizeof(ts));
+    // the stamp is on the system clock: taken back to steady_clock by its
+    // age, and never in the future
+    const auto stamped = std::chrono::system_clock::time_point(
+        std::chrono::duration_cast<std::chrono::system_clock::duration>(
+            std::chrono::seconds(ts.tv_sec) +
+            std::chrono::nanoseconds(ts.tv_nsec)));
+    const auto age = std::chrono::system_clock::now() - stamped;
+    if (age.count() > 0) {
+      *arrived = steady_now -
+                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     age);
+    }
+  }
+  return got;
 }
 
 void UdpEndpoint::SendTo(const uint8_t* data, size_t len,

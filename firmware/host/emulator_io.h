@@ -5,6 +5,7 @@
 #include <netinet/in.h>
 
 #include <cstdint>
+#include <chrono>
 #include <string>
 
 #include "cube.h"
@@ -26,7 +27,10 @@ class UdpEndpoint {
   int fd() const { return fd_; }
   uint16_t port() const { return port_; }
   // Reads one datagram: its full length (may exceed cap: then truncated).
-  long Receive(uint8_t* buf, size_t cap, sockaddr_in* from);
+  // `arrived` (when given) is when the kernel received it, on steady_clock
+  // (now, where the kernel gave no time stamp).
+  long Receive(uint8_t* buf, size_t cap, sockaddr_in* from,
+               std::chrono::steady_clock::time_point* arrived = nullptr);
   void SendTo(const uint8_t* data, size_t len, const sockaddr_in& to);
 
  private:

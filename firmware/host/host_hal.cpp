@@ -19,11 +19,23 @@ ScaledClock::ScaledClock(double scale)
     : start_(std::chrono::steady_clock::now()), scale_(scale) {}
 
 uint64_t ScaledClock::NowUs() {
-  const auto real = std::chrono::duration_cast<std::chrono::microseconds>(
-                        std::chrono::steady_clock::now() - start_)
-                        .count();
-  return static_cast<uint64_t>(static_cast<double>(real) * scale_);
+  const auto at = held_ ? held_at_ : std::chrono::steady_clock::now();
+  const auto real =
+      std::chrono::duration_cast<std::chrono::microseconds>(at - start_)
+          .count();
+  const uint64_t us =
+      real <= 0 ? 0
+                : static_cast<uint64_t>(static_cast<double>(real) * scale_);
+  if (us > last_us_) last_us_ = us;
+  return last_us_;
 }
+
+void ScaledClock::HoldAt(std::chrono::steady_clock::time_point t) {
+  held_ = true;
+  held_at_ = t;
+}
+
+void ScaledClock::Release() { held_ = false; }
 
 uint64_t ScaledClock::StartSteadyUs() const {
   return static_cast<uint64_t>(

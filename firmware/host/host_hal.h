@@ -34,13 +34,21 @@ class SystemRandom : public RandomSource {
 class ScaledClock : public Clock {
  public:
   explicit ScaledClock(double scale = 1.0);
+  // Never goes backwards, held or not.
   uint64_t NowUs() override;
   // steady_clock (CLOCK_MONOTONIC on Linux) at the start, microseconds.
   uint64_t StartSteadyUs() const;
+  // Until Release(), reads as at `t` (a request's arrival, so that the core
+  // handles it at the time it came, not at the time the process got to it).
+  void HoldAt(std::chrono::steady_clock::time_point t);
+  void Release();
 
  private:
   std::chrono::steady_clock::time_point start_;
   double scale_;
+  bool held_ = false;
+  std::chrono::steady_clock::time_point held_at_;
+  uint64_t last_us_ = 0;
 };
 
 // Parses "00ff..." into bytes; false on odd length or a non-hex digit.

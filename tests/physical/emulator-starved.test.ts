@@ -1,38 +1,55 @@
-// On the board the step interrupt runs whatever the loop is doing, so a reply always counts every
-// step that fell due before the request. The emulator makes its steps between passes of its
-// loop; on a loaded machine it can be kept off the CPU for longer than a move lasts. This holds
-// that a request waiting when it wakes is answered with the steps due by then, not with the
-// position from before it slept (the fault that made a golden exchange fail under load).
+// On the board the step interrupt runs whatever the loop is doing, and a request is read as it
+// comes. The emulator makes its steps between passes of its loop, and on a loaded machine it can
+// be kept off the CPU for longer than a move lasts. These tests stop it (SIGSTOP) with requests
+// waiting, and hold that each is handled as at the time the kernel received it: a status asked
+// after the move's end counts every step (the fault that made a golden exchange fail under
+// load), and an e-stop sent early in the stall latches then, not when the process runs again.
 import { createSocket } from 'node:dgram';
 import { setTimeout as sleep } from 'node:timers/promises';
 import { afterAll, describe, expect, it } from 'vitest';
+import type { Emulator } from './emulator.js';
 import { startEmulator, stopAllEmulators } from './emulator.js';
+import { robotClock } from './estop-trial.js';
 import { probeStatus } from './robot-probe.js';
 
 afterAll(stopAllEmulators);
 
-async function sendOnce(port: number, request: object): Promise<Record<string, unknown>> {
+/** Sends one seed-style request; resolves its reply. */
+async function request(port: number, body: object): Promise<Record<string, unknown>> {
   const socket = createSocket('udp4');
   try {
     await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
     return await new Promise((resolve, reject) => {
-      const timer = setTimeout(() => reject(new Error('no reply from the emulator in 3 s')), 3000);
+      const timer = setTimeout(() => reject(new Error('no reply from the emulator in 5 s')), 5000);
       socket.once('message', (message) => {
         clearTimeout(timer);
         resolve(JSON.parse(message.toString()) as Record<string, unknown>);
       });
-      socket.send(JSON.stringify(request), port, '127.0.0.1');
+      socket.send(JSON.stringify(body), port, '127.0.0.1');
     });
   } finally {
     socket.close();
   }
 }
 
+/**
+ * Runs `during` with the emulator stopped, and always lets it run again. What `during` gives is
+ * wrapped, so a reply still to come is not awaited while the emulator cannot send it.
+ */
+async function whileStopped<T>(emulator: Emulator, during: () => Promise<T>): Promise<T> {
+  process.kill(emulator.pid, 'SIGSTOP');
+  try {
+    return await during();
+  } finally {
+    process.kill(emulator.pid, 'SIGCONT');
+  }
+}
+
 describe('the emulator kept off the CPU', () => {
-  it('answers a request that waited for it with every step due, and the move ended', async () => {
+  it('answers a status asked after the move ended with every step made and the move done', async () => {
     const emulator = await startEmulator({ pty: false });
     try {
-      const move = await sendOnce(emulator.udpPort, {
+      const move = await request(emulator.udpPort, {
         cmd: 'move_steps',
         left: 100,
         right: -100,
@@ -40,29 +57,55 @@ describe('the emulator kept off the CPU', () => {
       });
       expect(move).toMatchObject({ ok: true, move_id: 1 });
       const durationMs = move['duration_ms'] as number;
-      expect(durationMs).toBeGreaterThan(0);
-      // Stopped for the whole move and more, but for less than the host timeout (2 s).
-      process.kill(emulator.pid, 'SIGSTOP');
-      let resumed = false;
-      try {
-        const stoppedFor = durationMs + 400;
-        expect(stoppedFor).toBeLessThan(2000);
-        const probe = probeStatus(emulator.udpPort, 5000);
-        await sleep(stoppedFor);
-        process.kill(emulator.pid, 'SIGCONT');
-        resumed = true;
-        const { status } = await probe;
-        expect(status).toMatchObject({
-          left_steps: 100,
-          right_steps: -100,
-          running: false,
-          move_id: 1,
-          move_outcome: 'done',
-          safety: { trips: 0, coils_on: false },
-        });
-      } finally {
-        if (!resumed) process.kill(emulator.pid, 'SIGCONT');
-      }
+      // stopped for the whole move and more, but for less than the host timeout (2 s)
+      expect(durationMs + 400).toBeLessThan(2000);
+      const { asked } = await whileStopped(emulator, async () => {
+        await sleep(durationMs + 200);
+        const pending = probeStatus(emulator.udpPort, 5000);
+        await sleep(200);
+        return { asked: pending };
+      });
+      const { status } = await asked;
+      expect(status).toMatchObject({
+        left_steps: 100,
+        right_steps: -100,
+        running: false,
+        move_id: 1,
+        move_outcome: 'done',
+        safety: { trips: 0, coils_on: false },
+      });
+    } finally {
+      await emulator.stop();
+    }
+  });
+
+  it('latches an e-stop sent early in the stall at the time it came, not when it was read', async () => {
+    const emulator = await startEmulator({ pty: false });
+    const now = robotClock(emulator);
+    try {
+      const move = await request(emulator.udpPort, {
+        cmd: 'move_steps',
+        left: 4000,
+        right: 4000,
+        speed: 1000,
+      });
+      expect(move).toMatchObject({ ok: true });
+      let sentUs = 0;
+      let resumedUs = 0;
+      const { answer } = await whileStopped(emulator, async () => {
+        sentUs = now();
+        const pending = request(emulator.udpPort, { cmd: 'estop', reason: 'stall' });
+        await sleep(500);
+        resumedUs = now();
+        return { answer: pending };
+      });
+      const reply = await answer;
+      expect(reply).toMatchObject({ ok: true });
+      const estopUs = Number(reply['estop_us']);
+      expect(estopUs).toBeGreaterThanOrEqual(sentUs);
+      expect(estopUs).toBeLessThan(resumedUs);
+      const status = await probeStatus(emulator.udpPort);
+      expect(status.status).toMatchObject({ running: false, move_outcome: 'estop' });
     } finally {
       await emulator.stop();
     }

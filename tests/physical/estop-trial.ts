@@ -27,6 +27,11 @@ export interface EstopTrial {
   stepsAfterCall: number;
   /** From the call to emergencyStop() resolving, host clock, ms. */
   hostLatencyMs: number;
+  /**
+   * Whether emergencyStop() had resolved while the stuck status request was still waiting: the
+   * stop was not queued behind it (an order, which a loaded machine's delays do not change).
+   */
+  stoppedBeforeStatus: boolean;
   estop: HALToolResult;
   move: HALToolResult;
   /** The HAL for the next trial: a fresh one when the trial abandoned the stuck request. */
@@ -115,7 +120,13 @@ export async function estopTrial(options: {
     proxy.setFaults({ toRobot: options.faults, toHost: options.faults });
   }
   proxy.dropNextReplies(options.lostReplies);
-  const pending = hal.refreshStatus().catch(() => undefined);
+  let statusSettled = false;
+  const pending = hal
+    .refreshStatus()
+    .catch(() => undefined)
+    .finally(() => {
+      statusSettled = true;
+    });
   await sleep(1); // the status request is out
   const calledHost = performance.now();
   const calledRobotUs = now();
@@ -124,6 +135,7 @@ export async function estopTrial(options: {
       ? await hal.safety.emergencyStop('trial')
       : await pending.then(() => hal.safety.emergencyStop('trial'));
   const hostLatencyMs = performance.now() - calledHost;
+  const stoppedBeforeStatus = !statusSettled;
   const move = await moving;
   if (options.faults !== undefined) proxy.setFaults({ toRobot: {}, toHost: {} });
   if (options.reopen === undefined || path === 'queued') {
@@ -151,6 +163,7 @@ export async function estopTrial(options: {
     robotLatencyMs: (stoppedUs - calledRobotUs) / 1000,
     stepsAfterCall: steps(stoppedUs) - steps(calledRobotUs),
     hostLatencyMs,
+    stoppedBeforeStatus,
     estop,
     move,
     hal,

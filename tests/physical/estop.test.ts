@@ -1,7 +1,8 @@
 // The e-stop against the real emulator over real UDP, on a clean and on a lossy link, with a
 // robot driving and a get_status stuck retrying: the stop is never queued behind it, the robot
 // stops and latches, the running move resolves EMERGENCY_STOPPED, and few steps follow the call
-// (measured on the robot's clock). Generous bounds; the figures are in bench/estop.bench.ts.
+// (measured on the robot's clock). The tests hold orders and the robot's own consistency, which a
+// loaded machine's delays do not change; the latency figures are in bench/estop.bench.ts.
 import { PhysicalHAL } from '@hal/physical';
 import { afterAll, describe, expect, it } from 'vitest';
 import { startEmulator, stopAllEmulators } from './emulator.js';
@@ -12,9 +13,6 @@ import { estopTrial, robotClock, setAcceleration, TRIAL_ACCELERATION } from './e
 afterAll(stopAllEmulators);
 
 const TRIALS = 8;
-// A stuck get_status holds the request queue for at least one 500 ms resend: the stop must not
-// wait for it. Generous for a loaded machine, and still well below what the queue would cost.
-const BOUND_MS = 400;
 
 async function rig(faults: Faults) {
   // the default host timeout: the HAL resends every 500 ms, as it would on a real robot
@@ -57,7 +55,9 @@ describe('emergencyStop() against the emulator over UDP', () => {
           expect(trial.move.code, JSON.stringify(trial.move)).toBe('EMERGENCY_STOPPED');
           expect(trial.estop.data?.['moveOutcome']).toBe('estop');
           expect(trial.robotLatencyMs).toBeGreaterThanOrEqual(0);
-          expect(trial.robotLatencyMs).toBeLessThan(BOUND_MS);
+          // the stuck get_status holds the request queue for two 500 ms resends: the stop is
+          // answered while it still waits
+          expect(trial.stoppedBeforeStatus).toBe(true);
           // at 1024 steps/s, 1.024 steps per ms after the call (and one already due)
           expect(trial.stepsAfterCall).toBeLessThanOrEqual(
             Math.ceil(trial.robotLatencyMs * 1.024) + 1,
@@ -109,10 +109,11 @@ describe('emergencyStop() against the emulator over UDP', () => {
         expect(trial.robotLatencyMs).toBeGreaterThanOrEqual(0);
         // a lane trial leaves the stuck request (two 500 ms resends) behind; a queued one waits
         if (path === 'lane') {
-          expect(trial.robotLatencyMs).toBeLessThan(BOUND_MS);
+          expect(trial.stoppedBeforeStatus).toBe(true);
           expect(hal).not.toBe(before);
           expect(before.isReady()).toBe(false);
         } else {
+          expect(trial.stoppedBeforeStatus).toBe(false);
           expect(trial.robotLatencyMs).toBeGreaterThan(900);
           expect(hal).toBe(before);
         }
