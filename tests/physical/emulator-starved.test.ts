@@ -4,33 +4,14 @@
 // waiting, and hold that each is handled as at the time the kernel received it: a status asked
 // after the move's end counts every step (the fault that made a golden exchange fail under
 // load), and an e-stop sent early in the stall latches then, not when the process runs again.
-import { createSocket } from 'node:dgram';
 import { setTimeout as sleep } from 'node:timers/promises';
 import { afterAll, describe, expect, it } from 'vitest';
 import type { Emulator } from './emulator.js';
 import { startEmulator, stopAllEmulators } from './emulator.js';
 import { robotClock } from './estop-trial.js';
-import { probeStatus } from './robot-probe.js';
+import { probeStatus, seedRequest } from './robot-probe.js';
 
 afterAll(stopAllEmulators);
-
-/** Sends one seed-style request; resolves its reply. */
-async function request(port: number, body: object): Promise<Record<string, unknown>> {
-  const socket = createSocket('udp4');
-  try {
-    await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
-    return await new Promise((resolve, reject) => {
-      const timer = setTimeout(() => reject(new Error('no reply from the emulator in 5 s')), 5000);
-      socket.once('message', (message) => {
-        clearTimeout(timer);
-        resolve(JSON.parse(message.toString()) as Record<string, unknown>);
-      });
-      socket.send(JSON.stringify(body), port, '127.0.0.1');
-    });
-  } finally {
-    socket.close();
-  }
-}
 
 /**
  * Runs `during` with the emulator stopped, and always lets it run again. What `during` gives is
@@ -49,7 +30,7 @@ describe('the emulator kept off the CPU', () => {
   it('answers a status asked after the move ended with every step made and the move done', async () => {
     const emulator = await startEmulator({ pty: false });
     try {
-      const move = await request(emulator.udpPort, {
+      const move = await seedRequest(emulator.udpPort, {
         cmd: 'move_steps',
         left: 100,
         right: -100,
@@ -83,7 +64,7 @@ describe('the emulator kept off the CPU', () => {
     const emulator = await startEmulator({ pty: false });
     const now = robotClock(emulator);
     try {
-      const move = await request(emulator.udpPort, {
+      const move = await seedRequest(emulator.udpPort, {
         cmd: 'move_steps',
         left: 4000,
         right: 4000,
@@ -94,7 +75,7 @@ describe('the emulator kept off the CPU', () => {
       let resumedUs = 0;
       const { answer } = await whileStopped(emulator, async () => {
         sentUs = now();
-        const pending = request(emulator.udpPort, { cmd: 'estop', reason: 'stall' });
+        const pending = seedRequest(emulator.udpPort, { cmd: 'estop', reason: 'stall' });
         await sleep(500);
         resumedUs = now();
         return { answer: pending };

@@ -6,12 +6,12 @@
 // between the two instants: what the board's step interrupt makes. (The emulator, on a loaded
 // machine, may make them a little late; that delay is inside the measured time anyway.) Shared by tests/physical/estop.test.ts and
 // bench/estop.bench.ts.
-import { createSocket } from 'node:dgram';
 import { MovePlan } from '@hal/kinematics';
 import type { PhysicalHAL } from '@hal/physical';
 import type { HALToolResult } from '@hal/types';
 import type { Emulator } from './emulator.js';
 import type { FaultProxy, Faults } from './fault-proxy.js';
+import { seedRequest } from './robot-probe.js';
 
 /** The acceleration the trials set, steps/s^2: the move cruises within 10 ms. */
 export const TRIAL_ACCELERATION = 100_000;
@@ -50,23 +50,7 @@ export function robotClock(emulator: Emulator): () => number {
 
 /** Sets the emulator's acceleration with one seed-style datagram (no session is disturbed). */
 export async function setAcceleration(port: number, acceleration: number): Promise<void> {
-  const socket = createSocket('udp4');
-  try {
-    await new Promise<void>((resolve, reject) => {
-      const timer = setTimeout(() => reject(new Error('no reply to set_config')), 2000);
-      socket.once('message', () => {
-        clearTimeout(timer);
-        resolve();
-      });
-      socket.send(
-        JSON.stringify({ cmd: 'set_config', acceleration_steps_per_s2: acceleration }),
-        port,
-        '127.0.0.1',
-      );
-    });
-  } finally {
-    socket.close();
-  }
+  await seedRequest(port, { cmd: 'set_config', acceleration_steps_per_s2: acceleration }, 2000);
 }
 
 const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));

@@ -1,5 +1,5 @@
-// Asks the robot for its status over UDP as any program on the network could: one seed-style
-// `get_status` (no session, so it takes nothing away from the host that holds the session).
+// Talks to the robot over UDP as any program on the network could: seed-style requests (no
+// session, so they take nothing away from the host that holds the session), such as `get_status`.
 import { createSocket } from 'node:dgram';
 
 /** A status reply and when it arrived, on this process's `performance.now()` clock. */
@@ -42,6 +42,34 @@ export async function probeStatus(port: number, timeoutMs = 3000): Promise<Probe
         resolve({ status: reply, receivedAt });
       });
       send();
+    });
+  } finally {
+    socket.close();
+  }
+}
+
+/** Sends one seed-style request to 127.0.0.1:`port` (never resent); resolves its reply. */
+export async function seedRequest(
+  port: number,
+  body: Record<string, unknown> & { cmd: string },
+  timeoutMs = 5000,
+): Promise<Record<string, unknown>> {
+  const socket = createSocket('udp4');
+  try {
+    await new Promise<void>((resolve) => socket.bind(0, '127.0.0.1', resolve));
+    return await new Promise((resolve, reject) => {
+      const timer = setTimeout(
+        () =>
+          reject(
+            new Error(`no reply to ${body.cmd} from 127.0.0.1:${port} within ${timeoutMs} ms`),
+          ),
+        timeoutMs,
+      );
+      socket.once('message', (message) => {
+        clearTimeout(timer);
+        resolve(JSON.parse(message.toString()) as Record<string, unknown>);
+      });
+      socket.send(JSON.stringify(body), port, '127.0.0.1');
     });
   } finally {
     socket.close();

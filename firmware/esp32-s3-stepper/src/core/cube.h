@@ -109,9 +109,9 @@ class Cube : private MotionListener {
   void Poll();
   // Task context: the motion part of Poll() alone (queue refill, end of
   // motion, odometry).
-  // The host emulator calls it (with Tick()) before it reads requests, as its
-  // step interrupt runs only between passes of its loop; the host timeout is
-  // left to Poll(), after the requests that were waiting have been read.
+  // The host emulator calls it (with Tick()) before it reads a serial frame,
+  // as its step interrupt runs only between passes of its loop; the host
+  // timeout is left to Poll(), after the frames that were waiting are read.
   void UpdateMotion();
   // Interrupt context: executes due steps.
   void Tick();
