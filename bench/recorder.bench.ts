@@ -23,7 +23,7 @@
 // per second of recorded calls, and the file's size, are reported beside.
 // Why the settle: with the sides taking turns call by call and the recording's work done after
 // each recorded call, the call after that work stalled (> 0.3 ms) in 0.95 % of cases against
-// 0.6-0.77 % after an unrecorded call, so the unrecorded sides paid for the recording's work.
+// 0.59-0.77 % after an unrecorded call, so the unrecorded sides paid for the recording's work.
 import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
