@@ -20,7 +20,11 @@
 //  - sustained: blocks of 10,000 calls back to back, six a side, far longer than the recorder's
 //    hold, so the work has to run between the calls.
 // The recording goes to a real file (zstd chunks) in the temporary folder; the messages it wrote
-// per second of recorded calls, and the file's size, are reported beside.
+// per second of recorded calls, and the file's size, are reported beside. So is the heap a call
+// allocates on its way, recorded against unrecorded (blocks of 200 back to back, taking turns;
+// a block in which a collection ran, seen as the heap shrinking, is left out): unlike a paced
+// loop's microseconds on a shared machine, it is the same from run to run, and it is what the
+// recording's path leaves for the collector.
 // Why the settle: with the sides taking turns call by call and the recording's work done after
 // each recorded call, the call after that work stalled (> 0.3 ms) in 0.95 % of cases against
 // 0.59-0.77 % after an unrecorded call, so the unrecorded sides paid for the recording's work.
@@ -43,6 +47,8 @@ const SUSTAINED_STRETCH = 10_000;
 const SUSTAINED_STRETCHES = 6;
 const SETTLE_MS = 5;
 const WARMUP = 2000;
+const HEAP_BLOCK = 200;
+const HEAP_BLOCKS = 40;
 
 /** The CPU time stolen since `before` (ms), where it can be read. */
 function stolenSince(before: number | undefined): number | undefined {
@@ -175,6 +181,31 @@ try {
     return { recordedMs, stolen: stolenSince(stolenBefore) };
   }
 
+  /** Heap bytes a call allocates on its way (median over blocks with no collection), by side. */
+  async function heapPerCall(): Promise<{ recorded: number; unrecorded: number; kept: number }> {
+    const perCall: Record<'on' | 'off', number[]> = { on: [], off: [] };
+    for (let i = 0; i < HEAP_BLOCKS; i++) {
+      for (const side of i % 2 === 0 ? (['on', 'off'] as const) : (['off', 'on'] as const)) {
+        const target = side === 'on' ? recorded : hal;
+        const before = process.memoryUsage().heapUsed;
+        await calls(target, HEAP_BLOCK, []);
+        const grew = process.memoryUsage().heapUsed - before;
+        // the recording's work waits while calls come back to back: the path's own allocations
+        if (side === 'on') await recorder.drained();
+        if (grew > 0) perCall[side].push(grew / HEAP_BLOCK);
+      }
+    }
+    if (perCall.on.length === 0 || perCall.off.length === 0) {
+      throw new Error(`a collection ran in every block of ${HEAP_BLOCK} calls of one side`);
+    }
+    return {
+      recorded: percentile(perCall.on, 50),
+      unrecorded: percentile(perCall.off, 50),
+      kept: Math.min(perCall.on.length, perCall.off.length),
+    };
+  }
+  const heap = await heapPerCall();
+
   const bursts = noSides();
   const writtenBefore = recorder.stats().written;
   const burstRun = await interleaved(bursts, ROUNDS / BLOCK, BLOCK);
@@ -210,6 +241,18 @@ try {
     `${SUSTAINED_STRETCHES} stretches of ${SUSTAINED_STRETCH} calls back to back a side, longer than the recorder's 250 ms hold, so its work runs between the calls`,
     sustainedRun.stolen,
   );
+  console.log(
+    `  heap allocated on a call's way: recorded ${heap.recorded.toFixed(0)} B, unrecorded ${heap.unrecorded.toFixed(0)} B (the recording's path: ${(heap.recorded - heap.unrecorded).toFixed(0)} B a call)`,
+  );
+  reportFigure({
+    bench: 'recorder',
+    name: "heap allocated on a recorded call's way",
+    value: heap.recorded,
+    unit: 'B/call',
+    better: 'lower',
+    alternative: { name: 'the same HAL unrecorded', value: heap.unrecorded },
+    note: `median over blocks of ${HEAP_BLOCK} setLED calls back to back, ${HEAP_BLOCKS} a side taking turns, ${heap.kept} a side with no collection; the recording's work (made after the block) is not counted`,
+  });
   const perSecond = written / (burstRun.recordedMs / 1000);
   const size = statSync(file).size;
   console.log(

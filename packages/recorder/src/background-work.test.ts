@@ -44,6 +44,41 @@ describe('BackgroundWork', () => {
     background.stop();
   });
 
+  it('holds the work from callBegan to callEnded, and never counts a call below none', async () => {
+    const { background, add, done } = work();
+    background.callBegan();
+    background.callBegan();
+    add(1, 2);
+    await sleep(30);
+    background.callEnded(0.05);
+    // one of the two calls still on its way
+    await sleep(30);
+    expect(done).toEqual([]);
+    background.callEnded(0.05);
+    await expect.poll(() => done, { timeout: 2000, interval: 5 }).toEqual([1, 2]);
+    // an answer too many is ignored: the next call still holds the work back
+    background.callEnded(0.05);
+    background.callBegan();
+    add(3);
+    await sleep(30);
+    expect(done).toEqual([1, 2]);
+    background.callEnded(0.05);
+    await expect.poll(() => done, { timeout: 2000, interval: 5 }).toEqual([1, 2, 3]);
+    background.stop();
+  });
+
+  it('keeps its window when a call is ended with a duration that is not one', () => {
+    const { background } = work({ sliceMs: 1 });
+    background.callBegan();
+    background.callEnded(0.4);
+    expect(background.windowMs()).toBeCloseTo(0.1, 6);
+    for (const bad of [Number.NaN, -1, Number.POSITIVE_INFINITY]) {
+      background.callBegan();
+      background.callEnded(bad);
+    }
+    expect(background.windowMs()).toBeCloseTo(0.1, 6);
+  });
+
   it('stops between two slices when a call starts, and goes on once it has answered', async () => {
     const { background, add, done } = work({ sliceMs: 1, pieceMs: 0.4 });
     add(...Array.from({ length: 20 }, (_, i) => i));

@@ -74,16 +74,30 @@ export class BackgroundWork {
    * the function that marks it answered (once), at the time it is given or now.
    */
   callStarted(at?: number): (at?: number) => void {
-    this.#inFlight += 1;
     const started = at ?? this.#now();
-    if (this.#catchingUp && this.#options.hasWork()) this.#armWindow();
+    this.callBegan();
     let ended = false;
     return (answeredAt) => {
       if (ended) return;
       ended = true;
-      this.#inFlight -= 1;
-      this.#noteDuration((answeredAt ?? this.#now()) - started);
+      this.callEnded((answeredAt ?? this.#now()) - started);
     };
+  }
+
+  /**
+   * Marks a call on its way, as {@link callStarted} does with no closure to allocate: for a
+   * caller that pairs each with exactly one {@link callEnded} itself (a recorded call's path).
+   */
+  callBegan(): void {
+    this.#inFlight += 1;
+    if (this.#catchingUp && this.#options.hasWork()) this.#armWindow();
+  }
+
+  /** Marks a call begun with {@link callBegan} answered, after `durationMs`. */
+  callEnded(durationMs: number): void {
+    // one too many is ignored: a count below 0 would hold the work back for good
+    if (this.#inFlight > 0) this.#inFlight -= 1;
+    this.#noteDuration(durationMs);
   }
 
   /** There is work: it runs at the next moment with no call on its way. */
@@ -131,6 +145,8 @@ export class BackgroundWork {
   }
 
   #noteDuration(ms: number): void {
+    // a duration a caller got wrong (NaN, < 0) would make every later window NaN long
+    if (!(ms >= 0 && ms < Number.POSITIVE_INFINITY)) return;
     const typical = this.#typicalCallMs;
     // a slow call (a motion, a stall) counts as at most twice the average, so one moves it little
     this.#typicalCallMs =

@@ -9,6 +9,7 @@ import {
 } from './call-values.js';
 import { interceptCalls } from './call-interceptor.js';
 import type { CallHooks, InterceptedCall } from './call-interceptor.js';
+import { Fifo } from './fifo.js';
 import { jsonSafe } from './json-safe.js';
 import { linkTelemetry, sameSteps } from './link-telemetry.js';
 import type { HalCallRecord, SafetyEvent, WheelSteps } from './messages.js';
@@ -48,20 +49,27 @@ export interface RecordHalOptions {
 export const RECORDER_VERSION = '0.1.0';
 
 const SUBSYSTEMS = ['locomotion', 'vision', 'manipulation', 'communication', 'safety'] as const;
-/** What is read of a call the moment it answers, for its record made later. */
-interface Answer {
+/**
+ * One recorded call: made as it starts, filled in with what is read the moment it answers, and
+ * queued for its record, made later. One object a call, with every field set from the start (one
+ * shape): a paced loop's call pays for every allocation on its path.
+ */
+interface CallEntry {
+  info: InterceptedCall;
   /** The file's clock as the call started and as it answered ({@link McapRecorder.stamp}). */
   start: number | bigint;
   end: number | bigint;
+  /** `performance.now()` as it started. */
+  startMs: number;
   durationMs: number;
   outcome: HalCallRecord['outcome'];
   value: unknown;
   /** The pose the call left, asked for as it answered (after an action that can move). */
-  poseAfter?: Promise<Pose>;
+  poseAfter: Promise<Pose> | undefined;
   /** The e-stop latch as it answered. */
   latched: boolean;
   /** The robot's step report as it answered, when it was new (after an action that samples). */
-  steps?: WheelSteps;
+  steps: WheelSteps | undefined;
 }
 
 /** The subsystems whose action calls can move the robot: the pose is read after each of them. */
@@ -213,14 +221,13 @@ export function recordHal<T extends HardwareAbstractionLayer>(
   }
   options.signal?.addEventListener('abort', stopSampling, { once: true });
 
-  /** What follows from a call answered as `answer`, written at `now` (the time it answered). */
+  /** What follows from a call, answered as `call` holds, written at `now` (the time it answered). */
   function afterCall(
-    info: InterceptedCall,
-    answer: Answer,
+    call: CallEntry,
     status: { success: boolean; code?: string },
     now: bigint,
   ): void {
-    const { value } = answer;
+    const { info, value } = call;
     const { success: ok, code } = status;
     const name = info.subsystem ? `${info.subsystem}.${info.method}` : info.method;
     if (name === 'initialize' && ok) onReady();
@@ -236,47 +243,35 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       );
     }
     if (name === 'safety.emergencyStop' || name === 'safety.resetEmergencyStop') {
-      const latched = answer.latched;
       const reason = info.args[0];
       const event: SafetyEvent = {
         event: name === 'safety.emergencyStop' ? 'emergency_stop' : 'reset',
         ...(name === 'safety.emergencyStop' && typeof reason === 'string' ? { reason } : {}),
         success: ok,
         ...(code !== undefined ? { code } : {}),
-        emergency_stopped: latched,
+        emergency_stopped: call.latched,
       };
       write.safety(event, now);
     }
     if (samplesAfter(info)) {
-      if (answer.steps !== undefined) write.steps(answer.steps, now);
+      if (call.steps !== undefined) write.steps(call.steps, now);
       sample();
     }
   }
 
   /**
    * What must be read the moment a call answers: its duration, the latch, and after an action
-   * that can move the robot, the pose. The record itself is made off the call's path (deferred
-   * to a moment with no call on its way), so this is all a call pays on its path. Returns the
-   * time it answered (`performance.now()`).
+   * that can move the robot, the pose, into `call`. The record itself is made off the call's
+   * path (deferred to a moment with no call on its way), so this is all a call pays on its path.
    */
-  function record(
-    info: InterceptedCall,
-    start: number | bigint,
-    startMs: number,
-    outcome: HalCallRecord['outcome'],
-    value: unknown,
-  ): number {
+  function answered(call: CallEntry, outcome: HalCallRecord['outcome'], value: unknown): void {
     const endMs = performance.now();
+    const { info } = call;
     // the file's time it answered: the record, and what it writes beside, are logged at it
-    const end = typeof start === 'number' ? endMs : recorder.clock();
-    const answer: Answer = {
-      start,
-      end,
-      durationMs: Math.max(0, endMs - startMs),
-      outcome,
-      value,
-      latched: lastLatched,
-    };
+    call.end = typeof call.start === 'number' ? endMs : recorder.clock();
+    call.durationMs = Math.max(0, endMs - call.startMs);
+    call.outcome = outcome;
+    call.value = value;
     // The pose this call left is asked for now, before the caller can start another motion.
     try {
       // after a motion, and where the robot stands once ready (the start of the run, for replay)
@@ -286,33 +281,40 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       if ((moved || ready) && hal.isReady()) {
         const poseAfter = hal.locomotion.getPose();
         poseAfter.catch(() => undefined);
-        answer.poseAfter = poseAfter;
+        call.poseAfter = poseAfter;
       }
     } catch {
       // a HAL whose getPose throws at once: no pose after this call
     }
     try {
-      answer.latched = hal.safety.isEmergencyStopped();
+      call.latched = hal.safety.isEmergencyStopped();
     } catch {
       // a HAL whose latch cannot be read now: taken as unchanged
+      call.latched = lastLatched;
     }
     // a latch this call changed is its own event, never taken for a trip by the sampler meanwhile;
     // a change any other call finds is a trip (rare, so written at once)
-    if (info.subsystem === 'safety') lastLatched = answer.latched;
-    else watchLatch(answer.latched);
+    if (info.subsystem === 'safety') lastLatched = call.latched;
+    else watchLatch(call.latched);
     // The report the motion ended on, taken now: by the time the record is made, the next
     // motion's status replies may have replaced it.
-    if (telemetry.steps !== undefined && samplesAfter(info)) {
-      const steps = newSteps();
-      if (steps !== undefined) answer.steps = steps;
-    }
-    recorder.defer(() => recordNow(info, answer));
-    return endMs;
+    if (telemetry.steps !== undefined && samplesAfter(info)) call.steps = newSteps();
+    // one task function for every call (no closure a call): each run takes the oldest call
+    answeredCalls.push(call);
+    recorder.defer(recordNextCall);
+    recorder.callEnded(call.durationMs);
   }
 
-  function recordNow(info: InterceptedCall, answer: Answer): Promise<void> | undefined {
-    const { outcome, value, poseAfter } = answer;
-    const at = recorder.timeOf(answer.end);
+  /** Calls answered whose records wait to be made, oldest first (one deferred task each). */
+  const answeredCalls = new Fifo<CallEntry>();
+  function recordNextCall(): Promise<void> | undefined {
+    const call = answeredCalls.shift();
+    return call === undefined ? undefined : recordNow(call);
+  }
+
+  function recordNow(call: CallEntry): Promise<void> | undefined {
+    const { info, outcome, value, poseAfter } = call;
+    const at = recorder.timeOf(call.end);
     try {
       const failed = outcome === 'rejected' || outcome === 'threw';
       const status = failed ? { success: false, ...errorOf(value) } : failureOf(value);
@@ -322,20 +324,20 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         outcome,
         ...status,
         ...(failed || value === undefined ? {} : { result: jsonSafe(value) }),
-        start_ns: recorder.timeOf(answer.start).toString(),
-        duration_ms: answer.durationMs,
+        start_ns: recorder.timeOf(call.start).toString(),
+        duration_ms: call.durationMs,
       };
       if (poseAfter !== undefined) {
         // the pose this call left, read from the HAL itself, goes with the call (for replay)
         return poseAfter.then(
           (pose) => {
             write.pose(pose, at);
-            finishCall(info, answer, entry, status, at, pose);
+            finishCall(call, entry, status, at, pose);
           },
-          () => finishCall(info, answer, entry, status, at),
+          () => finishCall(call, entry, status, at),
         );
       }
-      finishCall(info, answer, entry, status, at);
+      finishCall(call, entry, status, at);
     } catch (error) {
       scoped(options.logger ?? silentLogger, 'hal:recorder').warn(
         `recorder could not record ${info.method}: ${String(error)}`,
@@ -346,8 +348,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
 
   /** Writes a call's record, with the pose it left when there is one, and what follows from it. */
   function finishCall(
-    info: InterceptedCall,
-    answer: Answer,
+    call: CallEntry,
     entry: HalCallRecord,
     status: { success: boolean; code?: string },
     at: bigint,
@@ -359,33 +360,39 @@ export function recordHal<T extends HardwareAbstractionLayer>(
         : entry,
       at,
     );
-    afterCall(info, answer, status, at);
+    afterCall(call, status, at);
   }
 
-  /** What a call's start leaves for its record. */
-  interface Started {
-    start: number | bigint;
-    startMs: number;
-    answered: (answeredAt: number) => void;
-  }
-  const hooks: CallHooks<Started> = {
-    started(call) {
+  const hooks: CallHooks<CallEntry> = {
+    started(info) {
       const start = recorder.stamp();
       const startMs = typeof start === 'number' ? start : performance.now();
       // the link's last figures and steps, read while the link is still open
       if (
-        call.subsystem === undefined &&
-        call.method === 'cleanup' &&
+        info.method === 'cleanup' &&
+        info.subsystem === undefined &&
         safe(() => hal.isReady(), false)
       ) {
         writeSteps();
         writeLink();
       }
       // the recording's work waits while the call is on its way, so its reply never waits for it
-      return { start, startMs, answered: recorder.callStarted(startMs) };
+      recorder.callBegan();
+      return {
+        info,
+        start,
+        end: start,
+        startMs,
+        durationMs: 0,
+        outcome: 'returned',
+        value: undefined,
+        poseAfter: undefined,
+        latched: lastLatched,
+        steps: undefined,
+      };
     },
-    answered(call, started, outcome, value) {
-      started.answered(record(call, started.start, started.startMs, outcome, value));
+    answered(_info, call, outcome, value) {
+      answered(call, outcome, value);
     },
   };
 

@@ -159,6 +159,19 @@ describe('McapRecorder', () => {
     ]);
   });
 
+  it('holds its work from callBegan to callEnded, as from callStarted to its answer', async () => {
+    const recorder = await McapRecorder.create(memorySink());
+    recorder.channel(TOPICS.calls, CALL_RECORD);
+    await recorder.drained();
+    recorder.callBegan();
+    recorder.defer(() => recorder.write(TOPICS.calls, call(1)));
+    await new Promise((resolve) => setTimeout(resolve, 60));
+    expect(recorder.stats().written).toBe(0);
+    recorder.callEnded(0.05);
+    await expect.poll(() => recorder.stats().written, { timeout: 2000, interval: 5 }).toBe(1);
+    await recorder.close();
+  });
+
   it('refuses a maxHoldMs that is not a finite number of ms >= 0 with INVALID_PARAMETER', async () => {
     for (const maxHoldMs of [-1, Number.NaN, Number.POSITIVE_INFINITY]) {
       await expect(McapRecorder.create(memorySink(), { maxHoldMs })).rejects.toMatchObject({

@@ -249,6 +249,19 @@ export class McapRecorder {
     return this.#work.callStarted(startedAt);
   }
 
+  /**
+   * {@link callStarted} without the closure, for a caller that pairs each call of it with exactly
+   * one {@link callEnded} (`recordHal` does, as a paced loop's call pays for every allocation).
+   */
+  callBegan(): void {
+    this.#work.callBegan();
+  }
+
+  /** Marks a call begun with {@link callBegan} answered, `durationMs` after it began. */
+  callEnded(durationMs: number): void {
+    this.#work.callEnded(durationMs);
+  }
+
   /** What has been written and lost so far. */
   stats(): RecorderStats {
     return {
