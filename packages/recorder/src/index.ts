@@ -1,7 +1,7 @@
 export { McapRecorder } from './recorder.js';
-export type { RecorderOptions, RecorderStats } from './recorder.js';
+export type { RecorderOptions, RecorderStats } from './recorder-options.js';
 export { recordHal, RECORDER_VERSION } from './record-hal.js';
-export type { RecordHalOptions } from './record-hal.js';
+export type { RecordHalOptions } from './record-hal-options.js';
 export { memorySink, openFileSink } from './file-sink.js';
 export type { RecordingSink } from './file-sink.js';
 export { readRecording, readRecordingFile } from './read-recording.js';
