@@ -16,7 +16,8 @@
 //    recording's work waits while calls come back to back (up to its 250 ms hold);
 //  - paced: blocks of 20 calls, one every 2 ms (a 500 Hz control loop), 5,000 calls a side
 //    (RECORDER_PACED_ROUNDS sets it); the work runs between the calls, as the recorder
-//    schedules it;
+//    schedules it, and the recorded calls are also split by whether a turn of that work came
+//    right before them (the cost it leaves to the call after it);
 //  - sustained: blocks of 10,000 calls back to back, six a side, far longer than the recorder's
 //    hold, so the work has to run between the calls.
 // The recording goes to a real file (zstd chunks) in the temporary folder; the messages it wrote
@@ -59,17 +60,38 @@ function stolenSince(before: number | undefined): number | undefined {
 const fmt = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
 const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 
-/** `rounds` calls, each timed into `into`; `paceMs` > 0 waits that long between calls. */
+/** A recorded side's calls, by whether the recording wrote anything since the call before. */
+interface AfterWork {
+  recorder: McapRecorder;
+  /** Calls that came right after a turn of the recording's work. */
+  after: number[];
+  /** Calls with no work since the one before. */
+  others: number[];
+}
+
+/**
+ * `rounds` calls, each timed into `into`; `paceMs` > 0 waits that long between calls. With
+ * `split`, each call but the first also goes into `split.after` or `split.others` (read between
+ * the calls, untimed, from the recorder's count of messages written).
+ */
 async function calls(
   hal: HardwareAbstractionLayer,
   rounds: number,
   into: number[],
   paceMs = 0,
+  split?: AfterWork,
 ): Promise<void> {
+  let written = split?.recorder.stats().written ?? 0;
   for (let i = 0; i < rounds; i++) {
+    const worked = split !== undefined && split.recorder.stats().written !== written;
     const start = performance.now();
     const result = await hal.communication.setLED(i % 256, 0, 0, 'solid');
-    into.push(performance.now() - start);
+    const took = performance.now() - start;
+    into.push(took);
+    if (split !== undefined) {
+      if (i > 0) (worked ? split.after : split.others).push(took);
+      written = split.recorder.stats().written;
+    }
     if (!result.success) throw new Error(`setLED failed: ${result.error}`);
     if (paceMs > 0) await sleep(paceMs);
   }
@@ -162,6 +184,7 @@ try {
     rounds: number,
     block: number,
     paceMs = 0,
+    split?: AfterWork,
   ): Promise<{ recordedMs: number; stolen: number | undefined }> {
     const stolenBefore = stolenMs();
     let recordedMs = 0;
@@ -171,7 +194,7 @@ try {
         await sleep(SETTLE_MS);
         const started = performance.now();
         await calls(target, 1, [], paceMs);
-        await calls(target, block, into[side], paceMs);
+        await calls(target, block, into[side], paceMs, side === 'on' ? split : undefined);
         if (side === 'on') {
           recordedMs += performance.now() - started;
           await recorder.drained();
@@ -211,7 +234,14 @@ try {
   const burstRun = await interleaved(bursts, ROUNDS / BLOCK, BLOCK);
   const written = recorder.stats().written - writtenBefore;
   const paced = noSides();
-  const pacedRun = await interleaved(paced, PACED_ROUNDS / PACED_BLOCK, PACED_BLOCK, PACE_MS);
+  const pacedSplit: AfterWork = { recorder, after: [], others: [] };
+  const pacedRun = await interleaved(
+    paced,
+    PACED_ROUNDS / PACED_BLOCK,
+    PACED_BLOCK,
+    PACE_MS,
+    pacedSplit,
+  );
   const sustained = noSides();
   const sustainedRun = await interleaved(sustained, SUSTAINED_STRETCHES, SUSTAINED_STRETCH);
 
@@ -234,6 +264,21 @@ try {
     `${PACED_ROUNDS} calls a side, interleaved blocks of ${PACED_BLOCK}, one call every ${PACE_MS} ms, each block after a settle of ${SETTLE_MS} ms, the recording's work left done after each recorded block (not timed)`,
     pacedRun.stolen,
   );
+  const after = percentile(pacedSplit.after, 50);
+  const others = percentile(pacedSplit.others, 50);
+  const share = pacedSplit.after.length / (pacedSplit.after.length + pacedSplit.others.length);
+  console.log(
+    `    recorded, right after a turn of the recording's work (${(share * 100).toFixed(0)} % of the calls): p50 ${fmt(after)}; the others: p50 ${fmt(others)}`,
+  );
+  reportFigure({
+    bench: 'recorder',
+    name: "UDP round trip p50, recorded, paced, right after a turn of the recording's work",
+    value: after,
+    unit: 'ms',
+    better: 'lower',
+    alternative: { name: 'the recorded calls with no work since the one before', value: others },
+    note: `${pacedSplit.after.length} of the paced recorded calls (${(share * 100).toFixed(0)} %) came right after the recording wrote something, ${pacedSplit.others.length} with nothing written since the call before; told apart by the recorder's count of messages written, read between the calls`,
+  });
   report(
     'sustained',
     sustained,
