@@ -9,8 +9,8 @@ import { Fifo } from './fifo.js';
 import type { RecordingSink } from './file-sink.js';
 import { openFileSink } from './file-sink.js';
 import type { NamedJsonSchema } from './foxglove-schemas.js';
-import type { RecorderOptions, RecorderStats } from './recorder-options.js';
 import { RECORDER_LOSS, TOPICS } from './messages.js';
+import type { RecorderOptions, RecorderStats } from './recorder-options.js';
 import { utf8 } from './utf8.js';
 
 /** A message for the writer: data, not a closure, as there is one for every record. */
