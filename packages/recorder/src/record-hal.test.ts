@@ -240,6 +240,47 @@ describe('recordHal', () => {
     expect(steps).toEqual([10, 20]);
   });
 
+  it('records calls answered out of order, and two robots sharing one recorder, each with its own', async () => {
+    const one = new SimulationHAL({ deviceId: 'sim-a' });
+    const two = new SimulationHAL({ deviceId: 'sim-b' });
+    // setLED answers when the test says, with the red value it was given
+    const answers: (() => void)[] = [];
+    for (const sim of [one, two]) {
+      sim.communication.setLED = (r: number) =>
+        new Promise((resolve) => {
+          answers[r] = () => resolve({ success: true, mode: 'simulation', r } as never);
+        });
+    }
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink);
+    const a = recordHal(one, recorder, { posePeriodMs: 0, namespace: 'a' });
+    const b = recordHal(two, recorder, { posePeriodMs: 0, namespace: 'b' });
+    const pending = [
+      a.communication.setLED(1, 0, 0, 'solid'),
+      b.communication.setLED(2, 0, 0, 'solid'),
+      a.communication.setLED(3, 0, 0, 'solid'),
+    ];
+    // answered in the order 3, 2, 1
+    for (const r of [3, 2, 1]) {
+      answers[r]!();
+      await pending[r - 1];
+    }
+    await recorder.close();
+    const recording = await readRecording(sink.bytes());
+    expectWellFormed(recording);
+    const byTopic = (topic: string) =>
+      recording.messages
+        .filter((m) => m.topic === topic)
+        .map((m) => m.value as HalCallRecord)
+        .map((c) => [c.args[0], (c.result as { r?: number } | undefined)?.r]);
+    // each record holds its own call's arguments and result, in the order the calls answered
+    expect(byTopic('/a/hal/calls')).toEqual([
+      [3, 3],
+      [1, 1],
+    ]);
+    expect(byTopic('/b/hal/calls')).toEqual([[2, 2]]);
+  });
+
   it('leaves the wrapped HAL untouched: the same results and its own properties', async () => {
     const inner = new SimulationHAL({ deviceId: 'same' });
     const hal = recordHal(inner, await McapRecorder.create(memorySink()), { posePeriodMs: 0 });

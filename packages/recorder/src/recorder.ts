@@ -44,7 +44,7 @@ const DEFERRED_WAIT_MS = 2000;
  * An MCAP file being written, chunked and compressed, with JSON-encoded channels. Every method
  * but {@link close} returns at once: records wait in a bounded queue that a single background
  * loop hands to the writer in order, so no caller ever waits for the disk. The loop works in
- * the moments no recorded call is on its way to the robot ({@link callStarted}), so a reply
+ * the moments no recorded call is on its way to the robot ({@link callBegan}), so a reply
  * never waits for the recording's work; once work has waited `maxHoldMs`, it goes on in short
  * windows while calls wait for their replies. A full queue or a failed disk drops messages,
  * counts them, logs it, and says so in the file at close.
@@ -202,9 +202,9 @@ export class McapRecorder {
    * Marks a call on its way to the robot: until the function it returns is called (once the
    * call has answered), the recording's work waits, so the call's reply never waits for it.
    * Past `maxHoldMs` of calls back to back, a window of it runs while the call waits for its
-   * reply, of a quarter of a typical call's round trip. `recordHal` calls it around every call.
-   * The call's start and answer, as `performance.now()` times, may be given where the caller
-   * has read them already.
+   * reply, of a quarter of a typical call's round trip. The call's start and answer, as
+   * `performance.now()` times, may be given where the caller has read them already.
+   * (`recordHal` uses {@link callBegan} and {@link callEnded}, the same with no closure.)
    */
   callStarted(startedAt?: number): (answeredAt?: number) => void {
     return this.#work.callStarted(startedAt);
