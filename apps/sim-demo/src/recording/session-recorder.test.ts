@@ -51,6 +51,59 @@ describe('SessionRecorder', () => {
     await hal.cleanup();
   }, 30_000); // frames rendered in software: seconds on a loaded machine
 
+  it('waits at stop for the camera frame being captured, so it is in the file, not dropped', async () => {
+    const hal = new SimulationHAL();
+    await hal.initialize();
+    const capture = hal.vision.captureFrame.bind(hal.vision);
+    let release: () => void = () => undefined;
+    const gate = new Promise<void>((resolve) => (release = resolve));
+    let asked = 0;
+    hal.vision.captureFrame = async () => {
+      asked += 1;
+      await gate;
+      return capture();
+    };
+    const sessions = new SessionRecorder({ cameraPeriodMs: 10, captureWaitMs: 20_000 });
+    await sessions.start(hal, 'empty');
+    const deadline = Date.now() + 5_000;
+    while (asked === 0 && Date.now() < deadline) await new Promise((r) => setTimeout(r, 5));
+    expect(asked).toBe(1);
+    let stopped = false;
+    const stopping = sessions.stop().then((finished) => {
+      stopped = true;
+      return finished;
+    });
+    await new Promise((r) => setTimeout(r, 50));
+    expect(stopped).toBe(false); // still waiting for the frame
+    release();
+    const { bytes, stats } = await stopping;
+    expect(asked).toBe(1); // no capture started after stop
+    expect(stats.dropped).toBe(0);
+    const recording = await readRecording(bytes);
+    expect(recording.channels.get(TOPICS.camera)?.messageCount).toBe(1);
+    await hal.cleanup();
+  }, 30_000);
+
+  it('stops within captureWaitMs when a camera frame never comes', async () => {
+    const hal = new SimulationHAL();
+    await hal.initialize();
+    let asked = 0;
+    hal.vision.captureFrame = () => {
+      asked += 1;
+      return new Promise<string>(() => undefined);
+    };
+    const sessions = new SessionRecorder({ cameraPeriodMs: 10, captureWaitMs: 100 });
+    await sessions.start(hal, 'empty');
+    const deadline = Date.now() + 5_000;
+    while (asked === 0 && Date.now() < deadline) await new Promise((r) => setTimeout(r, 5));
+    expect(asked).toBe(1);
+    const { bytes } = await sessions.stop();
+    const recording = await readRecording(bytes);
+    expect(recording.complete).toBe(true);
+    expect(recording.channels.get(TOPICS.camera)?.messageCount ?? 0).toBe(0);
+    await hal.cleanup();
+  });
+
   it('refuses a second recording while one runs, and a stop with none running', async () => {
     const hal = new SimulationHAL();
     await hal.initialize();

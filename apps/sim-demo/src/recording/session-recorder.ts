@@ -4,6 +4,12 @@ import type { SimulationHAL } from '@hal/simulation';
 /** How often the page captures a camera frame into the recording, ms (2 frames a second). */
 export const CAMERA_PERIOD_MS = 500;
 
+/**
+ * The longest `stop` waits for a camera frame still being captured, ms. A frame rendered in
+ * software takes seconds on a loaded machine; one still out after this is dropped and counted.
+ */
+export const CAPTURE_WAIT_MS = 5_000;
+
 /** A finished recording, ready to download. */
 export interface FinishedRecording {
   bytes: Uint8Array;
@@ -18,6 +24,8 @@ interface Active {
   sink: ReturnType<typeof memorySink>;
   stopSampling: AbortController;
   camera: ReturnType<typeof setInterval>;
+  /** The camera frame being captured through the recorded HAL, if one is. */
+  capturing: Promise<void> | undefined;
   /** Camera frames captured through the recorded HAL so far. */
   frames: number;
   startedAt: Date;
@@ -32,11 +40,13 @@ interface Active {
  */
 export class SessionRecorder {
   readonly #cameraPeriodMs: number;
+  readonly #captureWaitMs: number;
   #active: Active | undefined;
   #starting = false;
 
-  constructor(options: { cameraPeriodMs?: number } = {}) {
+  constructor(options: { cameraPeriodMs?: number; captureWaitMs?: number } = {}) {
     this.#cameraPeriodMs = options.cameraPeriodMs ?? CAMERA_PERIOD_MS;
+    this.#captureWaitMs = options.captureWaitMs ?? CAPTURE_WAIT_MS;
   }
 
   get recording(): boolean {
@@ -82,16 +92,14 @@ export class SessionRecorder {
       map: { name: mapName },
       signal: stopSampling.signal,
     });
-    let capturing = false;
     const camera = setInterval(() => {
-      if (capturing) return;
-      capturing = true;
-      recorded.vision.captureFrame().then(
+      if (active.capturing !== undefined) return;
+      active.capturing = recorded.vision.captureFrame().then(
         () => {
-          capturing = false;
+          active.capturing = undefined;
           active.frames += 1;
         },
-        () => (capturing = false),
+        () => (active.capturing = undefined),
       );
     }, this.#cameraPeriodMs);
     const active: Active = {
@@ -101,18 +109,31 @@ export class SessionRecorder {
       sink,
       stopSampling,
       camera,
+      capturing: undefined,
       frames: 0,
       startedAt: new Date(),
     };
     return active;
   }
 
-  /** Ends the recording and hands back the file. */
+  /**
+   * Ends the recording and hands back the file. A camera frame still being captured is waited
+   * for (at most `captureWaitMs`), so the session's own last frame is in the file, not counted
+   * as dropped; calls the page makes after this are no longer recorded.
+   */
   async stop(): Promise<FinishedRecording> {
     const active = this.#active;
     if (active === undefined) throw new Error('no recording is running');
     this.#active = undefined;
     clearInterval(active.camera);
+    if (active.capturing !== undefined) {
+      let timer: ReturnType<typeof setTimeout> | undefined;
+      await Promise.race([
+        active.capturing,
+        new Promise((resolve) => (timer = setTimeout(resolve, this.#captureWaitMs))),
+      ]);
+      clearTimeout(timer);
+    }
     active.stopSampling.abort();
     const stats = await active.recorder.close();
     const stamp = active.startedAt.toISOString().replace(/[:.]/g, '-');
