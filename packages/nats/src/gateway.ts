@@ -4,7 +4,6 @@ import {
   ServedCalls,
   V1_ROBOT,
   findCall,
-  isHalError,
   sanitizeEstopReason,
   scoped,
   silentLogger,
@@ -12,18 +11,17 @@ import {
 } from '@hal/types';
 import type {
   CallSpec,
-  CallTable,
   HALToolResult,
-  HalErrorPayload,
   HardwareAbstractionLayer,
-  Logger,
   RobotConfig,
   ScopedLogger,
 } from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
+import { announcementOf, cameraFrameOf, healthOf } from './device-reports.js';
+import { errorPayload } from './error-payload.js';
+import type { GatewayOptions } from './gateway-options.js';
 import { decodeArgs, decodeMessage, decodeSpecMessage, encodeMessage } from './codec.js';
 import { CpuMeter } from './cpu-meter.js';
-import type { NatsConnectionSource } from './connection.js';
 import { resolveConnection } from './connection.js';
 import { refuseServedTwice } from './served-probe.js';
 import { wheelPowersFor } from './drive-mapping.js';
@@ -31,7 +29,6 @@ import { offersStream, readDifferentialState, readImu, readRange } from './gatew
 import type { OfferedStreams } from './gateway-streams.js';
 import { natsCalls } from './hal-calls.js';
 import type { NatsCall } from './hal-calls.js';
-import { jpegSize } from './jpeg-size.js';
 import {
   CameraFrameRequestSchema,
   DifferentialCommandSchema,
@@ -39,36 +36,10 @@ import {
   HealthRequestSchema,
   SCHEMAS,
 } from './messages.js';
-import type { CapabilityAnnouncement, Health, HalCallReply } from './messages.js';
+import type { CapabilityAnnouncement, HalCallReply } from './messages.js';
 import { subjectFor } from './subjects.js';
 import type { SubjectName } from './subjects.js';
-import { getHeapStatistics } from 'node:v8';
 import { z } from 'zod';
-
-export type GatewayOptions = NatsConnectionSource & {
-  /** The device id used in `hal.v1.dev.{deviceId}...` subjects and as the envelope's sender. */
-  deviceId: string;
-  /**
-   * Whether this gateway also answers the spec's bare subjects (`hal.v1.motor.differential.cmd`)
-   * and streams on them: the device a spec-only client talks to. Default true; in a fleet exactly
-   * one device (or none) is the default.
-   */
-  defaultDevice?: boolean;
-  /** State stream rate, Hz (10..100; 0 turns the streams off). Default 20. */
-  stateRateHz?: number;
-  /**
-   * An open-ended drive (no duration) is stopped when its controller has sent nothing (command or
-   * heartbeat) for this long, ms. Default 3000.
-   */
-  controllerTimeoutMs?: number;
-  /** How often the capability announcement is repeated, ms. Default 5000. */
-  announceIntervalMs?: number;
-  /** Geometry and limits for mapping body velocities onto wheels. Default the V1 robot. */
-  robot?: RobotConfig;
-  logger?: Logger;
-  /** The calls served on `hal.call.req`; default the HAL's own call table. */
-  calls?: CallTable;
-};
 
 /** A HAL served on NATS. The HAL stays the caller's: `close()` does not clean it up. */
 export interface HalGateway {
@@ -346,44 +317,17 @@ class Gateway implements HalGateway {
 
   async #onHealth(msg: Msg): Promise<void> {
     const request = decodeSpecMessage(msg.data, HealthRequestSchema).payload;
-    const status = this.hal.safety.getSafetyStatus();
-    const health: Health = {
-      status: !this.hal.isReady()
-        ? 'not_ready'
-        : status.emergencyStopped
-          ? 'emergency_stopped'
-          : status.errors.length > 0
-            ? 'degraded'
-            : 'healthy',
-      uptime_s: (Date.now() - this.#started) / 1000,
-      mode: this.hal.mode,
-      free_memory_bytes: getHeapStatistics().total_available_size,
-      cpu_percent: this.#cpu.percent(),
-      battery_percent: status.batteryLevel,
-    };
-    if (status.temperature !== undefined) health.temperature_celsius = status.temperature;
-    if (request.include_diagnostics === true) {
-      health.diagnostics = { errors: status.errors };
-      if (status.batteryVoltage !== undefined) health.diagnostics.voltage = status.batteryVoltage;
-    }
+    const health = healthOf(this.hal, {
+      uptimeS: (Date.now() - this.#started) / 1000,
+      cpuPercent: this.#cpu.percent(),
+      includeDiagnostics: request.include_diagnostics === true,
+    });
     await this.#reply(msg, SCHEMAS.health, health);
   }
 
   async #onCamera(msg: Msg): Promise<void> {
     decodeSpecMessage(msg.data, CameraFrameRequestSchema);
-    const url = await this.hal.vision.captureFrame();
-    const data = url.slice(url.indexOf(',') + 1);
-    const size = jpegSize(Buffer.from(data, 'base64'));
-    if (size === undefined) {
-      throw new HalError('HARDWARE_ERROR', 'the camera returned a frame that is not a JPEG');
-    }
-    await this.#reply(msg, SCHEMAS.cameraFrame, {
-      format: 'jpeg',
-      width: size.width,
-      height: size.height,
-      data,
-      timestamp_ms: Date.now(),
-    });
+    await this.#reply(msg, SCHEMAS.cameraFrame, await cameraFrameOf(this.hal));
   }
 
   async #onLog(msg: Msg): Promise<void> {
@@ -395,13 +339,7 @@ class Gateway implements HalGateway {
   }
 
   #announcement(): CapabilityAnnouncement {
-    const info = this.hal.getDeviceInfo();
-    return {
-      device_type: info.type,
-      mode: info.mode,
-      caps: info.capabilities,
-      state_rate_hz: this.options.stateRateHz ?? 20,
-    };
+    return announcementOf(this.hal, this.options.stateRateHz ?? 20);
   }
 
   /**
@@ -449,12 +387,4 @@ function callSpec(name: 'drive' | 'stop'): CallSpec {
   const spec = findCall(name);
   if (spec === undefined) throw new HalError('HARDWARE_ERROR', `the call table has no "${name}"`);
   return spec;
-}
-
-/** The spec's error shape for anything thrown. */
-export function errorPayload(thrown: unknown): HalErrorPayload {
-  const error = isHalError(thrown) ? thrown : toHalError(thrown);
-  const payload: HalErrorPayload = { code: error.code, message: error.message };
-  if (error.details !== undefined) payload.details = error.details;
-  return payload;
 }

@@ -1,7 +1,9 @@
-export { serveHalOnNats, errorPayload } from './gateway.js';
+export { serveHalOnNats } from './gateway.js';
+export { errorPayload } from './error-payload.js';
 export { refuseServedTwice } from './served-probe.js';
 export type { ServedProbe } from './served-probe.js';
-export type { GatewayOptions, HalGateway } from './gateway.js';
+export type { HalGateway } from './gateway.js';
+export type { GatewayOptions } from './gateway-options.js';
 export { NatsHAL } from './nats-hal.js';
 export type { NatsHALOptions } from './nats-hal.js';
 export { openConnection } from './connection.js';
