@@ -210,6 +210,39 @@ describe('recordHal', () => {
     expect(events).toEqual([{ event: 'latched', success: true, emergency_stopped: true }]);
   });
 
+  it('waits at close for a pose sample still being read, so it is written, not dropped', async () => {
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink);
+    const inner = new SimulationHAL();
+    const hal = recordHal(inner, recorder, { posePeriodMs: 0 });
+    await hal.initialize();
+    await recorder.drained();
+    const before = recorder.stats().written;
+    // a remote robot: a pose read takes a round trip
+    const getPose = inner.locomotion.getPose.bind(inner.locomotion);
+    inner.locomotion.getPose = async () => {
+      await new Promise((resolve) => setTimeout(resolve, 50));
+      return getPose();
+    };
+    // a motion's pose sample starts once its record is made; close right after that
+    expect((await hal.communication.setLED(1, 2, 3, 'solid')).success).toBe(true);
+    expect((await hal.locomotion.stop()).success).toBe(true);
+    const stats = await recorder.close();
+    expect(stats.written).toBeGreaterThan(before);
+    const recording = await readRecording(sink.bytes());
+    expectWellFormed(recording);
+    // the pose initialize left and the sample as it became ready, the pose the stop left, and
+    // the sample after the stop (started while the stop's record was made, during close)
+    expect(recording.messages.filter((m) => m.topic === TOPICS.pose)).toHaveLength(4);
+    // nothing came in after the file was closed, to be dropped there
+    await new Promise((resolve) => setTimeout(resolve, 100));
+    expect(recorder.stats().dropped).toBe(0);
+    // a call after the close still answers its caller; its record is dropped and counted
+    expect((await hal.communication.setLED(4, 5, 6, 'solid')).success).toBe(true);
+    await expect.poll(() => recorder.stats().dropped, { timeout: 2000 }).toBe(1);
+    await inner.cleanup();
+  });
+
   it("records the step report a motion ended on, though the next motion's replaced it before the record was made", async () => {
     // a HAL that reports steps as PhysicalHAL does, its report set by the test
     const report = (steps: number) => ({

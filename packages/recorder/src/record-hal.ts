@@ -131,7 +131,7 @@ export function recordHal<T extends HardwareAbstractionLayer>(
     sampling = true;
     const askedAt = recorder.clock();
     try {
-      hal.locomotion.getPose().then(
+      const read = hal.locomotion.getPose().then(
         (pose) => {
           sampling = false;
           write.pose(pose, askedAt);
@@ -140,6 +140,9 @@ export function recordHal<T extends HardwareAbstractionLayer>(
           sampling = false;
         },
       );
+      // A read still on its way (a remote robot's round trip) as the recording closes is waited
+      // for (at most 2 s), so its sample is in the file rather than counted dropped.
+      recorder.defer(() => read);
     } catch {
       // a HAL whose getPose throws at once: nothing to sample this time
       sampling = false;
