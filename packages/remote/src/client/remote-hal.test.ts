@@ -157,6 +157,21 @@ describe('RemoteHAL', () => {
     expect((await first.locomotion.moveForward(1)).code).toBe('NOT_CONTROLLER');
   });
 
+  it("names the device by the server's deviceId, else by the served HAL's own id", async () => {
+    const named = await served({ deviceId: 'cube-emulator' });
+    const hal = remote({ url: named.server.url });
+    await hal.initialize();
+    expect(hal.getDeviceInfo()).toMatchObject({
+      id: 'cube-emulator',
+      type: named.sim.getDeviceInfo().type,
+      capabilities: named.sim.getDeviceInfo().capabilities,
+    });
+    const plain = await served();
+    const other = remote({ url: plain.server.url });
+    await other.initialize();
+    expect(other.getDeviceInfo().id).toBe(plain.sim.getDeviceInfo().id);
+  });
+
   it("with control: 'take', takes control on connecting", async () => {
     const { server } = await served();
     const first = remote({ url: server.url });

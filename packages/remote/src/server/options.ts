@@ -17,7 +17,10 @@ export interface ServeHalOptions {
   heartbeatTimeoutMs?: number;
   /** Bigger messages get a MALFORMED error reply (the connection stays). Default 64 KiB. */
   maxMessageBytes?: number;
-  /** `device_id` of the server's messages. Default the served HAL's device id. */
+  /**
+   * The device's id: the `device_id` of the server's messages, and the id its hello gives the
+   * device (a client's `getDeviceInfo().id`). Default the served HAL's device id.
+   */
   deviceId?: string;
   logger?: Logger;
   /** The calls served; default the HAL's own call table. */

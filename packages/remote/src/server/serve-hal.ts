@@ -234,7 +234,8 @@ export async function serveHal(
       session_id: session.id,
       role: session.role,
       mode: hal.mode,
-      device: info,
+      // the id the server goes by (a physical robot's HAL knows no name of its own)
+      device: options.deviceId === undefined ? info : { ...info, id: options.deviceId },
       heartbeat_timeout_ms: heartbeatTimeoutMs,
       state_rate_hz: stateRateHz,
       max_message_bytes: maxMessageBytes,
