@@ -17,7 +17,7 @@ export function buildProgram(io: CliIO): Command {
     .option('--json', 'machine-readable output: JSON lines on stdout, errors as JSON', false)
     .showHelpAfterError('(run with --help for usage)')
     .exitOverride()
-    .configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) })
+    .configureOutput(output(io))
     .version(version);
   const global = (): GlobalOptions => ({ json: program.opts<{ json: boolean }>().json });
   for (const register of COMMANDS) register(program, { io, global });
@@ -25,10 +25,23 @@ export function buildProgram(io: CliIO): Command {
   // CLI's output and exits the same way, never through process.exit
   const pending = [...program.commands];
   for (let sub = pending.pop(); sub !== undefined; sub = pending.pop()) {
-    sub.exitOverride().configureOutput({ writeOut: (s) => io.out(s), writeErr: (s) => io.err(s) });
+    sub.exitOverride().configureOutput(output(io));
     pending.push(...sub.commands);
   }
   return program;
+}
+
+/**
+ * Where commander writes: the CLI's output, and a usage error in the CLI's one-line form
+ * (`hal: USAGE: message`, as every other failure), not commander's `error: message`.
+ */
+function output(io: CliIO) {
+  return {
+    writeOut: (s: string) => io.out(s),
+    writeErr: (s: string) => io.err(s),
+    outputError: (s: string, write: (s: string) => void) =>
+      write(s.replace(/^error: /, 'hal: USAGE: ')),
+  };
 }
 
 /** The JSON shape of an error with --json. */
