@@ -6,7 +6,7 @@ export const CAMERA_PERIOD_MS = 500;
 
 /**
  * The longest `stop` waits for a camera frame still being captured, ms. A frame rendered in
- * software takes seconds on a loaded machine; one still out after this is dropped and counted.
+ * software takes seconds on a loaded machine; one still out after this is left out of the file.
  */
 export const CAPTURE_WAIT_MS = 5_000;
 
