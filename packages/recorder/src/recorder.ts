@@ -1,4 +1,4 @@
-import { scoped, silentLogger } from '@hal/types';
+import { scoped, silentLogger, withTimeout } from '@hal/types';
 import type { ScopedLogger } from '@hal/types';
 import { McapWriter } from '@mcap/core';
 import { BackgroundWork } from './background-work.js';
@@ -245,12 +245,8 @@ export class McapRecorder {
       await this.#sink.flushed?.();
       const left = deadline - performance.now();
       if (this.#waitingTasks.size === 0 || left <= 0) return;
-      let timer: ReturnType<typeof setTimeout> | undefined;
-      await Promise.race([
-        Promise.all([...this.#waitingTasks]),
-        new Promise((resolve) => (timer = setTimeout(resolve, left))),
-      ]);
-      clearTimeout(timer);
+      // the waiting tasks never reject (#runTask): this ends when they are done or time is up
+      await withTimeout(Promise.all([...this.#waitingTasks]), left);
     }
   }
 

@@ -1,4 +1,4 @@
-import { HAL_CALL_TABLE, HalBoundary } from '@hal/types';
+import { HAL_CALL_TABLE, HalBoundary, withTimeout } from '@hal/types';
 import type {
   CallName,
   CallTable,
@@ -15,7 +15,7 @@ import type { PlanStart } from './motion-plan.js';
 import { errorResult, fromHalResult, fromThrown, fromValue } from './result.js';
 import type { ToolResult } from './result.js';
 import { robotConfigOf } from './robot-config.js';
-import { callTimeoutMs, DEFAULT_TOOL_TIMEOUT_MS, withTimeout } from './timeouts.js';
+import { callTimeoutMs, DEFAULT_TOOL_TIMEOUT_MS } from './timeouts.js';
 import { halTools } from './tools.js';
 import type { HalTool } from './tools.js';
 

@@ -10,19 +10,3 @@ export function callTimeoutMs(base: number, profileMs: number | undefined): numb
   if (profileMs === undefined || !Number.isFinite(profileMs)) return base;
   return Math.ceil(base + 2 * profileMs);
 }
-
-/** Resolves `work`, or `undefined` once `ms` have passed (the timer never outlives the call). */
-export async function withTimeout<T>(
-  work: Promise<T>,
-  ms: number,
-): Promise<{ value: T } | undefined> {
-  let timer: ReturnType<typeof setTimeout> | undefined;
-  const expired = new Promise<undefined>((resolve) => {
-    timer = setTimeout(() => resolve(undefined), ms);
-  });
-  try {
-    return await Promise.race([work.then((value) => ({ value })), expired]);
-  } finally {
-    clearTimeout(timer);
-  }
-}

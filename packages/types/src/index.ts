@@ -165,6 +165,7 @@ export { TypedEmitter } from './vocabulary/typed-emitter.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
 export { nextTurn } from './vocabulary/next-turn.js';
+export { withTimeout } from './vocabulary/with-timeout.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
 
 // The server side shared by every server of a HAL (WebSocket, NATS).

@@ -1,5 +1,6 @@
 import type { McapRecorder, memorySink, RecorderStats } from '@hal/recorder';
 import type { SimulationHAL } from '@hal/simulation';
+import { withTimeout } from '@hal/types';
 
 /** How often the page captures a camera frame into the recording, ms (2 frames a second). */
 export const CAMERA_PERIOD_MS = 500;
@@ -126,14 +127,7 @@ export class SessionRecorder {
     if (active === undefined) throw new Error('no recording is running');
     this.#active = undefined;
     clearInterval(active.camera);
-    if (active.capturing !== undefined) {
-      let timer: ReturnType<typeof setTimeout> | undefined;
-      await Promise.race([
-        active.capturing,
-        new Promise((resolve) => (timer = setTimeout(resolve, this.#captureWaitMs))),
-      ]);
-      clearTimeout(timer);
-    }
+    if (active.capturing !== undefined) await withTimeout(active.capturing, this.#captureWaitMs);
     active.stopSampling.abort();
     const stats = await active.recorder.close();
     const stamp = active.startedAt.toISOString().replace(/[:.]/g, '-');
