@@ -1,6 +1,7 @@
 // The relative links of a Markdown file, and the anchors its headings make, as GitHub renders
 // them: what the links test checks every doc against.
 import GithubSlugger from 'github-slugger';
+import { fences } from './fences.js';
 
 /** A link written in a Markdown file. */
 export interface MarkdownLink {
@@ -12,24 +13,15 @@ export interface MarkdownLink {
   anchor: string | undefined;
 }
 
-const FENCE = /^\s*(`{3,}|~{3,})/;
 const LINK = /!?\[(?:[^\]]|\][^(])*?\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\)/g;
 const INLINE_CODE = /`[^`]*`/g;
 
 /** Each line of `markdown` outside fenced code blocks, with its 1-based number. */
 function proseLines(markdown: string): { line: number; text: string }[] {
-  const out: { line: number; text: string }[] = [];
-  let fence: string | undefined;
-  markdown.split('\n').forEach((text, i) => {
-    const open = FENCE.exec(text)?.[1];
-    if (open !== undefined) {
-      if (fence === undefined) fence = open;
-      else if (open[0] === fence[0] && open.length >= fence.length) fence = undefined;
-      return;
-    }
-    if (fence === undefined) out.push({ line: i + 1, text });
-  });
-  return out;
+  const lines = markdown.split('\n');
+  const fenced = new Set<number>();
+  for (const { open, end } of fences(lines)) for (let i = open; i <= end; i += 1) fenced.add(i);
+  return lines.flatMap((text, i) => (fenced.has(i) ? [] : [{ line: i + 1, text }]));
 }
 
 /** The links of `markdown` to files of the repository (not to web addresses or mail). */

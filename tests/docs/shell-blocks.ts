@@ -2,6 +2,7 @@
 // console, with the `<!-- not run: REASON -->` marker of the line right before its fence. A line
 // scanner rather than a markdown parser: fences are the one construct needed, and a marker must
 // be on the exact line before the fence, which a parser's tree does not keep.
+import { fences } from './fences.js';
 
 export const SHELL_LANGUAGES = ['sh', 'bash', 'shell', 'console'] as const;
 
@@ -25,7 +26,6 @@ export interface MisplacedMarker {
   text: string;
 }
 
-const FENCE = /^(\s*)(`{3,}|~{3,})\s*([\w-]*)/;
 const MARKER = /^\s*<!--\s*not run:\s*(.*?)\s*-->\s*$/;
 // a comment line that looks like a marker (prose that quotes one in backticks is not)
 const ANY_MARKER = /^\s*<!--\s*not run\b/i;
@@ -40,12 +40,7 @@ export function shellBlocks(
   const misplaced: MisplacedMarker[] = [];
   const usedMarkers = new Set<number>();
   const fenced = new Set<number>(); // lines inside any fenced block, whose text is an example
-  for (let i = 0; i < lines.length; i += 1) {
-    const open = FENCE.exec(lines[i]!);
-    if (open === null) continue;
-    const [, indent = '', fence = '', info = ''] = open;
-    let end = i + 1;
-    while (end < lines.length && !isClosing(lines[end]!, fence)) end += 1;
+  for (const { open: i, end, indent, info } of fences(lines)) {
     for (let j = i + 1; j < end; j += 1) fenced.add(j);
     const language = SHELL_LANGUAGES.find((l) => l === info.toLowerCase());
     if (language !== undefined) {
@@ -63,7 +58,6 @@ export function shellBlocks(
         ...(reason === undefined || reason === '' ? {} : { notRun: reason }),
       });
     }
-    i = end;
   }
   lines.forEach((text, index) => {
     if (ANY_MARKER.test(text) && !usedMarkers.has(index) && !fenced.has(index)) {
@@ -71,11 +65,6 @@ export function shellBlocks(
     }
   });
   return { blocks, misplaced };
-}
-
-function isClosing(line: string, fence: string): boolean {
-  const trimmed = line.trim();
-  return trimmed.startsWith(fence[0]!.repeat(fence.length)) && /^[`~]+$/.test(trimmed);
 }
 
 /**
