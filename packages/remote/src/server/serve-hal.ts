@@ -235,7 +235,7 @@ export async function serveHal(
       role: session.role,
       mode: hal.mode,
       // the id the server goes by (a physical robot's HAL knows no name of its own)
-      device: options.deviceId === undefined ? info : { ...info, id: options.deviceId },
+      device: { ...info, id: options.deviceId ?? info.id },
       heartbeat_timeout_ms: heartbeatTimeoutMs,
       state_rate_hz: stateRateHz,
       max_message_bytes: maxMessageBytes,
