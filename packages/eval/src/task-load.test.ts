@@ -82,6 +82,89 @@ describe('parseTaskFile', () => {
   });
 });
 
+describe('parseTaskFile: choices and places', () => {
+  it('lists the built-in maps when a map name is mistyped', () => {
+    const error = refusal(file([{ ...goodTask, world: { ...goodTask.world, map: 'obstacle' } }]));
+    expect(error.field).toBe('tasks.0.world.map');
+    expect(error.message).toContain('"empty"|"room"|"obstacles"|"maze"');
+    expect(error.message).toContain('got "obstacle"');
+  });
+
+  it('still names the field inside a map written out', () => {
+    const map = { name: 'tiny', arena: { width: -1 } };
+    const error = refusal(file([{ ...goodTask, world: { ...goodTask.world, map } }]));
+    expect(error.field).toBe('tasks.0.world.map.arena.width');
+  });
+
+  it('lists the choices of every other enum it refuses', () => {
+    const object = goodTask.world.objects[0];
+    const cases: [unknown, string][] = [
+      [{ ...goodTask, group: 'goal' }, '"precision"'],
+      [
+        { ...goodTask, world: { ...goodTask.world, objects: [{ ...object, kind: 'ball' }] } },
+        '"cylinder"',
+      ],
+      [
+        { ...goodTask, world: { ...goodTask.world, objects: [{ ...object, colour: 'pink' }] } },
+        '"purple"',
+      ],
+      [{ ...goodTask, checks: [{ kind: 'reach' }] }, "'reach-object'"],
+      [{ ...goodTask, checks: [{ kind: 'answer', question: 'colour' }] }, '"colour-ahead"'],
+      [{ ...goodTask, faults: [{ kind: 'crash' }] }, "'estop'"],
+    ];
+    for (const [task, choice] of cases) expect(refusal(file([task])).message).toContain(choice);
+  });
+
+  it('refuses an object outside the arena, naming it and the limit', () => {
+    const far = { ...goodTask.world.objects[0], x: 99 };
+    const error = refusal(file([{ ...goodTask, world: { ...goodTask.world, objects: [far] } }]));
+    expect(error.field).toBe('tasks.0.world.objects.0.x');
+    expect(error.message).toContain('"blue-box" outside the 5 x 5 m arena');
+    expect(error.message).toContain('within ±2.35 m');
+    expect(error.message).toContain('got 99 m');
+  });
+
+  it('counts the seeded jitter: an object that a seed could push through the wall is refused', () => {
+    const edge = { ...goodTask.world.objects[0], x: 2.2 };
+    const world = { ...goodTask.world, objects: [edge] };
+    expect(() => parseTaskFile(file([{ ...goodTask, world }]), 'f.json')).not.toThrow();
+    const jittered = { ...goodTask, world, variants: { objectsM: 0.3 } };
+    expect(refusal(file([jittered])).field).toBe('tasks.0.world.objects.0.x');
+  });
+
+  it('refuses a start outside the arena, in a map written out too', () => {
+    const map = { name: 'small', arena: { width: 2, height: 2 } };
+    const task = {
+      ...goodTask,
+      world: { map, start: { x: 0, y: -1.5 }, objects: [] },
+      checks: [{ kind: 'no-collision' }],
+    };
+    const error = refusal(file([task]));
+    expect(error.field).toBe('tasks.0.world.start.y');
+    expect(error.message).toContain('outside the 2 x 2 m arena');
+  });
+
+  it("refuses a start inside an object or one of the map's obstacles", () => {
+    const onBox = { ...goodTask, world: { ...goodTask.world, start: { x: 1, y: 0.1 } } };
+    const error = refusal(file([onBox]));
+    expect(error.field).toBe('tasks.0.world.start');
+    expect(error.message).toContain('inside "blue-box"');
+    const map = {
+      name: 'pillar',
+      obstacles: [{ kind: 'cylinder', x: 0.5, y: 0.5, radius: 0.2 }],
+    };
+    const onPillar = {
+      ...goodTask,
+      world: { ...goodTask.world, map, start: { x: 0.6, y: 0.4 } },
+    };
+    expect(refusal(file([onPillar])).message).toContain("inside the map's obstacle 0");
+  });
+
+  it('accepts every built-in task as placed', () => {
+    expect(() => builtinTasks()).not.toThrow();
+  });
+});
+
 describe('loadTaskFile', () => {
   it('reads a task file from disk, and names the path of one it cannot read', async () => {
     const dir = await mkdtemp(join(tmpdir(), 'hal-eval-'));

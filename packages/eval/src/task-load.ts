@@ -1,4 +1,5 @@
 import { EvalError } from './errors.js';
+import { placementProblem } from './task-bounds.js';
 import { TaskFileSchema } from './task-schema.js';
 import type { Task } from './task-schema.js';
 
@@ -59,6 +60,8 @@ function checkReferences(file: string, task: Task, at: string): void {
     if (fault.kind !== 'estop' && !TOOL_NAMES.has(fault.tool))
       refuse(file, `${at}.faults.${i}.tool`, `names "${fault.tool}", which is no tool`);
   });
+  const misplaced = placementProblem(task);
+  if (misplaced !== undefined) refuse(file, `${at}.${misplaced.field}`, misplaced.why);
 }
 
 /**

@@ -54,10 +54,17 @@ export const SensorsSchema = z
   .strict()
   .describe('Which sensors the robot has');
 
+/** The built-in maps a task may name. */
+const MAP_NAMES = ['empty', 'room', 'obstacles', 'maze'] as const;
+
 export const WorldSchema = z
   .object({
     map: z
-      .union([z.enum(['empty', 'room', 'obstacles', 'maze']), WorldMapSchema])
+      .union([z.enum(MAP_NAMES), WorldMapSchema], {
+        // zod's own message for a union is "Invalid input": say what the choices are
+        error: (issue) =>
+          `Invalid option: expected one of ${MAP_NAMES.map((n) => `"${n}"`).join('|')} or a map written out (an object), got ${JSON.stringify(issue.input)}`,
+      })
       .default('empty')
       .describe('A built-in map by name, or a map written out'),
     start: z
