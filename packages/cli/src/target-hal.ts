@@ -188,6 +188,17 @@ function unanswered(target: Target, timeoutMs: number, cause?: unknown): HalErro
   });
 }
 
+/** True for a physical HAL's "no answer to hello" (it waited), not a failure to open the link. */
+function isSilence(error: HalError): boolean {
+  return typeof error.details?.['waitedMs'] === 'number';
+}
+
+/** How long the HAL says it waited for an answer, else the timeout this command waited for. */
+function waitedFor(error: HalError, timeoutMs: number): number {
+  const waited = error.details?.['waitedMs'];
+  return typeof waited === 'number' ? waited : timeoutMs;
+}
+
 async function openOnce(target: Target, io: CliIO, options: OpenTargetOptions): Promise<OpenedHal> {
   const timeoutMs = options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS;
   const name = describeTarget(target);
@@ -204,8 +215,10 @@ async function openOnce(target: Target, io: CliIO, options: OpenTargetOptions): 
   } catch (error) {
     // let go in the background: a HAL still connecting may take its own retry budget to stop
     void bounded(() => release(false));
-    if (isHalError(error) && error.code === 'NOT_CONNECTED' && physical) {
-      throw unanswered(target, timeoutMs, error);
+    // only silence becomes "no answer within": a port that does not exist or a host that does
+    // not resolve keeps the HAL's own reason, which came long before any timeout
+    if (isHalError(error) && error.code === 'NOT_CONNECTED' && physical && isSilence(error)) {
+      throw unanswered(target, waitedFor(error, timeoutMs), error);
     }
     if (isHalError(error) && error.code === 'AUTH_FAILED' && physical) {
       throw new HalError('AUTH_FAILED', error.message.replace(/^the robot /, `the ${name} `), {

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import { silentLogger } from '@hal/types';
 import { MockRobot } from '../mock/mock-robot.js';
+import { MessageCodec } from '../protocol/codec.js';
 import { PhysicalHAL } from '../hal/physical-hal.js';
 import { encodeFrame } from '../serial/frame.js';
 import { FrameDecoder } from '../serial/frame-decoder.js';
@@ -123,6 +125,25 @@ describe('serialTransport', () => {
     expect((await hal.locomotion.moveForward(1)).success).toBe(true);
     expect(ports).toHaveLength(2);
     await hal.cleanup();
+  });
+
+  it("fails to open with NOT_CONNECTED that keeps the system's reason, not a timeout", async () => {
+    const enoent = Object.assign(new Error('No such file or directory, cannot open /dev/ttyNOPE'), {
+      code: 'ENOENT',
+    });
+    const transport = serialTransport({
+      path: '/dev/ttyNOPE',
+      open: () => Promise.reject(enoent),
+    });
+    const codec = new MessageCodec();
+    const opened = transport.connect({ decode: (b) => codec.decode(b), logger: silentLogger });
+    await expect(opened).rejects.toMatchObject({
+      code: 'NOT_CONNECTED',
+      message:
+        'cannot open serial port /dev/ttyNOPE: No such file or directory, cannot open /dev/ttyNOPE',
+      details: { path: '/dev/ttyNOPE', errno: 'ENOENT' },
+      cause: enoent,
+    });
   });
 
   it('refuses a bad baud rate with a message that quotes the argument', () => {

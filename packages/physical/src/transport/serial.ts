@@ -11,7 +11,12 @@ import type {
   TransportFactory,
   TransportStats,
 } from './transport.js';
-import { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS, ReplyMatcher } from './transport.js';
+import {
+  DEFAULT_ATTEMPTS,
+  DEFAULT_REPLY_TIMEOUT_MS,
+  linkOpenError,
+  ReplyMatcher,
+} from './transport.js';
 
 /** A partial frame with no further byte for this long is abandoned (protocol 1.0, section 7). */
 export const PARTIAL_FRAME_TIMEOUT_MS = 200;
@@ -88,9 +93,8 @@ export function serialTransport(options: SerialTransportOptions): TransportFacto
       try {
         port = await open(options.path, baudRate);
       } catch (cause) {
-        throw new HalError('NOT_CONNECTED', `cannot open serial port ${options.path}`, {
-          cause,
-          details: { path: options.path },
+        throw linkOpenError(`cannot open serial port ${options.path}`, cause, {
+          path: options.path,
         });
       }
       const matcher = new ReplyMatcher();

@@ -8,6 +8,24 @@ export const DEFAULT_REPLY_TIMEOUT_MS = 2000;
 export const DEFAULT_ATTEMPTS = 3;
 
 /** Per-request overrides. */
+/**
+ * NOT_CONNECTED for a link that could not be opened, with the system's own reason in the message
+ * (its first line: `No such file or directory`, `getaddrinfo ENOTFOUND host`), since that, not a
+ * timeout, is what the user acts on; the errno, where there is one, in the details.
+ */
+export function linkOpenError(
+  what: string,
+  cause: unknown,
+  details: Record<string, unknown>,
+): HalError {
+  const reason = (cause instanceof Error ? cause.message : String(cause)).split('\n', 1)[0];
+  const errno = (cause as NodeJS.ErrnoException | undefined)?.code;
+  return new HalError('NOT_CONNECTED', `${what}: ${reason}`, {
+    cause,
+    details: { ...details, ...(typeof errno === 'string' ? { errno } : {}) },
+  });
+}
+
 export interface RequestOptions {
   /** Wait for a reply this long per attempt, ms. */
   timeoutMs?: number;

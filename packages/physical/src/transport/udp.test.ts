@@ -161,6 +161,17 @@ describe('udpTransport', () => {
     expect(logged.filter((line) => !line.startsWith('debug'))).toEqual([]);
   });
 
+  it('fails to connect to a name that does not resolve with the lookup error, at once', async () => {
+    const transport = udpTransport({ host: 'nosuchhost.invalid', port: 4210 });
+    await expect(transport.connect(context)).rejects.toMatchObject({
+      code: 'NOT_CONNECTED',
+      message: expect.stringMatching(
+        /^cannot reach the robot at nosuchhost\.invalid:4210: getaddrinfo (ENOTFOUND|EAI_AGAIN) nosuchhost\.invalid$/,
+      ),
+      details: { host: 'nosuchhost.invalid', port: 4210, errno: expect.stringMatching(/^E/) },
+    });
+  });
+
   it('refuses a bad port with a message that quotes the argument', () => {
     expect(() => udpTransport({ host: '127.0.0.1', port: 70000 })).toThrow('"port"');
   });

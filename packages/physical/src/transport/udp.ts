@@ -7,7 +7,7 @@ import type {
   TransportFactory,
   TransportStats,
 } from './transport.js';
-import { ReplyMatcher, requestDefaults } from './transport.js';
+import { linkOpenError, ReplyMatcher, requestDefaults } from './transport.js';
 
 /** The robot's UDP port. */
 export const DEFAULT_UDP_PORT = 4210;
@@ -110,8 +110,9 @@ export function udpTransport(options: UdpTransportOptions): TransportFactory<'ud
         });
       } catch (cause) {
         socket.close();
-        throw new HalError('NOT_CONNECTED', `cannot reach the robot at ${options.host}:${port}`, {
-          cause,
+        throw linkOpenError(`cannot reach the robot at ${options.host}:${port}`, cause, {
+          host: options.host,
+          port,
         });
       }
       const localPort = socket.address().port;
