@@ -2,13 +2,16 @@
 // with and without a key, a UDP port where nothing answers, a WebSocket server that refuses the
 // token, and a NATS address with no server. Each error names what failed and why, once.
 import { createSocket } from 'node:dgram';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import type { Socket } from 'node:dgram';
 import { runHal } from '@hal/cli';
 import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { SimulationHAL } from '@hal/simulation';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { freePort } from '../nats/nats-server.js';
+import { freePort, startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import type { NatsServer } from '../nats/nats-server.js';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
@@ -124,6 +127,68 @@ describe('hal on a robot over UDP', () => {
     const io = captureIO();
     const argv = ['--json', 'status', '--udp', `127.0.0.1:${keyed.udpPort}`, '--key', KEY];
     expect(await runHal([...argv, '--time-scale', '4'], io), io.stderr()).toBe(0);
+  });
+});
+
+describe('hal on a link that cannot be opened', () => {
+  it("names a serial port that does not exist with the system's reason, at once", async () => {
+    const path = join(tmpdir(), `hal-no-such-port-${process.pid}`);
+    const { code, errors } = await halJson(['status', '--serial', path]);
+    expect(code).toBe(1);
+    expect(errors).toHaveLength(1);
+    expect(errors[0]!.error.code).toBe('NOT_CONNECTED');
+    expect(errors[0]!.error.message).toMatch(
+      new RegExp(`^cannot open serial port ${path}: .*No such file or directory`),
+    );
+    // no timeout was waited for, so none is claimed
+    expect(errors[0]!.error.message).not.toMatch(/within|ms/);
+  });
+
+  it('names a host that does not resolve with the lookup error', async () => {
+    const { code, errors } = await halJson(['status', '--udp', 'nosuchhost.invalid']);
+    expect(code).toBe(1);
+    expect(errors).toEqual([
+      {
+        error: expect.objectContaining({
+          code: 'NOT_CONNECTED',
+          message: expect.stringMatching(
+            /^cannot reach the robot at nosuchhost\.invalid:4210: getaddrinfo (ENOTFOUND|EAI_AGAIN) nosuchhost\.invalid$/,
+          ),
+        }),
+      },
+    ]);
+  });
+});
+
+describe('hal on a NATS device that no one serves', () => {
+  let server: NatsServer;
+  beforeAll(async () => {
+    server = await startNatsServer();
+  });
+  afterAll(() => stopAllNatsServers());
+
+  it('claims only the time it waited: the whole --connect-timeout', async () => {
+    const started = Date.now();
+    const { code, errors } = await halJson([
+      'status',
+      '--nats',
+      server.url,
+      '--device',
+      'nobody',
+      '--connect-timeout',
+      '1000',
+    ]);
+    const waited = Date.now() - started;
+    expect(code).toBe(1);
+    expect(errors).toEqual([
+      {
+        error: expect.objectContaining({
+          code: 'NOT_CONNECTED',
+          message: `no answer from the device nobody on NATS ${server.url} within 1000 ms`,
+        }),
+      },
+    ]);
+    expect(waited).toBeGreaterThanOrEqual(1000);
   });
 });
 

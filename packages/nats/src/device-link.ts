@@ -62,7 +62,9 @@ function replyOrError(reply: z.ZodType): z.ZodType {
 export class DeviceLink {
   /** The `device_id` of the last reply: who answered (the served id of the default device). */
   sender: string | undefined;
-  #lastSeen = 0;
+  /** When the device last said anything; until it has, when this link began asking. */
+  #lastSeen = Date.now();
+  #heard = false;
   #connected = true;
   readonly #subs: Subscription[] = [];
   readonly #status: AsyncIterator<Status>;
@@ -89,6 +91,7 @@ export class DeviceLink {
 
   seen(): void {
     this.#lastSeen = Date.now();
+    this.#heard = true;
   }
 
   /** True when the device has said nothing for `offlineAfterMs` while our NATS link is up. */
@@ -160,10 +163,17 @@ export class DeviceLink {
           throw new HalError('NOT_CONNECTED', 'the NATS connection is closed', { cause: error });
         }
         if (this.offline()) {
+          // the time said is the time waited: a device never heard from has had as long as
+          // this link has been asking, one that went quiet as long as since its last word
+          const silentMs = Date.now() - this.#lastSeen;
+          const noOne = inChain(error, errors.NoRespondersError);
+          const reason = this.#heard
+            ? `nothing from it for ${silentMs} ms`
+            : `it never answered in ${silentMs} ms (${noOne ? 'no one serves' : 'no reply on'} "${subject}")`;
           throw deviceOfflineError(
             this.options.deviceId ?? DEFAULT_DEVICE_LABEL,
-            `nothing from it for ${this.options.offlineAfterMs} ms`,
-            { subject },
+            reason,
+            { subject, silentMs },
             error,
           );
         }
