@@ -4,8 +4,9 @@
 // second) when it is missing or when any file it was built from is newer than it; the list of
 // those files is esbuild's own metafile, so the check is exact and costs a few stat calls.
 // Packages with a native addon (serialport's bindings) or a WebAssembly file stay outside the
-// bundle, imported by the absolute path resolved at build time, so their prebuilt binaries (and
-// .wasm files) load as they always do.
+// bundle, loaded from the absolute place resolved at build time, so their prebuilt binaries (and
+// .wasm files) load as they always do: an `import` takes it as a file:// URL, a CommonJS
+// `require()` as a plain path (it refuses a URL).
 import {
   existsSync,
   mkdirSync,
@@ -35,21 +36,25 @@ function mtimeMs(path) {
   }
 }
 
-/** True when the bundle exists and no file it was built from has changed since. */
-function isFresh() {
+/**
+ * Why the bundle must be built (the first build, or the file that changed since the last one),
+ * or undefined when it exists and no file it was built from has changed since.
+ */
+function staleness() {
   const built = mtimeMs(outFile);
-  if (built === undefined) return false;
+  if (built === undefined) return 'the first build: there is no bundle yet';
   let inputs;
   try {
     inputs = JSON.parse(readFileSync(inputsFile, 'utf8'));
   } catch {
-    return false;
+    return 'the list of files it was built from is missing';
   }
   for (const input of inputs) {
     const changed = mtimeMs(join(root, input));
-    if (changed === undefined || changed > built) return false;
+    if (changed === undefined) return `${input} is gone since the last build`;
+    if (changed > built) return `${input} changed since the last build`;
   }
-  return true;
+  return undefined;
 }
 
 /**
@@ -124,7 +129,10 @@ async function build() {
           pluginData: 'inner',
         });
         if (found.errors.length > 0 || !isNative(found.path)) return undefined;
-        return { path: pathToFileURL(found.path).href, external: true };
+        // require() takes a path and refuses a URL (serialport's CommonJS loads its bindings
+        // so); an import takes the URL, which a Windows path with its drive letter is not
+        const byPath = args.kind === 'require-call' || args.kind === 'require-resolve';
+        return { path: byPath ? found.path : pathToFileURL(found.path).href, external: true };
       });
     },
   };
@@ -173,8 +181,9 @@ async function build() {
   renameSync(`${inputsFile}.${process.pid}.tmp`, inputsFile);
 }
 
-if (!isFresh()) {
-  process.stderr.write('hal: bundling packages/cli (its sources changed since the last run)\n');
+const reason = staleness();
+if (reason !== undefined) {
+  process.stderr.write(`hal: bundling packages/cli (${reason})\n`);
   await build();
 }
 await import(pathToFileURL(outFile).href);

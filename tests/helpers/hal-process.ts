@@ -1,6 +1,7 @@
-// Runs the `hal` command as a user runs it: a child process from source (the CLI's main.ts), with
-// every wait bounded and every child killed when the test process exits. One helper for every
-// test folder that runs `hal` as a process.
+// Runs the `hal` command as a user runs it: a child process from source (the CLI's main.ts), or
+// as another `hal` program when a test says (the checkout's launcher, a packed bin), with every
+// wait bounded and every child killed when the test process exits. One helper for every test
+// folder that runs `hal` as a process.
 import { spawn } from 'node:child_process';
 import type { ChildProcessByStdio } from 'node:child_process';
 import type { Readable, Writable } from 'node:stream';
@@ -14,14 +15,37 @@ export const HAL_MAIN = fileURLToPath(new URL('../../packages/cli/src/main.ts', 
 const MAIN = HAL_MAIN;
 /** Node's flags to run the CLI from source. */
 const HAL_FLAGS = ['--conditions=@hal/source', '--import', 'tsx'];
+
+/** A way to start `hal`: the program and the arguments that come before hal's own. */
+export interface HalCommand {
+  command: string;
+  args: readonly string[];
+  cwd?: string;
+  env?: NodeJS.ProcessEnv;
+}
+
+/** `hal` from source, through tsx (the default). */
+export const HAL_FROM_SOURCE: HalCommand = {
+  command: process.execPath,
+  args: [...HAL_FLAGS, MAIN],
+};
+
+/** `hal` as `pnpm hal` runs it: the checkout's launcher, scripts/hal.js, and its bundle. */
+export const HAL_LAUNCHER: HalCommand = {
+  command: process.execPath,
+  args: [fileURLToPath(new URL('../../scripts/hal.js', import.meta.url))],
+};
+
 type Child = ChildProcessByStdio<Writable, Readable, Readable>;
 const running = new Set<Child>();
 process.on('exit', () => {
   for (const child of running) child.kill('SIGKILL');
 });
 
-function spawnHal(args: readonly string[]): Child {
-  const child = spawn(process.execPath, [...HAL_FLAGS, MAIN, ...args], {
+function spawnHal(args: readonly string[], hal: HalCommand): Child {
+  const child = spawn(hal.command, [...hal.args, ...args], {
+    cwd: hal.cwd,
+    env: hal.env ?? process.env,
     stdio: ['pipe', 'pipe', 'pipe'],
   });
   running.add(child);
@@ -35,13 +59,17 @@ export interface HalRun {
   stderr: string;
 }
 
-/** Runs `hal args` to its end (killed after `timeoutMs`). */
-export async function runHalProcess(args: readonly string[], timeoutMs = 30_000): Promise<HalRun> {
-  const { status, stdout, stderr } = await runProcess(
-    process.execPath,
-    [...HAL_FLAGS, MAIN, ...args],
-    { timeoutMs },
-  );
+/** Runs `hal args` to its end (killed after `timeoutMs`), from source unless `hal` says. */
+export async function runHalProcess(
+  args: readonly string[],
+  timeoutMs = 30_000,
+  hal: HalCommand = HAL_FROM_SOURCE,
+): Promise<HalRun> {
+  const { status, stdout, stderr } = await runProcess(hal.command, [...hal.args, ...args], {
+    timeoutMs,
+    ...(hal.cwd === undefined ? {} : { cwd: hal.cwd }),
+    ...(hal.env === undefined ? {} : { env: hal.env }),
+  });
   return { code: status, stdout, stderr };
 }
 
@@ -52,11 +80,15 @@ export interface HalProcess<E> extends EventLines<E> {
   stop(signal?: NodeJS.Signals, timeoutMs?: number): Promise<number | null>;
 }
 
-/** Starts a long-running `hal --json ...` (serve, emulate, discover) whose stdout is JSON lines. */
+/**
+ * Starts a long-running `hal --json ...` (serve, emulate, discover) whose stdout is JSON lines,
+ * from source unless `hal` says.
+ */
 export function startHalProcess<E extends { event: string }>(
   args: readonly string[],
+  hal: HalCommand = HAL_FROM_SOURCE,
 ): HalProcess<E> {
-  const child = spawnHal(args);
+  const child = spawnHal(args, hal);
   child.stdin.end();
   const lines = readEventLines<E>(child, `hal ${args.join(' ')}`, 30_000);
   const exited = new Promise<number | null>((resolve) =>
