@@ -45,6 +45,26 @@ const KEPT = new Set([
   'anyOf',
 ]);
 
+/**
+ * The largest count the grammar writes as a counted repetition (`{0,N}`). llama.cpp expands a
+ * counted repetition into one rule per count and refuses a grammar where a repetition's count
+ * times the rules before it in its sequence reaches 2000 (its MAX_REPETITION_THRESHOLD): the
+ * `log` tool's `maxLength: 2000` alone is refused. A bound above this is left out of the grammar
+ * and checked after generation instead: by the tool's own validation for its arguments, and by
+ * the provider for the answer (cut to its length).
+ */
+export const MAX_COUNTED_REPETITION = 256;
+
+/** Keywords that become counted repetitions in the grammar. */
+const COUNTED = new Set([
+  'minLength',
+  'maxLength',
+  'minItems',
+  'maxItems',
+  'minProperties',
+  'maxProperties',
+]);
+
 const TYPES = new Set(['string', 'number', 'integer', 'boolean', 'null', 'object', 'array']);
 const FORMATS = new Set(['date-time', 'time', 'date']);
 
@@ -60,6 +80,8 @@ function convert(schema: unknown, path: string): Json {
   for (const [key, value] of Object.entries(schema)) {
     if (CHECKED_AFTER.has(key)) continue;
     if (!KEPT.has(key)) return refuse(`"${key}" cannot be expressed by the grammar`);
+    // a count too large for llama.cpp's grammar parser is left to the tool's validation
+    if (COUNTED.has(key) && typeof value === 'number' && value > MAX_COUNTED_REPETITION) continue;
     switch (key) {
       case 'type': {
         const types = Array.isArray(value) ? value : [value];
@@ -112,7 +134,8 @@ export const DEFAULT_ANSWER_MAX_LENGTH = 240;
 /**
  * The grammar's schema for `tools`. Throws a LocalModelError SCHEMA_UNSUPPORTED naming the first
  * tool whose parameters use something the grammar cannot express (a `pattern`, `allOf`, `not`,
- * `$ref`, an unknown keyword...).
+ * `$ref`, an unknown keyword...). Lengths and counts above {@link MAX_COUNTED_REPETITION} are
+ * left out (see there); so is an `answerMaxLength` above it, which the provider then checks.
  */
 export function replySchema(
   tools: readonly ChatTool[],
@@ -139,7 +162,12 @@ export function replySchema(
   });
   const answer = {
     type: 'object',
-    properties: { answer: { type: 'string', maxLength: answerMaxLength } },
+    properties: {
+      answer:
+        answerMaxLength > MAX_COUNTED_REPETITION
+          ? { type: 'string' }
+          : { type: 'string', maxLength: answerMaxLength },
+    },
     required: ['answer'],
     additionalProperties: false,
   };

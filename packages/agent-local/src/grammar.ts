@@ -1,4 +1,5 @@
 import type { GbnfJsonOneOfSchema, Llama, LlamaGrammar } from 'node-llama-cpp';
+import { LocalModelError } from './errors.js';
 
 /** Most digits after the decimal point a number may have (finer than any of the robot's steps). */
 export const FRACTION_DIGITS = 3;
@@ -19,20 +20,40 @@ export function compactGrammar(grammar: string): string {
     .replace(COMMA_RULE, '$1 ::= "," [ ]?');
 }
 
+/** llama.cpp's refusal of a grammar as a SCHEMA_UNSUPPORTED error (its own text is the cause). */
+function refused(cause: unknown): LocalModelError {
+  const said = cause instanceof Error ? cause.message : String(cause);
+  return new LocalModelError(
+    'SCHEMA_UNSUPPORTED',
+    `llama.cpp refused the grammar built from the tools' schemas (${said}); offer fewer tools with "offerTools"`,
+    { cause },
+  );
+}
+
 /**
  * The grammar for `schema`: node-llama-cpp's JSON-schema grammar, on one line, with numbers held
  * to {@link FRACTION_DIGITS} decimals (where its rules read as expected; unchanged otherwise).
+ * Rejects with a LocalModelError SCHEMA_UNSUPPORTED when llama.cpp refuses the grammar.
  */
 export async function replyGrammar(
   llama: Llama,
   schema: GbnfJsonOneOfSchema,
 ): Promise<LlamaGrammar> {
-  const json = await llama.createGrammarForJsonSchema(schema);
+  let json: LlamaGrammar & { grammar: string };
+  try {
+    json = await llama.createGrammarForJsonSchema(schema);
+  } catch (cause) {
+    throw refused(cause);
+  }
   const text = compactGrammar(json.grammar);
   if (text === json.grammar) return json;
-  return llama.createGrammar({
-    grammar: text,
-    stopGenerationTriggers: ['\n\n\n\n'],
-    trimWhitespaceSuffix: true,
-  });
+  try {
+    return await llama.createGrammar({
+      grammar: text,
+      stopGenerationTriggers: ['\n\n\n\n'],
+      trimWhitespaceSuffix: true,
+    });
+  } catch (cause) {
+    throw refused(cause);
+  }
 }

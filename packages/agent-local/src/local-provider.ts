@@ -31,7 +31,10 @@ export interface LocalChatProviderOptions {
    * Default all of them. A name the executor does not have is a CONFIG error at the first request.
    */
   offerTools?: readonly string[];
-  /** Longest answer text, characters. Default 240. */
+  /**
+   * Longest answer text, characters. Default 240. Up to 256 the grammar holds it; a longer limit
+   * is checked after generation (the answer is cut to it).
+   */
   answerMaxLength?: number;
   /** llama.cpp's warnings and errors go here (never to the console). */
   logger?: Logger;
@@ -214,6 +217,7 @@ export async function createLocalChatProvider(
         response.response,
         turn.step,
         response.metadata.stopReason === 'maxTokens',
+        settings.answerMaxLength,
       );
       return {
         ...reply,

@@ -3,10 +3,16 @@ import { LocalModelError } from './errors.js';
 
 /**
  * Reads the model's grammar-constrained reply: `{"tool", "arguments"}` is a tool call (its
- * arguments are validated by the tool when it runs), `{"answer"}` the text that ends the run.
- * Throws a LocalModelError GENERATION when the reply is not one of them (it was cut short).
+ * arguments are validated by the tool when it runs), `{"answer"}` the text that ends the run,
+ * cut to `answerMaxLength` characters (a length the grammar could not hold). Throws a
+ * LocalModelError GENERATION when the reply is not one of them (it was cut short).
  */
-export function readReply(json: string, step: number, cutShort: boolean): Omit<ChatReply, 'usage'> {
+export function readReply(
+  json: string,
+  step: number,
+  cutShort: boolean,
+  answerMaxLength = Number.POSITIVE_INFINITY,
+): Omit<ChatReply, 'usage'> {
   let value: unknown;
   try {
     value = JSON.parse(json);
@@ -34,7 +40,7 @@ export function readReply(json: string, step: number, cutShort: boolean): Omit<C
     };
   }
   if (typeof reply.answer === 'string')
-    return { text: reply.answer, refusal: undefined, toolCalls: [] };
+    return { text: reply.answer.slice(0, answerMaxLength), refusal: undefined, toolCalls: [] };
   throw new LocalModelError(
     'GENERATION',
     `the reply is neither a tool call nor an answer: ${json}`,
