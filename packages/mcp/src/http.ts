@@ -4,6 +4,7 @@ import type { IncomingMessage, Server as HttpServer, ServerResponse } from 'node
 import type { AddressInfo } from 'node:net';
 import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { StreamableHTTPServerTransport } from '@modelcontextprotocol/sdk/server/streamableHttp.js';
+import { browserRefusal, isLoopback } from '@hal/types';
 
 /** Where and how the streamable HTTP endpoint listens. */
 export interface HttpOptions {
@@ -22,30 +23,6 @@ export interface HttpEndpoint {
   url: string;
   port: number;
   close(): Promise<void>;
-}
-
-const LOOPBACK = new Set(['127.0.0.1', '::1', 'localhost']);
-
-/** Whether an address is this machine's loopback. */
-export function isLoopback(host: string): boolean {
-  return LOOPBACK.has(host) || /^127\.\d+\.\d+\.\d+$/.test(host);
-}
-
-function hostnameOf(header: string | undefined): string | undefined {
-  if (header === undefined) return undefined;
-  try {
-    return new URL(`http://${header}`).hostname.replace(/^\[|\]$/g, '');
-  } catch {
-    return undefined;
-  }
-}
-
-function originHost(origin: string): string {
-  try {
-    return new URL(origin).hostname.replace(/^\[|\]$/g, '');
-  } catch {
-    return '';
-  }
 }
 
 function sameToken(given: string, expected: string): boolean {
@@ -70,14 +47,10 @@ function gate(req: IncomingMessage, options: Required<Pick<HttpOptions, 'path'>>
     if (!sameToken(given, options.token)) return [401, 'a valid bearer token is required'] as const;
     return undefined;
   }
-  // Without a token, only this machine may call: a web page must not reach it by DNS rebinding.
-  const host = hostnameOf(req.headers.host);
-  if (host === undefined || !isLoopback(host))
-    return [403, 'Host must be a loopback address'] as const;
-  const origin = req.headers.origin;
-  if (origin !== undefined && !isLoopback(originHost(origin))) {
-    return [403, 'cross-origin requests need a token'] as const;
-  }
+  // Without a token, only this machine may call: programs, and pages served from it; not a page
+  // from another site, nor one that reaches it by DNS rebinding (the door serveHal keeps too).
+  const refused = browserRefusal(req.headers);
+  if (refused !== undefined) return [403, `${refused.reason}: a token is needed`] as const;
   return undefined;
 }
 

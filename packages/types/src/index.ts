@@ -169,6 +169,8 @@ export { withTimeout } from './vocabulary/with-timeout.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
 
 // The server side shared by every server of a HAL (WebSocket, NATS).
+export { browserRefusal, hostOfHeader, isLoopback, trustedOrigin } from './serving/browser-gate.js';
+export type { BrowserRefusal, GateHeaders } from './serving/browser-gate.js';
 export { ControllerWatch } from './serving/controller-watch.js';
 export type { ControllerWatchOptions } from './serving/controller-watch.js';
 export { ServedCalls } from './serving/served-calls.js';
