@@ -17,6 +17,7 @@ import { emit, progress } from '../io.js';
 import type { CliIO } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
 import { announceGateway } from '../serve/announce-node.js';
+import { allowOriginArg } from '../serve/allow-origin.js';
 import { servePlan, servedSubjects } from '../serve/where.js';
 import type { ServeCliOptions, ServePlan } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
@@ -75,6 +76,12 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
         '--token <secret>',
         'token WebSocket clients must present, 16+ characters (default $HAL_SERVE_TOKEN)',
       ),
+    )
+    .addOption(
+      new Option(
+        '--allow-origin <origin>',
+        'trust web pages from this origin on WebSocket without a token, e.g. https://app.example (repeatable; pages from this machine are trusted)',
+      ).argParser(allowOriginArg),
     )
     .addOption(
       new Option(

@@ -14,6 +14,8 @@ export interface ServeCliOptions extends NatsCliOptions {
   wsPort?: number;
   host?: string;
   token?: string;
+  /** --allow-origin (repeatable): web pages' origins the WebSocket door trusts without a token. */
+  allowOrigin?: string[];
   heartbeatTimeout?: number;
   /** --record: the MCAP file the served robot's run is recorded into. */
   record?: string;
@@ -25,6 +27,7 @@ export interface ServePlan {
     host: string;
     port: number;
     token?: string;
+    allowedOrigins?: string[];
     stateRateHz: number;
     heartbeatTimeoutMs: number;
   };
@@ -67,6 +70,7 @@ export function servePlan(
     for (const [value, name] of [
       [o.host, '--host'],
       [o.token, '--token'],
+      [o.allowOrigin, '--allow-origin'],
       [o.heartbeatTimeout, '--heartbeat-timeout'],
     ] as const) {
       if (value !== undefined) throw new CliError('USAGE', `"${name}" needs --ws-port`);
@@ -91,6 +95,7 @@ export function servePlan(
       host: o.host ?? '127.0.0.1',
       port: o.wsPort!,
       ...(token === undefined ? {} : { token }),
+      ...(o.allowOrigin === undefined ? {} : { allowedOrigins: o.allowOrigin }),
       stateRateHz: o.stateRate === undefined || o.stateRate === 0 ? WS_STATE_HZ : o.stateRate,
       heartbeatTimeoutMs: o.heartbeatTimeout ?? WS_HEARTBEAT_MS,
     };

@@ -183,18 +183,26 @@ export class Connection {
 
   /**
    * Why the socket closed before the server's hello. `ws` reports the HTTP status of a refused
-   * upgrade ("Unexpected server response: 401"): a refused token is AUTH_FAILED, not a dead server.
+   * upgrade ("Unexpected server response: 401"): a refused token (401), or an Origin or Host the
+   * server does not trust (403), is AUTH_FAILED, not a dead server.
    * A browser's WebSocket hides the status, so there the message names both causes.
    */
   #closedBeforeHello(event: { code: number; reason: string }, refusal: string | undefined) {
     const url = this.#options.url;
     const status = /Unexpected server response: (\d{3})/.exec(refusal ?? '')?.[1];
-    if (status === '401' || status === '403') {
+    if (status === '401') {
       const given = this.#options.token === undefined ? 'no token was given' : 'the token is wrong';
       return new HalError(
         'AUTH_FAILED',
-        `${url} refused the connection (HTTP ${status}): ${given} (the server's --token or $HAL_SERVE_TOKEN)`,
-        { details: { httpStatus: Number(status) } },
+        `${url} refused the connection (HTTP 401): ${given} (the server's --token or $HAL_SERVE_TOKEN)`,
+        { details: { httpStatus: 401 } },
+      );
+    }
+    if (status === '403') {
+      return new HalError(
+        'AUTH_FAILED',
+        `${url} refused the connection (HTTP 403): the server, having no token, trusts only this machine's programs and pages, and this client's Origin or Host is not one of them (its log says which; --allow-origin trusts a page's origin)`,
+        { details: { httpStatus: 403 } },
       );
     }
     if (status !== undefined) {

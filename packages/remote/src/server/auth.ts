@@ -1,11 +1,6 @@
 import { createHash, timingSafeEqual } from 'node:crypto';
 import type { IncomingMessage } from 'node:http';
-import { HalError } from '@hal/types';
-
-/** True for an address only this machine can reach. */
-export function isLoopback(host: string): boolean {
-  return host === 'localhost' || host === '::1' || /^127\.\d+\.\d+\.\d+$/.test(host);
-}
+import { HalError, browserRefusal, isLoopback, trustedOrigin } from '@hal/types';
 
 /** Refuses to serve beyond this machine without a token. */
 export function checkBinding(host: string, token: string | undefined): void {
@@ -40,4 +35,50 @@ export function tokenMatches(expected: string, presented: string | undefined): b
   const a = createHash('sha256').update(expected).digest();
   const b = createHash('sha256').update(presented).digest();
   return timingSafeEqual(a, b);
+}
+
+/** Why an upgrade is refused before the hello: its HTTP status and a sentence for the client. */
+export interface DoorRefusal {
+  status: 401 | 403;
+  reason: string;
+}
+
+/**
+ * Who may open the door. With a token, whoever presents it (401 otherwise), from any page or
+ * program. Without one (so on loopback), programs, and web pages served from this machine or
+ * from `allowedOrigins`; a page from anywhere else, or a request naming a Host that is not
+ * loopback (DNS rebinding), is refused 403.
+ */
+export function doorRefusal(
+  request: IncomingMessage,
+  token: string | undefined,
+  allowedOrigins: ReadonlySet<string>,
+): DoorRefusal | undefined {
+  if (token !== undefined) {
+    const presented = presentedToken(request);
+    if (tokenMatches(token, presented)) return undefined;
+    return {
+      status: 401,
+      reason:
+        presented === undefined
+          ? 'a token is required (Authorization: Bearer TOKEN, or ?token=TOKEN)'
+          : 'the token is wrong',
+    };
+  }
+  const refused = browserRefusal(request.headers, allowedOrigins);
+  if (refused === undefined) return undefined;
+  const remedy =
+    refused.header === 'origin'
+      ? `trust it with hal serve --allow-origin ${originOf(refused.value)} (serveHal's allowedOrigins), or serve with a token`
+      : 'connect to 127.0.0.1 or localhost, or serve with a token';
+  return { status: 403, reason: `${refused.reason}: ${remedy}` };
+}
+
+/** The origin to name in a remedy: the sent one as browsers write it, else a placeholder. */
+function originOf(value: string): string {
+  try {
+    return trustedOrigin(value);
+  } catch {
+    return 'ORIGIN';
+  }
 }

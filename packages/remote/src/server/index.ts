@@ -1,4 +1,6 @@
 export { serveHal } from './serve-hal.js';
 export { SERVE_DEFAULTS } from './options.js';
 export type { HalServer, ServeHalOptions } from './options.js';
-export { checkBinding, isLoopback } from './auth.js';
+export { checkBinding } from './auth.js';
+/** Re-exported from `@hal/types`, where every server of a HAL finds it. */
+export { isLoopback } from '@hal/types';

@@ -8,6 +8,14 @@ export interface ServeHalOptions {
   port?: number;
   /** Shared secret (at least 16 characters) clients present as a Bearer token or `?token=`. */
   token?: string;
+  /**
+   * Web pages trusted beyond this machine's own, as the origins browsers send
+   * (`https://robot.example`, `http://192.168.1.20:5173`). Without a token, a connection whose
+   * `Origin` is neither loopback nor one of these (a page on another site) is refused with HTTP
+   * 403, as is one whose `Host` is not a loopback name (DNS rebinding). Clients that send no
+   * `Origin` (programs) are not affected; with a token, every client presents it instead.
+   */
+  allowedOrigins?: readonly string[];
   /** State messages per second to each subscriber. Default 10. */
   stateRateHz?: number;
   /**

@@ -12,6 +12,7 @@ import {
   scoped,
   silentLogger,
   toHalError,
+  trustedOrigin,
 } from '@hal/types';
 import type { HalErrorCode, HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import { WebSocketServer } from 'ws';
@@ -24,7 +25,7 @@ import {
   readRequestId,
 } from '../protocol.js';
 import type { MessageSchema, Role } from '../protocol.js';
-import { checkBinding, presentedToken, tokenMatches } from './auth.js';
+import { checkBinding, doorRefusal } from './auth.js';
 import type { ClientSession } from './client-session.js';
 import { SERVE_DEFAULTS } from './options.js';
 import type { HalServer, ServeHalOptions } from './options.js';
@@ -39,8 +40,10 @@ export async function serveHal(
   options: ServeHalOptions = {},
 ): Promise<HalServer> {
   const host = options.host ?? SERVE_DEFAULTS.host;
-  const token = options.token;
+  // an empty token is none, as checkBinding reads it
+  const token = options.token === '' ? undefined : options.token;
   checkBinding(host, token);
+  const allowedOrigins = new Set((options.allowedOrigins ?? []).map((o) => trustedOrigin(o)));
   const heartbeatTimeoutMs = options.heartbeatTimeoutMs ?? SERVE_DEFAULTS.heartbeatTimeoutMs;
   if (!(heartbeatTimeoutMs >= 100 && heartbeatTimeoutMs <= 10_000)) {
     throw new HalError('RANGE_EXCEEDED', '"heartbeatTimeoutMs" must be 100..10000 ms', {
@@ -205,11 +208,18 @@ export async function serveHal(
     maxPayload: maxMessageBytes * HARD_LIMIT_FACTOR,
   });
   http.on('upgrade', (request, socket, head) => {
-    if (token !== undefined && !tokenMatches(token, presentedToken(request))) {
-      log('warn', 'refused a connection without the right token', {
+    const refused = doorRefusal(request, token, allowedOrigins);
+    if (refused !== undefined) {
+      log('warn', `refused a connection (HTTP ${refused.status}): ${refused.reason}`, {
         from: request.socket.remoteAddress,
       });
-      socket.end('HTTP/1.1 401 Unauthorized\r\nConnection: close\r\n\r\n');
+      const body = `${refused.reason}\n`;
+      socket.end(
+        `HTTP/1.1 ${refused.status} ${refused.status === 401 ? 'Unauthorized' : 'Forbidden'}\r\n` +
+          'Content-Type: text/plain; charset=utf-8\r\n' +
+          `Content-Length: ${Buffer.byteLength(body)}\r\n` +
+          `Connection: close\r\n\r\n${body}`,
+      );
       return;
     }
     wss.handleUpgrade(request, socket, head, (ws) => wss.emit('connection', ws, request));

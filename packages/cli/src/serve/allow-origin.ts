@@ -1,0 +1,16 @@
+// `hal serve --allow-origin <origin>`: a web page's origin the WebSocket door trusts beyond this
+// machine's own (repeatable). The origin is checked as serveHal checks its allowedOrigins.
+import { InvalidArgumentError } from 'commander';
+import { isHalError, trustedOrigin } from '@hal/types';
+
+/** Adds one `--allow-origin` value, normalised, to the ones given before it. */
+export function allowOriginArg(value: string, previous: string[] | undefined): string[] {
+  try {
+    return [...(previous ?? []), trustedOrigin(value)];
+  } catch (error) {
+    if (!isHalError(error)) throw error;
+    throw new InvalidArgumentError(
+      `"--allow-origin" must be an origin as a browser sends it, http(s)://HOST[:PORT], got "${value}"`,
+    );
+  }
+}
