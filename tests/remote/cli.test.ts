@@ -59,6 +59,6 @@ describe('hal serve on WebSocket', () => {
   it('refuses a malformed robot address with a usage error', async () => {
     const error = await serve(['--udp', 'robot:0']).catch((e: unknown) => e);
     expect(error).toMatchObject({ exitCode: 2 });
-    expect(String(error)).toMatch(/"--udp" must be HOST or HOST:PORT/);
+    expect(String(error)).toMatch(/"--udp" must be HOST(,| or) HOST:PORT/);
   });
 });
