@@ -283,7 +283,7 @@ describe("the demo's recording, in Chromium", () => {
     );
     let after = await state();
     expect(after.message).toBe(
-      "notes.txt is not an MCAP file (it does not start with MCAP's magic bytes)",
+      'notes.txt is not an MCAP file: it does not start with MCAP\'s magic bytes (it starts with 6e 6f 74 20 61 20 72 65 "not a re")',
     );
     expect(after.playback).toBeNull();
 

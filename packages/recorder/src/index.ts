@@ -5,7 +5,11 @@ export type { RecordHalOptions } from './record-hal-options.js';
 export { memorySink, openFileSink } from './file-sink.js';
 export type { RecordingSink } from './file-sink.js';
 export { readRecording, readRecordingFile } from './read-recording.js';
-export type { RecordedMessage, Recording } from './read-recording.js';
+export type { ReadRecordingOptions, Recording } from './read-recording.js';
+export type { RecordedChannel, RecordedMessage } from './recording-builder.js';
+export type { RecordingGap } from './recover-records.js';
+export { RecordingReadError } from './recording-read-error.js';
+export type { RecordingReadErrorCode } from './recording-read-error.js';
 export type { ChunkCompression } from './compression.js';
 export {
   AGENT_EVENT,

@@ -1,26 +1,32 @@
-import { McapIndexedReader, McapStreamReader } from '@mcap/core';
+import { McapIndexedReader } from '@mcap/core';
 import type { McapTypes } from '@mcap/core';
 import { DECOMPRESS_HANDLERS, zstdReady } from './compression.js';
-
-/** One message of a recording, its JSON decoded. */
-export interface RecordedMessage {
-  topic: string;
-  schemaName: string;
-  logTime: bigint;
-  value: unknown;
-}
+import { checkMcapStart } from './mcap-start.js';
+import { recoverRecords } from './recover-records.js';
+import type { KnownChannels, RecordingGap } from './recover-records.js';
+import { RecordingBuilder } from './recording-builder.js';
+import type { RecordedChannel, RecordedMessage } from './recording-builder.js';
+import { RecordingReadError } from './recording-read-error.js';
 
 /** A recording read back. */
 export interface Recording {
   /**
-   * True when the file ended properly (summary and index present, read through them); false when
-   * it was cut short (a killed process) and was read record by record up to its last complete one.
+   * True when every record of the file was read, to its footer (through its summary and index
+   * when they read); false when it was cut short (a killed process) or damaged, and `gaps` says
+   * where.
    */
   complete: boolean;
-  /** Why reading stopped early, for a file that was cut short. */
+  /**
+   * For a file not read whole: where and why reading stopped, and what was read, in one sentence
+   * (`cut short at byte 5120 of 5200 (...); 58 records read`).
+   */
   truncation?: string;
+  /** The parts of the file that could not be read, in order (empty for a complete file). */
+  gaps: RecordingGap[];
+  /** The file's size in bytes. */
+  fileBytes: number;
   /** Each topic with its schema's name and the JSON Schema it declares. */
-  channels: Map<string, { schemaName: string; schema: unknown; messageCount: number }>;
+  channels: Map<string, RecordedChannel>;
   /** The messages in log-time order. */
   messages: RecordedMessage[];
   /** Metadata records by name. */
@@ -29,7 +35,10 @@ export interface Recording {
   chunkCount: number;
 }
 
-const decoder = new TextDecoder();
+/** How {@link readRecording} names the file in what it says (default `the file`). */
+export interface ReadRecordingOptions {
+  name?: string;
+}
 
 function bytesReadable(bytes: Uint8Array): McapTypes.IReadable {
   return {
@@ -39,52 +48,7 @@ function bytesReadable(bytes: Uint8Array): McapTypes.IReadable {
   };
 }
 
-class RecordingBuilder {
-  readonly schemas = new Map<number, McapTypes.Schema>();
-  readonly channelTopics = new Map<number, McapTypes.Channel>();
-  readonly channels: Recording['channels'] = new Map();
-  readonly messages: RecordedMessage[] = [];
-  readonly metadata = new Map<string, Record<string, string>>();
-
-  schema(record: McapTypes.Schema): void {
-    this.schemas.set(record.id, record);
-  }
-
-  channel(record: McapTypes.Channel): void {
-    this.channelTopics.set(record.id, record);
-    const schema = this.schemas.get(record.schemaId);
-    if (!this.channels.has(record.topic)) {
-      this.channels.set(record.topic, {
-        schemaName: schema?.name ?? '',
-        schema: schema ? (JSON.parse(decoder.decode(schema.data)) as unknown) : undefined,
-        messageCount: 0,
-      });
-    }
-  }
-
-  message(record: McapTypes.Message): void {
-    const channel = this.channelTopics.get(record.channelId);
-    if (!channel) throw new Error(`message on unknown channel ${record.channelId}`);
-    const entry = this.channels.get(channel.topic);
-    if (entry) entry.messageCount += 1;
-    this.messages.push({
-      topic: channel.topic,
-      schemaName: entry?.schemaName ?? '',
-      logTime: record.logTime,
-      value: JSON.parse(decoder.decode(record.data)) as unknown,
-    });
-  }
-
-  meta(record: McapTypes.Metadata): void {
-    this.metadata.set(record.name, Object.fromEntries(record.metadata));
-  }
-}
-
-async function readIndexed(bytes: Uint8Array): Promise<Recording> {
-  const reader = await McapIndexedReader.Initialize({
-    readable: bytesReadable(bytes),
-    decompressHandlers: DECOMPRESS_HANDLERS,
-  });
+async function readIndexed(reader: McapIndexedReader, fileBytes: number): Promise<Recording> {
   const out = new RecordingBuilder();
   for (const schema of reader.schemasById.values()) out.schema(schema);
   for (const channel of reader.channelsById.values()) out.channel(channel);
@@ -92,6 +56,8 @@ async function readIndexed(bytes: Uint8Array): Promise<Recording> {
   for await (const metadata of reader.readMetadata()) out.meta(metadata);
   return {
     complete: true,
+    gaps: [],
+    fileBytes,
     channels: out.channels,
     messages: out.messages,
     metadata: out.metadata,
@@ -99,51 +65,88 @@ async function readIndexed(bytes: Uint8Array): Promise<Recording> {
   };
 }
 
-/** MCAP's recovery: every record in order, up to the last complete one. */
-function readStream(bytes: Uint8Array): Recording {
-  const reader = new McapStreamReader({ decompressHandlers: DECOMPRESS_HANDLERS });
-  reader.append(bytes);
-  const out = new RecordingBuilder();
-  let chunkCount = 0;
-  let truncation: string | undefined;
+/** One sentence of the gaps and of what was read around them. */
+function gapsText(gaps: RecordingGap[], fileBytes: number, records: number): string {
+  const parts = gaps.map((gap) =>
+    gap.kind === 'cut-short'
+      ? `cut short at byte ${gap.offset} of ${fileBytes} (${gap.reason})`
+      : `damaged at byte ${gap.offset} of ${fileBytes} (${gap.reason})${
+          gap.resumedAt === undefined ? '' : `, read on from byte ${gap.resumedAt}`
+        }`,
+  );
+  return `${parts.join('; ')}; ${records} records read`;
+}
+
+/** The file's summary, when its footer and summary still read (a file damaged in its data). */
+async function summaryOf(bytes: Uint8Array): Promise<McapIndexedReader | undefined> {
   try {
-    for (let record = reader.nextRecord(); record; record = reader.nextRecord()) {
-      if (record.type === 'Schema') out.schema(record);
-      else if (record.type === 'Channel') out.channel(record);
-      else if (record.type === 'Message') out.message(record);
-      else if (record.type === 'Metadata') out.meta(record);
-      else if (record.type === 'ChunkIndex') chunkCount += 1;
-    }
-  } catch (error) {
-    truncation = error instanceof Error ? error.message : String(error);
+    return await McapIndexedReader.Initialize({
+      readable: bytesReadable(bytes),
+      decompressHandlers: DECOMPRESS_HANDLERS,
+    });
+  } catch {
+    return undefined;
   }
-  if (!reader.done()) truncation ??= `the file ends after ${bytes.byteLength} bytes, mid-record`;
-  out.messages.sort((a, b) => (a.logTime < b.logTime ? -1 : a.logTime > b.logTime ? 1 : 0));
-  return {
-    complete: reader.done(),
-    ...(truncation !== undefined ? { truncation } : {}),
-    channels: out.channels,
-    messages: out.messages,
-    metadata: out.metadata,
-    chunkCount,
-  };
 }
 
 /**
  * Reads a recording: through its summary and index when it ended properly, else with MCAP's
- * recovery (record by record, up to the last complete chunk), as a killed process leaves it.
+ * recovery (record by record), as a killed process leaves it: up to its last complete record,
+ * and past a damaged chunk to the next one that reads whole. What could not be read is in
+ * `gaps` and `truncation`, never passed over as an empty recording.
+ *
+ * @throws {RecordingReadError} for a file that is not a recording: empty (`EMPTY`), not MCAP
+ *   (`NOT_MCAP`), with no header (`NO_HEADER`), or damaged with not one message readable
+ *   (`DAMAGED`).
  */
-export async function readRecording(bytes: Uint8Array): Promise<Recording> {
+export async function readRecording(
+  bytes: Uint8Array,
+  options: ReadRecordingOptions = {},
+): Promise<Recording> {
+  const name = options.name ?? 'the file';
+  checkMcapStart(bytes, name);
   await zstdReady();
-  try {
-    return await readIndexed(bytes);
-  } catch {
-    return readStream(bytes);
+  const indexed = await summaryOf(bytes);
+  if (indexed !== undefined) {
+    try {
+      return await readIndexed(indexed, bytes.byteLength);
+    } catch {
+      // a chunk the index points to is damaged: read record by record, past it
+    }
   }
+  const known: KnownChannels | undefined =
+    indexed === undefined
+      ? undefined
+      : { schemas: indexed.schemasById.values(), channels: indexed.channelsById.values() };
+  const out = new RecordingBuilder();
+  const read = recoverRecords(bytes, out, name, known);
+  const damaged = read.gaps.find((gap) => gap.kind === 'damaged');
+  if (damaged !== undefined && out.messages.length === 0) {
+    throw new RecordingReadError(
+      'DAMAGED',
+      `${name} is damaged: not one message could be read (${gapsText(read.gaps, bytes.byteLength, read.records)})`,
+      { offset: damaged.offset },
+    );
+  }
+  return {
+    complete: read.complete,
+    ...(read.complete ? {} : { truncation: gapsText(read.gaps, bytes.byteLength, read.records) }),
+    gaps: read.gaps,
+    fileBytes: bytes.byteLength,
+    channels: out.channels,
+    messages: out.sortedMessages(),
+    metadata: out.metadata,
+    chunkCount: 0,
+  };
 }
 
-/** Reads the recording in the file at `path`. */
+/**
+ * Reads the recording in the file at `path` (named by its path in what it says).
+ *
+ * @throws {RecordingReadError} as {@link readRecording}; the file system's error (`ENOENT`...)
+ *   for a file that cannot be read.
+ */
 export async function readRecordingFile(path: string): Promise<Recording> {
   const { readFile } = await import('node:fs/promises');
-  return readRecording(new Uint8Array(await readFile(path)));
+  return readRecording(new Uint8Array(await readFile(path)), { name: path });
 }

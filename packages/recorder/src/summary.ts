@@ -2,6 +2,7 @@ import type { HalCallRecord, SafetyEvent } from './messages.js';
 import { TOPICS } from './messages.js';
 import { namespaceOfCallTopic } from './namespace.js';
 import type { Recording } from './read-recording.js';
+import type { RecordingGap } from './recover-records.js';
 
 /** The counts of one robot in a recording of several. */
 export interface RobotSummary {
@@ -15,8 +16,14 @@ export interface RobotSummary {
 
 /** What `hal inspect` shows of a recording. */
 export interface RecordingSummary {
-  /** Whether the file ended properly (false: cut short, read by recovery). */
+  /** Whether the file ended properly (false: cut short or damaged, read by recovery). */
   complete: boolean;
+  /** What could not be read: where the file was cut short or damaged (empty when complete). */
+  gaps: RecordingGap[];
+  /** The reading's own account of a file not read whole (where it stopped, what it read). */
+  truncation?: string;
+  /** The file's size in bytes. */
+  fileBytes: number;
   /** From the first message to the last, seconds. */
   durationS: number;
   /** Calls recorded (of every robot), and how many of them failed. */
@@ -98,6 +105,9 @@ export function summarizeRecording(recording: Recording): RecordingSummary {
   const robot = recording.metadata.get('hal.robot');
   return {
     complete: recording.complete,
+    gaps: recording.gaps,
+    ...(recording.truncation === undefined ? {} : { truncation: recording.truncation }),
+    fileBytes: recording.fileBytes,
     durationS: Number(last - first) / 1e9,
     ...total,
     errorsByCode,

@@ -125,6 +125,36 @@ describe('readTimeline', () => {
     });
   });
 
+  it("refuses an empty file, MCAP's magic alone and a garbled recording, with the reason", async () => {
+    const empty = await readTimeline('empty.mcap', new Uint8Array(0)).catch((e: unknown) => e);
+    expect(empty).toBeInstanceOf(RecordingFileError);
+    expect(empty).toMatchObject({ code: 'EMPTY', message: expect.stringContaining('empty.mcap') });
+    const magic = new Uint8Array([0x89, 0x4d, 0x43, 0x41, 0x50, 0x30, 0x0d, 0x0a]);
+    const bare = await readTimeline('magic.mcap', magic).catch((e: unknown) => e);
+    expect(bare).toMatchObject({
+      code: 'NO_HEADER',
+      message: expect.stringContaining('magic.mcap'),
+    });
+    // a recording whose only chunk is overwritten: nothing in it can be read
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink, { compression: 'none' });
+    recorder.channel('/hal/pose', POSE_IN_FRAME);
+    recorder.write('/hal/pose', {
+      timestamp: { sec: 1, nsec: 0 },
+      frame_id: 'world',
+      pose: { position: { x: 1, y: 0, z: 0 }, orientation: { x: 0, y: 0, z: 0, w: 1 } },
+    });
+    await recorder.close();
+    const bytes = sink.bytes();
+    const chunkAt = bytes.indexOf(0x06, 8 + 29);
+    bytes.fill(0x41, chunkAt + 9, chunkAt + 120);
+    const garbled = await readTimeline('garbled.mcap', bytes).catch((e: unknown) => e);
+    expect(garbled).toMatchObject({
+      code: 'DAMAGED',
+      message: expect.stringContaining(`garbled.mcap is damaged`),
+    });
+  });
+
   it("refuses an MCAP file with none of the robot's topics, naming the topics it has", async () => {
     const sink = memorySink();
     const recorder = await McapRecorder.create(sink, { compression: 'none' });

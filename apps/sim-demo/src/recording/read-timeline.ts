@@ -1,4 +1,4 @@
-import { readRecording, TOPICS } from '@hal/recorder';
+import { readRecording, RecordingReadError, TOPICS } from '@hal/recorder';
 import type { RecordedMessage, Recording } from '@hal/recorder';
 import { PoseSchema } from '@hal/types';
 import { RecordingFileError } from './recording-file-error.js';
@@ -9,15 +9,8 @@ import type { PlaybackTimeline, TimedFrame, TimedPose } from './timeline.js';
  * this module on the first file opened, so the page itself does not carry the MCAP reader.
  */
 
-/** MCAP's magic: every MCAP file starts with these 8 bytes ("\x89MCAP0\r\n"). */
-const MCAP_MAGIC = [0x89, 0x4d, 0x43, 0x41, 0x50, 0x30, 0x0d, 0x0a];
-
 /** The topics the demo plays back: any of them makes a file playable. */
 const ROBOT_TOPICS = [TOPICS.halPose, TOPICS.pose, TOPICS.camera] as const;
-
-function isMcap(bytes: Uint8Array): boolean {
-  return MCAP_MAGIC.every((byte, i) => bytes[i] === byte);
-}
 
 /** Yaw (REP-103, about z) of a unit quaternion. */
 function yawOf(q: { x: number; y: number; z: number; w: number }): number {
@@ -95,14 +88,20 @@ export function timelineOf(name: string, recording: Recording): PlaybackTimeline
 
 /**
  * Reads the MCAP file `bytes` (named `name`) into a time line. Refuses, with a
- * {@link RecordingFileError}, a file that is not MCAP or that has none of the robot's topics.
+ * {@link RecordingFileError}, what the recorder's reader refuses (a file that is empty, not
+ * MCAP, without a header, or damaged with nothing readable: its code and reason), and a file
+ * with none of the robot's topics. A file cut short or damaged in part is played as far as it
+ * reads, and `truncation` says where reading stopped.
  */
 export async function readTimeline(name: string, bytes: Uint8Array): Promise<PlaybackTimeline> {
-  if (!isMcap(bytes)) {
-    throw new RecordingFileError(
-      'NOT_MCAP',
-      `${name} is not an MCAP file (it does not start with MCAP's magic bytes)`,
-    );
+  let recording;
+  try {
+    recording = await readRecording(bytes, { name });
+  } catch (error) {
+    if (error instanceof RecordingReadError) {
+      throw new RecordingFileError(error.code, error.message);
+    }
+    throw error;
   }
-  return timelineOf(name, await readRecording(bytes));
+  return timelineOf(name, recording);
 }

@@ -1,5 +1,10 @@
-/** Why a file cannot be played back. */
-export type RecordingFileErrorCode = 'NOT_MCAP' | 'NO_ROBOT_TOPICS';
+import type { RecordingReadErrorCode } from '@hal/recorder';
+
+/**
+ * Why a file cannot be played back: the recorder's reader refused it (not MCAP, empty, no header,
+ * damaged with nothing readable), or it has none of the robot's topics.
+ */
+export type RecordingFileErrorCode = RecordingReadErrorCode | 'NO_ROBOT_TOPICS';
 
 /** A file the demo refuses to play back, and why. */
 export class RecordingFileError extends Error {

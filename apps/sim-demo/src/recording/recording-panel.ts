@@ -210,7 +210,8 @@ export class RecordingPanel {
       this.#options.scene.scene.add(robot.group);
       this.#options.onPlaybackChange(true);
       this.#slider.max = String(timeline.durationMs);
-      const cut = timeline.truncation !== undefined ? ` Cut short: ${timeline.truncation}.` : '';
+      const cut =
+        timeline.truncation !== undefined ? ` Not read whole: ${timeline.truncation}.` : '';
       this.#say(
         `${timeline.name}: ${seconds(timeline.durationMs)}, ${timeline.poses.length} poses, ` +
           `${timeline.frames.length} camera frames, ${timeline.calls} calls.${cut}`,

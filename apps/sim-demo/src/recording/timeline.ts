@@ -27,7 +27,7 @@ export interface PlaybackTimeline {
   calls: number;
   /** The recorded robot's id, from the `hal.robot` metadata ('' when it has none). */
   deviceId: string;
-  /** Why the file was read only up to a point (a recording cut short), if it was. */
+  /** Where and why the file was not read whole (cut short, or damaged in part), if it was not. */
   truncation?: string;
 }
 

@@ -1,7 +1,8 @@
 // `hal inspect run.mcap`: what a recording holds (duration, calls, errors, e-stops, the messages
-// of each channel, what the recorder dropped), read with MCAP's recovery if it was cut short.
+// of each channel, what the recorder dropped), read with MCAP's recovery if it was cut short or
+// damaged (and then where it stopped, and what it read). A file that is no recording is FAILED.
 import { Command } from 'commander';
-import { readRecordingFile, summarizeRecording } from '@hal/recorder';
+import { readRecordingFile, RecordingReadError, summarizeRecording } from '@hal/recorder';
 import type { RecordingSummary } from '@hal/recorder';
 import { CliError } from '../cli-error.js';
 import { emit } from '../io.js';
@@ -18,7 +19,8 @@ function summaryText(file: string, s: RecordingSummary): string {
   const width = Math.max(16, ...Object.keys(s.channels).map((topic) => topic.length));
   const codes = Object.entries(s.errorsByCode).map(([code, n]) => `${code} ${n}`);
   return [
-    `${file}: a recording${robot}, ${s.durationS.toFixed(2)} s${s.complete ? '' : ' (cut short: read up to its last complete chunk)'}`,
+    `${file}: a recording${robot}, ${s.durationS.toFixed(2)} s`,
+    ...(s.truncation === undefined ? [] : [`not read whole: ${s.truncation}`]),
     `calls ${s.calls}, errors ${s.errors}${codes.length > 0 ? ` (${codes.join(', ')})` : ''}`,
     `emergency stops ${s.emergencyStops}, trips ${s.trips}${s.dropped === undefined ? '' : `, dropped ${s.dropped}`}`,
     ...Object.entries(s.robots ?? {}).map(
@@ -31,16 +33,21 @@ function summaryText(file: string, s: RecordingSummary): string {
   ].join('\n');
 }
 
-/** Reads a recording for a command: NOT_FOUND when there is no such file, FAILED when not MCAP. */
+/**
+ * Reads a recording for a command: NOT_FOUND when there is no such file; FAILED, with the
+ * reader's reason (the file named in it), for one that is no recording: empty, not MCAP, no
+ * header, or damaged with nothing readable.
+ */
 export async function readForCommand(file: string) {
   try {
     return await readRecordingFile(file);
   } catch (error) {
+    if (error instanceof RecordingReadError) throw new CliError('FAILED', error.message);
     const code = (error as { code?: unknown }).code;
     if (code === 'ENOENT') throw new CliError('NOT_FOUND', `no recording at ${file}`);
     throw new CliError(
       'FAILED',
-      `${file} is not a readable MCAP recording: ${error instanceof Error ? error.message : String(error)}`,
+      `cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`,
     );
   }
 }

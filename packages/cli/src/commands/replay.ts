@@ -1,6 +1,7 @@
 // `hal replay run.mcap`: re-runs a recording's action calls on the simulator (the recorded robot's
 // geometry, the recorded map when it is a built-in one) and reports the divergence per call: pose
-// and steps; `--svg` plots both trajectories.
+// and steps; `--svg` plots both trajectories. A file cut short or damaged is replayed as far as it
+// reads, and the report says where reading stopped; one that is no recording is FAILED.
 import { writeFile } from 'node:fs/promises';
 import { Command, Option } from 'commander';
 import { replayRecording, robotNamespace, summarizeRecording, trajectorySvg } from '@hal/recorder';
@@ -21,10 +22,11 @@ function parsed<T>(text: string | undefined): T | undefined {
   }
 }
 
-function reportText(file: string, report: ReplayReport): string {
+function reportText(file: string, report: ReplayReport, truncation: string | undefined): string {
   const mm = (m: number | undefined) => (m === undefined ? '-' : `${(m * 1000).toFixed(3)} mm`);
   return [
     `replayed ${report.calls.length} calls of ${file} on the simulator`,
+    ...(truncation === undefined ? [] : [`not read whole: ${truncation}`]),
     ...report.calls.map((c) => {
       const outcome = (o: { success: boolean; code?: string }) =>
         o.success ? 'ok' : (o.code ?? 'failed');
@@ -111,11 +113,19 @@ export const registerReplay: RegisterCommand = (program, { io, global }) => {
           await sim.cleanup();
         }
         if (options.svg !== undefined) await writeFile(options.svg, trajectorySvg(report, file));
+        const { truncation } = recording;
         emit(
           io,
           global(),
-          { file, map, ...(namespace === undefined ? {} : { robot: namespace }), ...report },
-          () => reportText(file, report),
+          {
+            file,
+            map,
+            ...(namespace === undefined ? {} : { robot: namespace }),
+            complete: recording.complete,
+            ...(truncation === undefined ? {} : { truncation }),
+            ...report,
+          },
+          () => reportText(file, report, truncation),
         );
       }),
   );
