@@ -7,9 +7,16 @@ export interface RecorderOptions {
   compression?: ChunkCompression;
   /**
    * Bytes of messages per chunk before it is written out (default 64 KiB). A process killed
-   * mid-run loses at most the chunk being filled.
+   * mid-run loses at most the chunk being filled (see `chunkIntervalMs`).
    */
   chunkSize?: number;
+  /**
+   * The longest a chunk stays open (ms, default 500): a chunk is written out when it is full or
+   * when its first message is this old, whichever comes first, so a process killed mid-run loses
+   * at most this much of its recording (plus what waits in the queue: see `maxHoldMs`). Shorter
+   * means smaller chunks, which compress less well.
+   */
+  chunkIntervalMs?: number;
   /**
    * Bytes of messages the recorder holds while the disk catches up (default 16 MiB). Beyond it,
    * new messages are dropped and counted; a call never waits for the disk.
@@ -30,7 +37,10 @@ export interface RecorderOptions {
 
 /** What a recorder wrote and lost. */
 export interface RecorderStats {
-  /** Messages handed to the MCAP writer. */
+  /**
+   * Messages handed to the MCAP writer: after `close()`, every message in the file, the
+   * recorder's own `/recorder/loss` among them.
+   */
   written: number;
   /** Messages dropped: the queue was full, the disk failed, or the recorder was closed. */
   dropped: number;

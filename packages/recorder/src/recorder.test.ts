@@ -44,7 +44,8 @@ describe('McapRecorder', () => {
     recorder.channel(TOPICS.calls, CALL_RECORD);
     for (let n = 0; n < 200; n += 1) recorder.write(TOPICS.calls, call(n));
     const stats = await recorder.close();
-    expect(stats).toMatchObject({ written: 200, dropped: 0 });
+    // the 200 and the recorder's own /recorder/loss
+    expect(stats).toMatchObject({ written: 201, dropped: 0 });
 
     const recording = await readRecording(sink.bytes());
     expect(recording.complete).toBe(true);
@@ -56,7 +57,7 @@ describe('McapRecorder', () => {
     expect(recording.messages.filter((m) => m.topic === TOPICS.calls).map((m) => m.value)).toEqual(
       Array.from({ length: 200 }, (_, n) => call(n)),
     );
-    expect(recording.metadata.get('recorder.loss')).toEqual({ written: '200', dropped: '0' });
+    expect(recording.metadata.get('recorder.loss')).toEqual({ written: '201', dropped: '0' });
     expectWellFormed(recording);
     // zstd, against the same messages uncompressed
     const sizes: Record<string, number> = {};
@@ -70,6 +71,49 @@ describe('McapRecorder', () => {
       expect((await readRecording(plain.bytes())).messages).toHaveLength(2001);
     }
     expect(sizes['zstd']).toBeLessThan(sizes['none']! / 4);
+  });
+
+  it('closes a chunk on time, not only when full: the file holds its messages before close', async () => {
+    const sink = memorySink();
+    // the default chunk interval (500 ms); 3 small messages are far from the 64 KiB chunk size
+    const recorder = await McapRecorder.create(sink);
+    recorder.channel(TOPICS.calls, CALL_RECORD);
+    for (let n = 0; n < 3; n += 1) recorder.write(TOPICS.calls, call(n));
+    const callsOnDisk = async (): Promise<unknown[]> => {
+      const bytes = sink.bytes();
+      const recording = await readRecording(bytes).catch(() => undefined);
+      return recording?.messages.map((m) => m.value) ?? [];
+    };
+    await expect
+      .poll(callsOnDisk, { timeout: 10_000, interval: 50 })
+      .toEqual([call(0), call(1), call(2)]);
+    // read while the recorder is still open: a file with no summary yet, every message in it
+    const open = await readRecording(sink.bytes());
+    expect(open.complete).toBe(false);
+    expect(open.gaps).toEqual([
+      {
+        kind: 'cut-short',
+        offset: sink.bytes().byteLength,
+        reason:
+          'the file ends after a complete record, with no summary: its writer never finished it',
+      },
+    ]);
+    await recorder.close();
+    expect((await readRecording(sink.bytes())).complete).toBe(true);
+  });
+
+  it('counts every message the file holds in written, its own loss record too', async () => {
+    const sink = memorySink();
+    const recorder = await McapRecorder.create(sink);
+    recorder.channel(TOPICS.calls, CALL_RECORD);
+    for (let n = 0; n < 7; n += 1) recorder.write(TOPICS.calls, call(n));
+    const stats = await recorder.close();
+    const recording = await readRecording(sink.bytes());
+    expect(recording.messages).toHaveLength(8);
+    expect(stats.written).toBe(recording.messages.length);
+    const loss = recording.messages.find((m) => m.topic === TOPICS.loss);
+    expect(loss?.value).toMatchObject({ written: 8, dropped: 0 });
+    expect(recording.metadata.get('recorder.loss')).toEqual({ written: '8', dropped: '0' });
   });
 
   it('never waits for a stalled disk: it drops what does not fit, counts it, logs it and says so in the file', async () => {
@@ -93,7 +137,8 @@ describe('McapRecorder', () => {
 
     sink.release();
     const stats = await recorder.close();
-    expect(stats.written + stats.dropped).toBe(500);
+    // the 500, and the loss record written after them
+    expect(stats.written + stats.dropped).toBe(501);
     const recording = await readRecording(sink.bytes());
     expect(recording.metadata.get('recorder.loss')).toMatchObject({
       written: String(stats.written),

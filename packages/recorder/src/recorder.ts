@@ -1,8 +1,8 @@
 import { scoped, silentLogger, withTimeout } from '@hal/types';
 import type { ScopedLogger } from '@hal/types';
-import { McapWriter } from '@mcap/core';
 import { BackgroundWork } from './background-work.js';
 import { period } from './call-values.js';
+import { ChunkedMcapWriter } from './chunked-writer.js';
 import { epochNsAt, monotonicEpochClock } from './clock.js';
 import { chunkCompressor, zstdReady } from './compression.js';
 import { Fifo } from './fifo.js';
@@ -28,7 +28,7 @@ interface QueuedMessage {
 interface QueuedRecord {
   kind: 'record';
   bytes: number;
-  run: (writer: McapWriter) => Promise<void>;
+  run: (writer: ChunkedMcapWriter) => Promise<void>;
 }
 
 type QueuedOp = QueuedMessage | QueuedRecord;
@@ -39,6 +39,8 @@ const WORK_SLICE_MS = 1;
 const WORK_TICK_MS = 10;
 /** The longest {@link McapRecorder.drained} and `close` wait for deferred tasks still waiting. */
 const DEFERRED_WAIT_MS = 2000;
+/** The longest a chunk stays open (ms) by default: what a killed process may lose of its file. */
+const DEFAULT_CHUNK_INTERVAL_MS = 500;
 
 /**
  * An MCAP file being written, chunked and compressed, with JSON-encoded channels. Every method
@@ -50,7 +52,10 @@ const DEFERRED_WAIT_MS = 2000;
  * counts them, logs it, and says so in the file at close.
  */
 export class McapRecorder {
-  readonly #writer: McapWriter;
+  readonly #writer: ChunkedMcapWriter;
+  readonly #chunkIntervalMs: number;
+  /** Closes the chunk being filled once it has been open `chunkIntervalMs`. */
+  #chunkTimer: ReturnType<typeof setTimeout> | undefined;
   readonly #sink: RecordingSink;
   readonly #log: ScopedLogger;
   readonly #maxQueuedBytes: number;
@@ -80,9 +85,12 @@ export class McapRecorder {
     this.#maxQueuedBytes = options.maxQueuedBytes ?? 16 * 1024 * 1024;
     this.clock = options.clock ?? monotonicEpochClock();
     this.#ownClock = options.clock !== undefined;
-    this.#writer = new McapWriter({
+    this.#chunkIntervalMs = period(
+      'chunkIntervalMs',
+      options.chunkIntervalMs ?? DEFAULT_CHUNK_INTERVAL_MS,
+    );
+    this.#writer = new ChunkedMcapWriter({
       writable: sink,
-      useChunks: true,
       chunkSize: options.chunkSize ?? 64 * 1024,
       ...(compressChunk ? { compressChunk } : {}),
     });
@@ -267,14 +275,22 @@ export class McapRecorder {
       dropped: this.#dropped,
       ...(this.#dropReason !== undefined ? { reason: this.#dropReason } : {}),
     });
-    // The loss record is built when its turn comes, so it counts everything before it.
+    // The loss record is built when its turn comes, so it counts everything before it, and
+    // itself: `written` is then every message in the file, as stats() says after close.
     this.#enqueue({
       kind: 'record',
       bytes: 0,
       run: async (writer) => {
+        const withMessage = this.#channels.has(TOPICS.loss);
+        if (withMessage) this.#written += 1;
         const loss = lossLater();
-        if (this.#channels.has(TOPICS.loss)) {
-          await this.#writeMessage(TOPICS.loss, this.clock(), loss);
+        if (withMessage) {
+          try {
+            await this.#writeMessage(TOPICS.loss, this.clock(), loss);
+          } catch (error) {
+            this.#written -= 1;
+            throw error;
+          }
         }
         await writer.addMetadata({
           name: 'recorder.loss',
@@ -286,6 +302,7 @@ export class McapRecorder {
     this.#closed = true;
     await this.drained();
     this.#work.stop();
+    if (this.#chunkTimer !== undefined) clearTimeout(this.#chunkTimer);
     try {
       await this.#sink.close();
     } catch (error) {
@@ -333,6 +350,7 @@ export class McapRecorder {
       else {
         await this.#writeMessage(op.topic, op.logTime, op.json);
         this.#written += 1;
+        if (this.#writer.openChunkMessages === 1) this.#closeChunkLater();
       }
     } catch (error) {
       if (op.kind === 'message') this.#drop(String(error));
@@ -352,6 +370,25 @@ export class McapRecorder {
       publishTime: logTime,
       data: utf8(typeof json === 'string' ? json : JSON.stringify(json)),
     });
+  }
+
+  /**
+   * A chunk has just opened: in `chunkIntervalMs`, it is closed (if it is still the one open),
+   * through the queue, in its turn after the messages before it. The timer is armed here, in
+   * the background work, never on a call's path.
+   */
+  #closeChunkLater(): void {
+    if (this.#chunkTimer !== undefined) clearTimeout(this.#chunkTimer);
+    const chunk = this.#writer.chunksWritten;
+    this.#chunkTimer = setTimeout(() => {
+      this.#chunkTimer = undefined;
+      this.#enqueue({
+        kind: 'record',
+        bytes: 0,
+        run: (writer) => (writer.chunksWritten === chunk ? writer.closeChunk() : Promise.resolve()),
+      });
+    }, this.#chunkIntervalMs);
+    (this.#chunkTimer as { unref?: () => void }).unref?.();
   }
 
   #runTask(task: () => void | PromiseLike<void>): void {
