@@ -1,10 +1,12 @@
 // The packages as a user gets them from npm. Packs every package under packages/ (found at run
 // time) with `pnpm pack`, installs the tarballs with npm into a temporary app outside the
 // workspace, runs a plain `node` ESM program there that imports each package by name and drives
-// SimulationHAL, and bundles the library packages for the browser with vite.
+// SimulationHAL, runs the installed `hal` against the firmware emulator over UDP, serial,
+// WebSocket and NATS, and bundles the library packages for the browser with vite.
 //
 // Needs: pnpm and npm on PATH, tar, and the npm registry or a warm npm cache for the third-party
-// dependencies (zod, crc, serialport, jpeg-js, three): npm installs them with --prefer-offline.
+// dependencies (zod, crc, serialport, jpeg-js, three): npm installs them with --prefer-offline;
+// the cube-emulator (firmware/scripts/test.sh builds it) and nats-server.
 // Packs the dist/ that `pnpm test` builds just before (a stale or missing dist is rebuilt first).
 // Everything it writes is in a temporary folder, removed at the end.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -12,8 +14,18 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { TRANSPORTS, expectFromRobot, statusOver } from '../cli/every-transport.js';
+import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import { bundleForBrowser, isNativePackage, packageDirOf } from './browser-bundle.js';
-import { installApp, packedFiles, packedManifest, runAppCommand, runNodeApp } from './temp-app.js';
+import {
+  cleanEnv,
+  installApp,
+  packedFiles,
+  packedManifest,
+  runAppCommand,
+  runNodeApp,
+} from './temp-app.js';
 import type { Manifest, PackedPackage, WorkspacePackage } from './workspace-packages.js';
 import { build, packAll, staleBuilds, workspacePackages } from './workspace-packages.js';
 
@@ -134,6 +146,24 @@ describe('the packages as published', () => {
       device: { mode: 'simulation' },
     });
   });
+
+  it("answers hal status with the emulated robot's own identity over UDP, serial, WebSocket and NATS", async () => {
+    const hal = {
+      command: join(appDir, 'node_modules', '.bin', 'hal'),
+      args: [],
+      cwd: appDir,
+      env: cleanEnv(),
+    };
+    const deviceId = 'cube-packed';
+    const [emulator, nats] = await Promise.all([startEmulator({ deviceId }), startNatsServer()]);
+    try {
+      for (const way of TRANSPORTS) {
+        expectFromRobot(await statusOver(way, hal, { emulator, nats }), deviceId);
+      }
+    } finally {
+      await Promise.all([stopAllEmulators(), stopAllNatsServers()]);
+    }
+  }, 180_000);
 
   it('imports each package by name from its dist in plain Node and drives SimulationHAL 10 cm forward', async () => {
     const names = published.map((p) => p.manifest.name);

@@ -40,7 +40,8 @@ export async function packedFiles(tarball: string): Promise<string[]> {
  * Installs the tarballs into `appDir`. Each @hal package is also an override, so that a package
  * depending on another (`"@hal/types": "0.1.0"` after packing) gets the local tarball, never a
  * registry lookup. `extra` are further dependencies a user's app adds (three for the scene).
- * Install scripts are skipped: nothing here loads serialport's native binding.
+ * Install scripts are skipped: serialport's bindings load the prebuilt binary their package
+ * ships (the installed `hal` opens the emulator's pty with it), and build nothing.
  */
 export async function installApp(
   appDir: string,
