@@ -27,6 +27,18 @@ export interface AgentTrial {
   hal?: HardwareAbstractionLayer;
 }
 
+/**
+ * Why an agent's model could not be used in a trial: it never answered (an endpoint that could
+ * not be reached or refused every request, a local model that could not load or whose grammar
+ * could not be built). Such a trial is no score of the task: it is counted apart.
+ */
+export interface ModelFailure {
+  /** The failure's code: the endpoint's (NETWORK, HTTP, TIMEOUT...) or the model's own. */
+  code: string;
+  /** What went wrong, with its cause (host, errno, status). */
+  message: string;
+}
+
 /** What an agent says at the end of a trial. */
 export interface AgentAnswer {
   /** Its final words (a perception task's answer is read from them). */
@@ -37,6 +49,8 @@ export interface AgentAnswer {
   modelMs?: number;
   /** Why it stopped early, if it did (an endpoint error, its step cap). */
   stopped?: string;
+  /** Set when the agent's model never answered in the trial: the trial is then not scored. */
+  modelFailure?: ModelFailure;
 }
 
 /** An agent the harness can score. */

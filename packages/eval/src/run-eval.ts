@@ -1,4 +1,4 @@
-import type { EvalAgent } from './agent.js';
+import type { EvalAgent, ModelFailure } from './agent.js';
 import { EvalError } from './errors.js';
 import { RealitySchema } from './reality.js';
 import { summariseGroups, summariseTasks } from './scores.js';
@@ -9,8 +9,19 @@ import type { Task } from './task-schema.js';
 import { runTrial } from './trial.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
 
-/** The version of the report's JSON shape. */
-export const REPORT_VERSION = 1;
+/** The version of the report's JSON shape (2: the trials and agents whose model failed). */
+export const REPORT_VERSION = 2;
+
+/** An agent whose model could not be used: in how many trials, and the first failure. */
+export interface AgentModelFailure extends ModelFailure {
+  /** Trials that ran and in which the model never answered. */
+  trials: number;
+  /**
+   * Trials not run at all: once the model failed before it had answered in any trial, the
+   * agent's remaining trials are skipped (each would only wait out the same failure).
+   */
+  notRun: number;
+}
 
 /** One agent's scores (on one robot: the simulator, or a robot of {@link EvalOptions.robots}). */
 export interface AgentScores {
@@ -18,10 +29,17 @@ export interface AgentScores {
   agent: string;
   /** `simulator` (scored from its ground truth), or the robot's name (from its reports). */
   on: string;
+  /** Over the scored trials only: those whose model failed are not among them. */
   overall: Rate;
   groups: GroupSummary[];
   tasks: TaskSummary[];
+  /** Every trial run, those whose model failed included. */
   trials: TrialScore[];
+  /**
+   * Set when the agent's model could not be used in some trials (it never answered): the run is
+   * then a failure of the model, not a score. Null when the model answered in every trial.
+   */
+  modelFailure: AgentModelFailure | null;
 }
 
 /**
@@ -60,7 +78,10 @@ export interface EvalOptions extends TrialOptions {
   robots?: readonly EvalRobot[];
   /** Whether the agents run in the simulator too (`false`: on the robots only). Default true. */
   simulator?: boolean;
-  /** Told of every trial as it ends (in the order they end). */
+  /**
+   * Told of every trial as it ends (in the order they end). `total` is the trials still to be
+   * run plus those done: it drops when an agent whose model failed has its trials skipped.
+   */
   onTrial?: (event: {
     agent: string;
     score: TrialScore;
@@ -134,6 +155,11 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   );
   let next = 0;
   let done = 0;
+  // per row: whether its model answered in some trial, its first failure, and trials skipped
+  const reached = rows.map(() => false);
+  const firstFailure: (ModelFailure | undefined)[] = rows.map(() => undefined);
+  const skipped = rows.map(() => 0);
+  const skippedTotal = () => skipped.reduce((a, b) => a + b, 0);
   const {
     tasks: _t,
     agents: _a,
@@ -148,14 +174,22 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   const simulated = jobs.flatMap((job, i) => (job.robot === undefined ? [i] : []));
   async function run(i: number): Promise<void> {
     const job = jobs[i] as (typeof jobs)[number];
+    // a model that failed before it ever answered is not tried again
+    if (firstFailure[job.a] !== undefined && !reached[job.a]) {
+      skipped[job.a] = (skipped[job.a] ?? 0) + 1;
+      return;
+    }
     const perTrial = { ...trialOptions, trial: job.trial };
     const result =
       job.robot === undefined
         ? await runTrial(job.task, job.seed, job.agent, perTrial)
         : await runRobotTrial(job.task, job.seed, job.agent, job.robot, perTrial);
     results[i] = result;
+    const failure = result.score.modelFailure;
+    if (failure === null) reached[job.a] = true;
+    else firstFailure[job.a] ??= failure;
     done += 1;
-    onTrial?.({ agent: job.name, ...result, done, total: jobs.length });
+    onTrial?.({ agent: job.name, ...result, done, total: jobs.length - skippedTotal() });
   }
   async function worker(): Promise<void> {
     for (let n = next++; n < simulated.length; n = next++) await run(simulated[n] as number);
@@ -178,12 +212,19 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
       job.a === a && results[i] !== undefined ? [{ job, result: results[i] }] : [],
     );
     const scores = mine.map((m) => m.result.score);
+    const scored = scores.filter((t) => t.modelFailure === null);
+    const failed = scores.filter((t) => t.modelFailure !== null);
+    const first = failed[0]?.modelFailure;
     agents.push({
       agent: row.name,
       on: row.robot?.name ?? 'simulator',
-      ...summariseGroups(scores),
-      tasks: summariseTasks(scores),
+      ...summariseGroups(scored),
+      tasks: summariseTasks(scored),
       trials: scores,
+      modelFailure:
+        first === undefined || first === null
+          ? null
+          : { ...first, trials: failed.length, notRun: skipped[a] ?? 0 },
     });
     const times = mine.map((m) => ({ task: m.job.task.id, seed: m.job.seed, ...m.result.timing }));
     timing.push({

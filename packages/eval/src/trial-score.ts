@@ -1,6 +1,6 @@
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { Leash } from '@hal/tools';
-import type { AgentAnswer } from './agent.js';
+import type { AgentAnswer, ModelFailure } from './agent.js';
 import { judge, targetOf } from './checks.js';
 import type { CheckVerdict } from './checks.js';
 import type { RealityInput } from './reality.js';
@@ -15,9 +15,15 @@ export interface TrialScore {
   task: string;
   group: TaskGroup;
   seed: number;
+  /** Whether every check held; false in a trial whose model failed (see `modelFailure`). */
   success: boolean;
-  /** The checks that failed, each with why. */
+  /** The checks that failed, each with why (none are judged in a trial whose model failed). */
   failures: string[];
+  /**
+   * Why the agent's model could not be used in this trial (it never answered), else null. Such a
+   * trial is no score of the task: the summaries leave it out of every rate.
+   */
+  modelFailure: ModelFailure | null;
   collisions: number;
   /**
    * Where the robot ended, metres and degrees: the simulator's ground truth, or on a robot its
@@ -123,14 +129,17 @@ export function scoreTrial(o: TrialOutcome): TrialScore {
     estopLatched: o.estopLatched,
     answer: answer.answer,
   };
-  const verdicts: CheckVerdict[] = task.checks.map((c) => judge(c, end));
+  // a model that never answered did not fail the task: nothing is judged
+  const failed = answer.modelFailure !== undefined;
+  const verdicts: CheckVerdict[] = failed ? [] : task.checks.map((c) => judge(c, end));
   if (
+    !failed &&
     !task.allowCollisions &&
     collisions > 0 &&
     !task.checks.some((c) => c.kind === 'no-collision')
   )
     verdicts.push({ kind: 'collision', passed: false, why: `${collisions} collision(s)` });
-  if (simSeconds > task.budget.simSeconds)
+  if (!failed && simSeconds > task.budget.simSeconds)
     verdicts.push({
       kind: 'budget',
       passed: false,
@@ -149,8 +158,9 @@ export function scoreTrial(o: TrialOutcome): TrialScore {
     task: task.id,
     group: task.group,
     seed: o.seed,
-    success: failures.length === 0,
+    success: !failed && failures.length === 0,
     failures,
+    modelFailure: answer.modelFailure ?? null,
     collisions,
     endPose: {
       x: round(pose.x),

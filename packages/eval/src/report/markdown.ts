@@ -35,6 +35,16 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
         ? 'In the simulator, scored from its ground truth.'
         : `On ${agent.on}, scored from what the robot reports.`,
       '',
+      ...(agent.modelFailure === null
+        ? []
+        : [
+            `**The model could not be used** in ${agent.modelFailure.trials} trial(s)` +
+              (agent.modelFailure.notRun > 0
+                ? ` (then ${agent.modelFailure.notRun} more were not run)`
+                : '') +
+              `: ${agent.modelFailure.code}: ${agent.modelFailure.message}. Those trials are not scored.`,
+            '',
+          ]),
       '| task | success | 95 % CI | pass^k | collisions | position error (m) | path / optimum | calls | refused |',
       '|---|---|---|---|---|---|---|---|---|',
     );
@@ -43,7 +53,7 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
         `| ${t.task} | ${t.success.successes}/${t.success.trials} | ${pct(t.success.low)}–${pct(t.success.high)} | ${t.passAll ? 'yes' : 'no'} | ${t.collisions} | ${num(t.meanPositionErrorM)} | ${num(t.meanPathRatio, 2)} | ${t.toolCalls} | ${t.refusedCalls} |`,
       );
     }
-    const failures = agent.trials.filter((t) => !t.success).slice(0, 20);
+    const failures = agent.trials.filter((t) => !t.success && t.modelFailure === null).slice(0, 20);
     if (failures.length > 0) {
       lines.push('', 'Failures (first 20):', '');
       for (const f of failures) lines.push(`- ${f.task} seed ${f.seed}: ${f.failures.join('; ')}`);

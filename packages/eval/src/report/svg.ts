@@ -37,7 +37,8 @@ export function successSvg(report: EvalReport): string {
     agents.forEach((agent, a) => {
       const rate =
         group === 'overall' ? agent.overall : agent.groups.find((s) => s.group === group)?.success;
-      if (rate === undefined) return;
+      // no bar for an agent with no scored trial (its model failed): it is no 0 %
+      if (rate === undefined || rate.trials === 0) return;
       const x = x0 + a * bar;
       const colour = PALETTE[a % PALETTE.length] ?? '#000';
       const h = Math.max(rate.rate * height, 0.5);
@@ -55,7 +56,7 @@ export function successSvg(report: EvalReport): string {
     const ly = legendY + a * 16;
     parts.push(
       `<rect x="${left}" y="${ly - 9}" width="10" height="10" fill="${colour}"/>`,
-      `<text x="${left + 16}" y="${ly}">${escape(agent.agent)}</text>`,
+      `<text x="${left + 16}" y="${ly}">${escape(agent.agent)}${agent.modelFailure === null ? '' : ' (model failed, see eval.md)'}</text>`,
     );
   });
   parts.push('</svg>');

@@ -1,4 +1,4 @@
-import type { EvalReport } from '../run-eval.js';
+import type { AgentModelFailure, EvalReport } from '../run-eval.js';
 
 const pct = (rate: number) => `${Math.round(rate * 100)}%`;
 
@@ -22,14 +22,33 @@ export function alignColumns(rows: readonly (readonly string[])[]): string {
     .join('\n');
 }
 
+/** What the table says of an agent whose model failed: in how many trials, how many not run. */
+export function modelFailureNote(failure: AgentModelFailure): string {
+  const trials = `${failure.trials} trial${failure.trials === 1 ? '' : 's'}`;
+  return `model failed (${failure.code}) in ${trials}${failure.notRun > 0 ? `, ${failure.notRun} not run` : ''}`;
+}
+
 /**
  * One line per agent: its success rate by group (successes/trials) and overall with the 95 %
- * interval, tool calls, refused calls and tokens.
+ * interval, tool calls, refused calls and tokens; the rates count only scored trials. An agent
+ * whose model failed (never answered) has a last column that says so; with no scored trial its
+ * rates are `-`, never 0 %.
  */
 export function summaryTable(report: EvalReport): string {
   const groups = reportGroups(report);
-  const head = ['agent', ...groups, 'overall', '95% CI', 'calls', 'refused', 'tokens'];
+  const anyFailure = report.scores.agents.some((a) => a.modelFailure !== null);
+  const head = [
+    'agent',
+    ...groups,
+    'overall',
+    '95% CI',
+    'calls',
+    'refused',
+    'tokens',
+    ...(anyFailure ? ['model'] : []),
+  ];
   const rows = report.scores.agents.map((a) => {
+    const none = a.overall.trials === 0;
     const byGroup = new Map(a.groups.map((g) => [g.group as string, g]));
     const calls = a.trials.reduce((s, t) => s + t.toolCalls, 0);
     const refused = a.trials.reduce((s, t) => s + t.refusedCalls, 0);
@@ -40,11 +59,12 @@ export function summaryTable(report: EvalReport): string {
         const s = byGroup.get(g)?.success;
         return s === undefined ? '-' : `${pct(s.rate)} ${s.successes}/${s.trials}`;
       }),
-      pct(a.overall.rate),
-      `${pct(a.overall.low)}-${pct(a.overall.high)}`,
+      none ? '-' : pct(a.overall.rate),
+      none ? '-' : `${pct(a.overall.low)}-${pct(a.overall.high)}`,
       String(calls),
       String(refused),
       String(tokens),
+      ...(anyFailure ? [a.modelFailure === null ? 'ok' : modelFailureNote(a.modelFailure)] : []),
     ];
   });
   return alignColumns([head, ...rows]);
