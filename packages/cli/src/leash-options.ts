@@ -1,26 +1,17 @@
 // The leash on the command line: the options of every command that hands the robot to a model
 // (`hal mcp`, `hal agent`). Parsing only; @hal/tools enforces the leash.
 import type { Leash } from '@hal/tools';
-import { InvalidArgumentError } from 'commander';
 import type { Command } from 'commander';
+import { distanceArg, numberArg, readQuantity, usageError } from './values.js';
 
-/** A commander parser of a finite number, its errors naming `what`. */
-export function numberOption(what: string) {
-  return (text: string): number => {
-    const value = Number(text);
-    if (text.trim() === '' || !Number.isFinite(value)) {
-      throw new InvalidArgumentError(`${what} must be a number`);
-    }
-    return value;
-  };
-}
+const GEOFENCE_FORM =
+  '"--geofence" is minX,maxX,minY,maxY (metres, or each with a unit: 30cm), min < max';
 
 function geofence(text: string): NonNullable<Leash['geofence']> {
-  const parts = text.split(',').map(Number);
+  const parts = text.split(',').map((p) => readQuantity(p, 'distance'));
   const [minX, maxX, minY, maxY] = parts;
   if (
     parts.length !== 4 ||
-    parts.some((p) => !Number.isFinite(p)) ||
     minX === undefined ||
     maxX === undefined ||
     minY === undefined ||
@@ -28,7 +19,7 @@ function geofence(text: string): NonNullable<Leash['geofence']> {
     minX >= maxX ||
     minY >= maxY
   ) {
-    throw new InvalidArgumentError('the geofence is minX,maxX,minY,maxY in metres, min < max');
+    throw usageError(`${GEOFENCE_FORM}, got "${text}"`);
   }
   return { minX, maxX, minY, maxY };
 }
@@ -44,18 +35,18 @@ export interface LeashCliOptions {
 export function addLeashOptions(command: Command): Command {
   return command
     .option(
-      '--max-distance <m>',
-      'leash: longest path of one motion, metres',
-      numberOption('--max-distance'),
+      '--max-distance <distance>',
+      'leash: longest path of one motion (metres, or 30cm)',
+      distanceArg('--max-distance', { min: 0 }),
     )
     .option(
       '--max-speed <m/s>',
-      'leash: fastest wheel speed of one call',
-      numberOption('--max-speed'),
+      'leash: fastest wheel speed of one call, m/s',
+      numberArg('--max-speed', { min: 0 }, 'm/s'),
     )
     .option(
       '--geofence <minX,maxX,minY,maxY>',
-      'leash: a motion must end inside, metres',
+      'leash: a motion must end inside (metres, or each with a unit)',
       geofence,
     );
 }

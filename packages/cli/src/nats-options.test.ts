@@ -1,4 +1,4 @@
-import { Command, CommanderError } from 'commander';
+import { Command } from 'commander';
 import { describe, expect, it } from 'vitest';
 import { addNatsOptions, deviceIdArg, natsConnectOptions } from './nats-options.js';
 import type { NatsCliOptions } from './nats-options.js';
@@ -49,7 +49,9 @@ describe('NATS options', () => {
   it('takes a device id only if it is one subject token', () => {
     expect(deviceIdArg('cube-01')).toBe('cube-01');
     for (const bad of ['', 'a.b', 'cube 1', '*', '>', 'x'.repeat(65)]) {
-      expect(() => deviceIdArg(bad)).toThrow(CommanderError);
+      expect(() => deviceIdArg(bad)).toThrow(
+        expect.objectContaining({ name: 'CliError', code: 'USAGE' }),
+      );
     }
   });
 });

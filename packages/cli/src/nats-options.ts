@@ -1,8 +1,9 @@
 // The NATS options every networked subcommand shares, with their environment defaults, so
 // `hal status`, `hal test`, `hal fleet` and `hal serve --nats` reach a server the same way.
-import { InvalidArgumentError, Option } from 'commander';
+import { Option } from 'commander';
 import type { Command } from 'commander';
 import type { NatsConnectOptions } from '@hal/nats';
+import { usageError } from './values.js';
 
 /** The parsed NATS options (before environment defaults). */
 export interface NatsCliOptions {
@@ -18,7 +19,7 @@ export interface NatsCliOptions {
 /** A device id as it appears in a subject token: no dots, spaces or wildcards. */
 export function deviceIdArg(value: string): string {
   if (!/^[A-Za-z0-9_-]{1,64}$/.test(value)) {
-    throw new InvalidArgumentError(
+    throw usageError(
       `a device id is 1-64 letters, digits, '-' or '_' (it is a NATS subject token), got "${value}"`,
     );
   }

@@ -1,7 +1,7 @@
 import { Command } from 'commander';
 import { describe, expect, it } from 'vitest';
 import { CliError } from './cli-error.js';
-import { addTargetOptions, resolveTarget } from './target.js';
+import { addTargetOptions, describeTarget, resolveTarget, targetArgs } from './target.js';
 import type { TargetCliOptions, TargetKind } from './target.js';
 
 function parse(argv: string[], kinds?: readonly TargetKind[], env = {}) {
@@ -50,6 +50,29 @@ describe('naming the robot', () => {
     });
   });
 
+  it('reads an IPv6 robot in brackets, as every command does, and names it so again', () => {
+    const target = parse(['--udp', '[fe80::1]:4300']);
+    expect(target).toEqual({ kind: 'udp', host: 'fe80::1', port: 4300, timeScale: 1 });
+    expect(describeTarget(target)).toBe('robot at udp [fe80::1]:4300');
+    expect(targetArgs(target)).toBe('--udp [fe80::1]:4300');
+  });
+
+  it("takes a physical robot's key from $HAL_KEY when --key is not given, and checks it", () => {
+    expect(parse(['--udp', 'cube'], undefined, { HAL_KEY: '00ff' })).toMatchObject({ key: '00ff' });
+    expect(parse(['--udp', 'cube', '--key', 'abcd'], undefined, { HAL_KEY: '00ff' })).toMatchObject(
+      { key: 'abcd' },
+    );
+    // not for a robot that takes no key
+    expect(parse(['--sim'], undefined, { HAL_KEY: '00ff' })).toEqual({
+      kind: 'sim',
+      map: 'empty',
+      speed: 1,
+    });
+    expect(() => parse(['--udp', 'cube'], undefined, { HAL_KEY: 'xyz' })).toThrow(
+      '"$HAL_KEY" must be 1..64 bytes written as hex',
+    );
+  });
+
   it('reaches a NATS device by --device, or the default device with --nats alone', () => {
     expect(parse(['--device', 'cube-01'], undefined, { NATS_URL: 'nats://hub:4222' })).toEqual({
       kind: 'nats',
@@ -71,7 +94,7 @@ describe('naming the robot', () => {
     [['--udp', 'a', '--baud', '9600'], /"--baud" needs --serial/],
     [['--ws', 'ws://a', '--time-scale', '2'], /"--time-scale" needs --sim, --udp or --serial/],
     [['--ws', 'http://a'], /"--ws" must be a ws:\/\/ or wss:\/\/ URL/],
-    [['--udp', 'host:99999'], /"--udp" must be HOST or HOST:PORT/],
+    [['--udp', 'host:99999'], /"--udp" must be HOST, HOST:PORT or \[IPV6\]:PORT/],
     [['--device', 'a.b'], /a device id is 1-64 letters/],
     [['--sim', '--map', 'moon'], /Allowed choices are empty, obstacles, maze, room/],
   ])('refuses %j with a clear usage error', (argv, message) => {

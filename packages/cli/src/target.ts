@@ -2,7 +2,7 @@
 // --serial, --ws, or NATS (--device and/or --nats). Parsing only; target-hal.ts builds the HAL.
 import { Option } from 'commander';
 import type { Command } from 'commander';
-import { hexKeyArg, hostPortArg, integerArg, positiveArg } from './values.js';
+import { hexKeyArg, hostPortArg, hostPortText, integerArg, positiveArg, urlArg } from './values.js';
 import type { NatsConnectOptions } from '@hal/nats';
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
@@ -54,19 +54,6 @@ export interface TargetCliOptions extends NatsCliOptions {
 /** Connecting gives up after this long by default, ms (a robot that is off is NOT_CONNECTED). */
 export const DEFAULT_CONNECT_TIMEOUT_MS = 10_000;
 
-function wsUrlArg(value: string): string {
-  let url: URL;
-  try {
-    url = new URL(value);
-  } catch {
-    throw new CliError('USAGE', `"--ws" must be a ws:// or wss:// URL, got "${value}"`);
-  }
-  if (url.protocol !== 'ws:' && url.protocol !== 'wss:') {
-    throw new CliError('USAGE', `"--ws" must be a ws:// or wss:// URL, got "${value}"`);
-  }
-  return value;
-}
-
 /**
  * Adds the robot options of `kinds` to `command` (all five by default; `hal serve` takes only the
  * robots it can own: sim, udp and serial). NATS adds --device and the shared NATS options.
@@ -89,9 +76,10 @@ export function addTargetOptions(
   }
   if (has('udp')) {
     command.addOption(
-      new Option('--udp <host[:port]>', 'a robot over WiFi UDP (port 4210 by default)').argParser(
-        hostPortArg('--udp'),
-      ),
+      new Option(
+        '--udp <host[:port]>',
+        'a robot over WiFi UDP: HOST, HOST:PORT or [IPV6]:PORT (port 4210 by default)',
+      ).argParser(hostPortArg('--udp')),
     );
   }
   if (has('serial')) {
@@ -105,9 +93,10 @@ export function addTargetOptions(
   }
   if (has('udp') || has('serial')) {
     command.addOption(
-      new Option('--key <hex>', "the robot's pre-shared key (with --udp or --serial)").argParser(
-        hexKeyArg,
-      ),
+      new Option(
+        '--key <hex>',
+        "the robot's pre-shared key (with --udp or --serial; default $HAL_KEY)",
+      ).argParser(hexKeyArg('--key')),
     );
   }
   if (has('sim') || has('udp') || has('serial')) {
@@ -178,6 +167,21 @@ function onlyWith(
 }
 
 /**
+ * Whether `options` name a robot at all: `hal agent` and `hal mcp` take the embedded simulator
+ * when they do not.
+ */
+export function namesTarget(options: TargetCliOptions): boolean {
+  return (
+    options.sim === true ||
+    options.udp !== undefined ||
+    options.serial !== undefined ||
+    options.ws !== undefined ||
+    options.device !== undefined ||
+    NATS_FLAGS.some((name) => options[name] !== undefined)
+  );
+}
+
+/**
  * The one robot `options` name. A USAGE error when none or several are named, or when an option
  * belongs to another kind of robot (`--key` with `--sim`). `env` gives the NATS defaults.
  */
@@ -215,7 +219,11 @@ export function resolveTarget(
   if (kind !== 'udp' && kind !== 'serial') onlyWith(options, ['key'], '--udp or --serial');
   if (kind === 'ws' || kind === 'nats')
     onlyWith(options, ['timeScale', 'calibration'], '--sim, --udp or --serial');
-  const key = options.key === undefined ? {} : { key: options.key };
+  const keyText = options.key ?? env['HAL_KEY'];
+  const key =
+    keyText === undefined || keyText === '' || (kind !== 'udp' && kind !== 'serial')
+      ? {}
+      : { key: hexKeyArg(options.key === undefined ? '$HAL_KEY' : '--key')(keyText) };
   const calibration = options.calibration === undefined ? {} : { calibration: options.calibration };
   switch (kind) {
     case 'sim':
@@ -233,7 +241,11 @@ export function resolveTarget(
       };
     case 'ws': {
       const token = options.token ?? env['HAL_SERVE_TOKEN'];
-      return { kind, url: wsUrlArg(options.ws!), ...(token === undefined ? {} : { token }) };
+      return {
+        kind,
+        url: urlArg('--ws', ['ws:', 'wss:'])(options.ws!),
+        ...(token === undefined ? {} : { token }),
+      };
     }
     case 'nats':
       return {
@@ -250,7 +262,7 @@ export function describeTarget(target: Target): string {
     case 'sim':
       return `simulator (map ${target.map})`;
     case 'udp':
-      return `robot at udp ${target.host}:${target.port}`;
+      return `robot at udp ${hostPortText(target)}`;
     case 'serial':
       return `robot on ${target.path}`;
     case 'ws':
@@ -273,7 +285,7 @@ export function targetArgs(target: Target): string | undefined {
     case 'serial': {
       const where =
         target.kind === 'udp'
-          ? `--udp ${target.host}:${target.port}`
+          ? `--udp ${hostPortText(target)}`
           : `--serial ${target.path}${target.baudRate === undefined ? '' : ` --baud ${target.baudRate}`}`;
       const key = target.key === undefined ? '' : ' --key <hex>';
       const scale = target.timeScale === 1 ? '' : ` --time-scale ${target.timeScale}`;

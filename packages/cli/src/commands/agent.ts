@@ -9,8 +9,8 @@ import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@
 import type { LocalChatProvider } from '@hal/agent-local';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import { AGENT_EVENT, McapRecorder, recordHal, TOPICS } from '@hal/recorder';
-import { integerArg, positiveArg } from '../values.js';
+import { AGENT_EVENT, recordHal, TOPICS } from '@hal/recorder';
+import { integerArg, positiveArg, urlArg } from '../values.js';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
@@ -19,6 +19,7 @@ import { eventPrinter } from '../agent/print.js';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
 import { cliLogger } from '../logger.js';
+import { addOverwriteOption, checkOutputPlace, openRecordingFile } from '../output-place.js';
 import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
@@ -28,6 +29,7 @@ import type { RegisterCommand } from './context.js';
 interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
   maxTime?: number;
   record?: string;
+  overwrite?: boolean;
   timeout?: number;
 }
 
@@ -73,7 +75,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
       new Option(
         '--base-url <url>',
         'an OpenAI-compatible endpoint instead, up to /v1 (key from $OPENAI_API_KEY)',
-      ),
+      ).argParser(urlArg('--base-url', ['http:', 'https:'])),
     )
     .addOption(new Option('--model <name>', "the endpoint's model (default $OPENAI_MODEL)"))
     .addOption(
@@ -116,6 +118,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         'context window of the local model (default 2048)',
       ).argParser(integerArg('--context', 256, 131_072)),
     );
+  addOverwriteOption(command, 'the --record file');
   addLeashOptions(command);
   addTargetOptions(command).action(async (words: string[], options: AgentCliOptions) => {
     const json = global().json;
@@ -127,6 +130,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     const leash = leashFromOptions(options);
     const logger = cliLogger(io, json);
 
+    // the --record file is checked before the model loads (which may take minutes), opened after
+    const recordPlace =
+      options.record === undefined
+        ? undefined
+        : { option: '--record', path: options.record, overwrite: options.overwrite === true };
+    if (recordPlace !== undefined) await checkOutputPlace({ ...recordPlace, kind: 'file' });
     // the model first: a bad model file is an error before any robot is touched
     let local: LocalChatProvider | undefined;
     if (choice.kind === 'local') {
@@ -140,16 +149,11 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     }
     // a file that cannot be written is refused before any robot is touched
     const recorder =
-      options.record === undefined
+      recordPlace === undefined
         ? undefined
-        : await McapRecorder.toFile(options.record, {
-            logger,
-          }).catch(async (error: unknown) => {
+        : await openRecordingFile(recordPlace, { logger }).catch(async (error: unknown) => {
             await local?.dispose().catch(() => undefined);
-            throw new CliError(
-              'USAGE',
-              `--record: cannot write ${options.record}: ${error instanceof Error ? error.message : String(error)}`,
-            );
+            throw error;
           });
     recorder?.channel(TOPICS.agent, AGENT_EVENT);
     const sampling = new AbortController();

@@ -57,17 +57,27 @@ describe('hal drive on the embedded simulator', () => {
     expect(io.stdout()).toMatch(
       /^forward 0\.02 m: ok in \d+\.\d\d s \(simulation\)\npose x 0\.020 m/,
     );
+    // a distance may carry its unit: 2cm is the 0.02 m a bare 0.02 means
+    const cm = captureIO();
+    expect(await runHal(['drive', 'forward', '2cm', ...fast], cm)).toBe(0);
+    expect(cm.stdout()).toMatch(/^forward 0\.02 m: ok/);
   });
 
   it.each([
-    [['forward', 'NaN'], /metres must be a finite number, got "NaN"/],
-    [['forward', '12abc'], /metres must be a finite number/],
+    [
+      ['forward', 'NaN'],
+      /"distance" must be a distance: metres, or with a unit: 0\.3m, 30cm, 300mm; got "NaN"/,
+    ],
+    [['forward', '12abc'], /"distance" must be a distance/],
+    [['forward', '5deg'], /"distance" must be a distance/],
+    [['forward', '500cm'], /forward: distance 5 m is above the limit 1\.884 m$/m],
     [['forward', '0'], /forward: the distance must not be 0/],
     [['forward', '5'], /forward: distance 5 m is above the limit 1\.884 m$/m],
     [['forward', '-5'], /forward: distance -5 m is below the limit -1\.884 m$/m],
     [['turn', '-3000'], /turn: angle -3000° is below the limit -2159\.9°$/m],
-    [['turn', 'Infinity'], /degrees must be a finite number/],
-    [['move-to', '1', 'x'], /y must be a finite number/],
+    [['turn', 'Infinity'], /"angle" must be an angle: degrees, or with a unit: 90deg, 1\.5rad/],
+    [['turn', '90cm'], /"angle" must be an angle/],
+    [['move-to', '1', 'x'], /"y" must be a distance/],
     [['move-to', '100', '0'], /move-to: x 100 m is above the limit 50 m$/m],
     [['wheels', '300', '0'], /wheels: left power 300 is above the limit 255$/m],
     [['wheels', '100', '100', '--duration', '-5'], /wheels: duration -5 ms must be above 0 ms$/m],

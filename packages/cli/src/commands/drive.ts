@@ -2,7 +2,7 @@
 // pose on stderr while a motion runs). Numbers are checked before connecting.
 import { Command, Option } from 'commander';
 import { HalError, isHalError } from '@hal/types';
-import { actionText, checkAction, numberArg } from '../drive/actions.js';
+import { actionText, checkAction } from '../drive/actions.js';
 import type { DriveAction } from '../drive/actions.js';
 import { runDrive } from '../drive/run-drive.js';
 import type { DriveOutcome } from '../drive/run-drive.js';
@@ -12,6 +12,7 @@ import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget, targetArgs } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
+import { angleArg, distanceArg, numberArg, QUANTITY_FORMS } from '../values.js';
 import type { RegisterCommand } from './context.js';
 
 function outcomeText(action: DriveAction, { result, pose, stoppedByUser }: DriveOutcome): string {
@@ -75,16 +76,18 @@ export const registerDrive: RegisterCommand = (program, { io, global }) => {
     parent.command(name).description(description).allowExcessArguments(false);
   const run = (command: Command, action: DriveAction) => drive(command, action, io, global());
 
-  sub('forward', 'drive straight: metres, negative to reverse')
-    .argument('<metres>', 'distance, m', numberArg('metres'))
+  sub('forward', 'drive straight, negative to reverse')
+    .argument('<distance>', QUANTITY_FORMS.distance, distanceArg('distance'))
     .action((metres: number, _o: unknown, c: Command) => run(c, { kind: 'forward', metres }));
-  sub('turn', 'turn in place: degrees, positive counter-clockwise (left)')
-    .argument('<degrees>', 'angle, degrees', numberArg('degrees'))
+  sub('turn', 'turn in place, positive counter-clockwise (left)')
+    .argument('<angle>', QUANTITY_FORMS.angle, angleArg('angle'))
     .action((degrees: number, _o: unknown, c: Command) => run(c, { kind: 'turn', degrees }));
   sub('move-to', 'turn toward a point and drive to it (REP-103: x forward, y left of the start)')
-    .argument('<x>', 'metres', numberArg('x'))
-    .argument('<y>', 'metres', numberArg('y'))
-    .addOption(new Option('--speed <m/s>', 'cruise speed').argParser(numberArg('--speed')))
+    .argument('<x>', QUANTITY_FORMS.distance, distanceArg('x'))
+    .argument('<y>', QUANTITY_FORMS.distance, distanceArg('y'))
+    .addOption(
+      new Option('--speed <m/s>', 'cruise speed, m/s').argParser(numberArg('--speed', {}, 'm/s')),
+    )
     .action((x: number, y: number, o: { speed?: number }, c: Command) =>
       run(c, { kind: 'move-to', x, y, ...(o.speed === undefined ? {} : { speed: o.speed }) }),
     );
@@ -92,7 +95,9 @@ export const registerDrive: RegisterCommand = (program, { io, global }) => {
     .argument('<left>', 'left wheel power', numberArg('left'))
     .argument('<right>', 'right wheel power', numberArg('right'))
     .addOption(
-      new Option('--duration <ms>', 'stop after this long').argParser(numberArg('--duration')),
+      new Option('--duration <ms>', 'stop after this long, ms').argParser(
+        numberArg('--duration', {}, 'ms'),
+      ),
     )
     .action((left: number, right: number, o: { duration?: number }, c: Command) =>
       run(c, {

@@ -150,7 +150,7 @@ describe('hal eval', () => {
   });
 
   it.each([
-    [['--wheel-slip', '60'], /"--wheel-slip" must be a number from 0 to 50/],
+    [['--wheel-slip', '60'], /"--wheel-slip" must be a number in 0\.\.50 %, got "60"/],
     [['--time-scale', '10'], /"--time-scale" needs a robot/],
     [['--on', 'sim', '--key', 'abcd'], /"--key" needs a robot --on udp/],
     [['--sensors', 'sonar'], /unknown sensor "sonar"/],

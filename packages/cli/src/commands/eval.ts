@@ -13,13 +13,14 @@ import {
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import { hexKeyArg, integerArg, positiveArg } from '../values.js';
+import { distanceArg, hexKeyArg, integerArg, numberArg, positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
 import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
 import { recordTrials } from '../eval/record-trials.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
+import { checkOutputPlace } from '../output-place.js';
 import type { RegisterCommand } from './context.js';
 
 interface EvalCliOptions extends LeashCliOptions {
@@ -41,6 +42,7 @@ interface EvalCliOptions extends LeashCliOptions {
   seed: number;
   concurrency: number;
   out?: string;
+  overwrite?: boolean;
   minSuccess?: number;
   tools?: string;
   systemPrompt?: string;
@@ -64,26 +66,6 @@ function groupList(text: string | undefined): TaskGroup[] {
   return groups as TaskGroup[];
 }
 
-function fraction(value: string): number {
-  const n = Number(value);
-  if (value.trim() === '' || !Number.isFinite(n) || n < 0 || n > 1)
-    throw new CliError('USAGE', `"--min-success" must be a number from 0 to 1, got "${value}"`);
-  return n;
-}
-
-/** A parser of a number from `min` to `max`, its errors naming the option. */
-function rangeArg(name: string, min: number, max: number) {
-  return (value: string): number => {
-    const n = Number(value);
-    if (value.trim() === '' || !Number.isFinite(n) || n < min || n > max)
-      throw new CliError(
-        'USAGE',
-        `"${name}" must be a number from ${min} to ${max}, got "${value}"`,
-      );
-    return n;
-  };
-}
-
 const SENSORS = { camera: 'camera', range: 'rangeSensors', imu: 'imu' } as const;
 
 /** `--sensors camera,range`: the sensors every task's robot has (the others are off). */
@@ -104,13 +86,6 @@ function sensorSet(text: string): { camera: boolean; rangeSensors: boolean; imu:
     rangeSensors: names.includes('range'),
     imu: names.includes('imu'),
   };
-}
-
-function temperatureArg(value: string): number {
-  const n = Number(value);
-  if (value.trim() === '' || !Number.isFinite(n) || n < 0 || n > 2)
-    throw new CliError('USAGE', `"--temperature" must be a number from 0 to 2, got "${value}"`);
-  return n;
 }
 
 async function chooseTasks(options: EvalCliOptions): Promise<Task[]> {
@@ -186,21 +161,32 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           "the robot's clock speed-up: the emulator is started with it, a udp:// emulator runs at it",
         ).argParser(positiveArg('--time-scale')),
       )
-      .addOption(new Option('--key <hex>', "a udp:// robot's pre-shared key").argParser(hexKeyArg))
       .addOption(
-        new Option('--out <dir>', 'write eval.json, eval.md and eval.svg into this folder'),
+        new Option('--key <hex>', "a udp:// robot's pre-shared key").argParser(hexKeyArg('--key')),
+      )
+      .addOption(
+        new Option(
+          '--out <dir>',
+          'write eval.json, eval.md and eval.svg into this folder (new or empty, unless --overwrite)',
+        ),
       )
       .addOption(
         new Option(
           '--record <dir>',
-          'keep every trial as an MCAP recording: DIR/AGENT/GROUP/TASK/seed-S-trial-I.mcap',
+          'keep every trial as an MCAP recording: DIR/AGENT/GROUP/TASK/seed-S-trial-I.mcap (DIR new or empty, unless --overwrite)',
+        ),
+      )
+      .addOption(
+        new Option(
+          '--overwrite',
+          'write into a --out or --record folder that is not empty, replacing its files',
         ),
       )
       .addOption(
         new Option(
           '--min-success <rate>',
           'exit 1 when an agent succeeds on less than this fraction of trials (0..1)',
-        ).argParser(fraction),
+        ).argParser(numberArg('--min-success', { min: 0, max: 1 })),
       )
       .addOption(new Option('--tools <names>', 'offer only these tools, comma-separated'))
       .addOption(new Option('--system-prompt <text>', "replaces the model agents' system prompt"))
@@ -218,7 +204,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       )
       .addOption(
         new Option('--temperature <t>', 'sampling temperature of the model agents').argParser(
-          temperatureArg,
+          numberArg('--temperature', { min: 0, max: 2 }),
         ),
       )
       .addOption(
@@ -241,37 +227,37 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         new Option(
           '--latency <ms>',
           'reality: simulated latency added to every call, ms',
-        ).argParser(rangeArg('--latency', 0, 10_000)),
+        ).argParser(numberArg('--latency', { min: 0, max: 10_000 }, 'ms')),
       )
       .addOption(
         new Option(
           '--loss <rate>',
           'reality: chance a call is lost (answers TIMEOUT), 0..0.9, seeded',
-        ).argParser(rangeArg('--loss', 0, 0.9)),
+        ).argParser(numberArg('--loss', { min: 0, max: 0.9 })),
       )
       .addOption(
         new Option(
-          '--range-noise <m>',
-          'reality: range sensor noise, standard deviation in metres',
-        ).argParser(rangeArg('--range-noise', 0, 1)),
+          '--range-noise <distance>',
+          'reality: range sensor noise, standard deviation (metres, or 2cm)',
+        ).argParser(distanceArg('--range-noise', { min: 0, max: 1 })),
       )
       .addOption(
         new Option(
           '--wheel-diameter-error <pct>',
           "reality: each wheel's true diameter off the nominal, standard deviation in percent, seeded",
-        ).argParser(rangeArg('--wheel-diameter-error', 0, 20)),
+        ).argParser(numberArg('--wheel-diameter-error', { min: 0, max: 20 }, '%')),
       )
       .addOption(
         new Option(
           '--wheel-slip <pct>',
           'reality: most travel a wheel loses to slip per motion, percent, seeded',
-        ).argParser(rangeArg('--wheel-slip', 0, 50)),
+        ).argParser(numberArg('--wheel-slip', { min: 0, max: 50 }, '%')),
       )
       .addOption(
         new Option(
           '--odometry-noise <pct>',
           "reality: the odometry's error on each wheel's travel per motion, standard deviation in percent, seeded",
-        ).argParser(rangeArg('--odometry-noise', 0, 20)),
+        ).argParser(numberArg('--odometry-noise', { min: 0, max: 20 }, '%')),
       )
       .action(async (options: EvalCliOptions) => {
         const g = global();
@@ -282,6 +268,17 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           throw new CliError('USAGE', '"--time-scale" needs a robot: --on emulator or udp://...');
         if (!places.some((p) => p.kind === 'udp') && options.key !== undefined)
           throw new CliError('USAGE', '"--key" needs a robot --on udp://...');
+        // the folders written to are checked before any model is loaded or trial run
+        const overwrite = options.overwrite === true;
+        if (options.out !== undefined)
+          await checkOutputPlace({ option: '--out', path: options.out, kind: 'folder', overwrite });
+        if (options.record !== undefined)
+          await checkOutputPlace({
+            option: '--record',
+            path: options.record,
+            kind: 'folder',
+            overwrite,
+          });
         const tasks = await chooseTasks(options);
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);

@@ -2,7 +2,7 @@
 // their health, e-stop them all, and run the fleet modes (synchronized, leader-follower).
 import { FORMATION_SHAPES } from '@hal/fleet';
 import type { FormationShape } from '@hal/fleet';
-import { Command, InvalidArgumentError, Option } from 'commander';
+import { Command, Option } from 'commander';
 import { CliError } from '../cli-error.js';
 import { parseCommandSpec, COMMAND_SPEC_HELP } from '../fleet/command-spec.js';
 import { startFleetRecording } from '../fleet/fleet-recording.js';
@@ -14,14 +14,8 @@ import { resolveRunMode, RUN_MODES } from '../fleet/run-mode.js';
 import type { RunMode } from '../fleet/run-mode.js';
 import { emit } from '../io.js';
 import { addNatsOptions, deviceIdArg } from '../nats-options.js';
+import { distanceArg, integerArg } from '../values.js';
 import type { CommandContext, RegisterCommand } from './context.js';
-
-function positiveNumber(value: string): number {
-  const n = Number(value);
-  if (!Number.isFinite(n) || n <= 0)
-    throw new InvalidArgumentError(`expected a positive number, got "${value}"`);
-  return n;
-}
 
 const collectDevice = (value: string, previous: string[] = []): string[] => [
   ...previous,
@@ -44,13 +38,13 @@ function fleetSubcommand(name: string, description: string): Command {
     .addOption(
       new Option('--discover-ms <ms>', 'how long to listen for announcements')
         .default(6000)
-        .argParser(positiveNumber),
+        .argParser(integerArg('--discover-ms', 1, 600_000)),
     )
     .addOption(
       new Option(
         '--offline-after-ms <ms>',
         "a device is offline after this long without an answer (default 3000, or the config file's)",
-      ).argParser(positiveNumber),
+      ).argParser(integerArg('--offline-after-ms', 1, 600_000)),
     );
   return addNatsOptions(command);
 }
@@ -164,7 +158,7 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
       .addOption(
         new Option('--timeout-ms <ms>', 'per-device wait (synchronized)')
           .default(60_000)
-          .argParser(positiveNumber),
+          .argParser(integerArg('--timeout-ms', 1, 3_600_000)),
       )
       .option('--leader <id>', 'leader-follower: the leader (runs --command)', deviceIdArg)
       .addOption(
@@ -173,14 +167,14 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           .default('column'),
       )
       .addOption(
-        new Option('--spacing <m>', 'leader-follower: spacing, metres')
+        new Option('--spacing <distance>', 'leader-follower: spacing (metres, or 30cm)')
           .default(0.3)
-          .argParser(positiveNumber),
+          .argParser(distanceArg('--spacing', { min: 0, aboveMin: true })),
       )
       .addOption(
-        new Option('--tolerance <m>', 'leader-follower: slot tolerance, metres')
+        new Option('--tolerance <distance>', 'leader-follower: slot tolerance (metres, or 3cm)')
           .default(0.03)
-          .argParser(positiveNumber),
+          .argParser(distanceArg('--tolerance', { min: 0, aboveMin: true })),
       )
       .addOption(
         new Option(
@@ -188,16 +182,27 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           'leader-follower: how long followers may take to settle',
         )
           .default(120_000)
-          .argParser(positiveNumber),
+          .argParser(integerArg('--settle-timeout-ms', 1, 3_600_000)),
       )
       .option(
         '--record <file>',
         'record the run into this MCAP file: every robot on its own channels, under /<device> (see docs/recording.md)',
       )
+      .addOption(
+        new Option(
+          '--overwrite',
+          'replace the --record file when it exists (default: refuse, before starting)',
+        ),
+      )
       .action(
         async (
           options: FleetCliOptions &
-            ModeOptions & { mode?: RunMode; command: string; record?: string },
+            ModeOptions & {
+              mode?: RunMode;
+              command: string;
+              record?: string;
+              overwrite?: boolean;
+            },
         ) => {
           const command = parseCommandSpec(options.command);
           const mode = await resolveRunMode(options.mode, options.config);
@@ -208,7 +213,10 @@ export const registerFleet: RegisterCommand = (program, ctx) => {
           const recording =
             options.record === undefined
               ? undefined
-              : await startFleetRecording(options.record, ctx.io, ctx.global().json);
+              : await startFleetRecording(options.record, ctx.io, {
+                  json: ctx.global().json,
+                  overwrite: options.overwrite === true,
+                });
           let outcome: RunOutcome;
           let recorded: Awaited<ReturnType<NonNullable<typeof recording>['close']>> | undefined;
           try {

@@ -1,3 +1,5 @@
+import { createServer } from 'node:net';
+import type { AddressInfo } from 'node:net';
 import { PassThrough } from 'node:stream';
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StreamableHTTPClientTransport } from '@modelcontextprotocol/sdk/client/streamableHttp.js';
@@ -66,6 +68,8 @@ describe('hal mcp', () => {
       ['mcp', '--geofence', '1,0,0,1'],
       ['mcp', '--map', 'moon'],
       ['mcp', '--port', 'x'],
+      ['mcp', '--http', '--port', '99999'],
+      ['mcp', '--udp', 'x', '--ws', 'ws://127.0.0.1:1'],
     ]) {
       expect(await runHal(argv, captureIO({})), argv.join(' ')).toBe(2);
     }
@@ -74,7 +78,24 @@ describe('hal mcp', () => {
     expect(await runHal(['mcp'], noStdin)).toBe(2);
     expect(noStdin.stderr()).toContain('MCP over stdio needs a standard input');
     const open = captureIO({});
-    expect(await runHal(['mcp', '--http', '--host', '0.0.0.0', '--port', '0'], open)).toBe(1);
-    expect(open.stderr()).toMatch(/refusing to listen on 0\.0\.0\.0 without a token/);
+    expect(await runHal(['mcp', '--http', '--host', '0.0.0.0', '--port', '0'], open)).toBe(2);
+    expect(open.stderr()).toMatch(
+      /hal: USAGE: "--host" 0\.0\.0\.0 is reachable from other machines: give --http-token/,
+    );
+  }, 30_000);
+
+  it('says which option changes a port in use', async () => {
+    const taken = createServer();
+    await new Promise<void>((resolve) => taken.listen(0, '127.0.0.1', resolve));
+    const { port } = taken.address() as AddressInfo;
+    try {
+      const io = captureIO({});
+      expect(await runHal(['mcp', '--http', '--port', String(port)], io)).toBe(1);
+      expect(io.stderr()).toContain(
+        `hal: FAILED: port ${port} is in use (EADDRINUSE); choose another with --port`,
+      );
+    } finally {
+      await new Promise((resolve) => taken.close(resolve));
+    }
   }, 30_000);
 });

@@ -1,5 +1,5 @@
-// `hal mcp`: the MCP server of @hal/mcp for one robot (the embedded simulator unless --udp or
-// --serial names one), over stdio or streamable HTTP, until Ctrl-C (or, on stdio, until stdin
+// `hal mcp`: the MCP server of @hal/mcp for one robot (any the target options name: the embedded
+// simulator unless one is named), over stdio or streamable HTTP, until Ctrl-C (or, on stdio, until stdin
 // ends). Then the robot is cleaned up, which stops its motors. Its messages go to stderr: on
 // stdio, stdout carries the protocol.
 import { Writable } from 'node:stream';
@@ -7,14 +7,18 @@ import type { Readable } from 'node:stream';
 import { Command } from 'commander';
 import { StdioServerTransport } from '@modelcontextprotocol/sdk/server/stdio.js';
 import { createRobotMcpServer, serveHttp } from '@hal/mcp';
-import { McapRecorder, recordHal } from '@hal/recorder';
+import type { RobotWorld } from '@hal/mcp';
+import { recordHal } from '@hal/recorder';
+import { SimulationHAL } from '@hal/simulation';
 import { createToolExecutor, halTools } from '@hal/tools';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
+import { listenError } from '../listen-error.js';
 import { cliLogger } from '../logger.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
-import { createRobot } from '../mcp/robot.js';
+import { openRecordingFile } from '../output-place.js';
+import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
 import type { RegisterCommand } from './context.js';
 
@@ -42,12 +46,13 @@ function outStream(io: CliIO): Writable {
 
 export const registerMcp: RegisterCommand = (program, { io }) => {
   const command = new Command('mcp').description(
-    'MCP server for the robot: the HAL tools, its state, capabilities and map as resources ' +
-      '(the embedded simulator unless --udp or --serial names a robot)',
+    'MCP server for a robot: the HAL tools, its state, capabilities and map as resources ' +
+      '(the robot the target options name; the embedded simulator when none is named)',
   );
   addMcpOptions(command);
   command.action(async (raw: McpCliOptions) => {
     const options = mcpOptions(raw, io.env);
+    const { target } = options;
     const stdin = io.stdin as Readable | undefined;
     if (!options.http && stdin === undefined) {
       throw new CliError('USAGE', 'MCP over stdio needs a standard input: give --http');
@@ -56,33 +61,35 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     const recorder =
       options.record === undefined
         ? undefined
-        : await McapRecorder.toFile(options.record, { logger: cliLogger(io, false) }).catch(
-            (error: unknown) => {
-              throw new CliError(
-                'USAGE',
-                `--record: cannot write ${options.record}: ${error instanceof Error ? error.message : String(error)}`,
-              );
-            },
+        : await openRecordingFile(
+            { option: '--record', path: options.record, overwrite: options.overwrite },
+            { logger: cliLogger(io, false) },
           );
     const sampling = new AbortController();
-    const robot = createRobot(options, io.env);
-    const world = robot.world;
-    const hal =
-      recorder === undefined
-        ? robot.hal
-        : recordHal(robot.hal, recorder, {
-            signal: sampling.signal,
-            ...(options.udp === undefined && options.serial === undefined
-              ? { map: { name: options.map ?? 'empty' } }
-              : {}),
-          });
-    let close: () => Promise<void> = async () => undefined;
+    let opened: Awaited<ReturnType<typeof openTarget>>;
     try {
-      await hal.initialize();
+      opened = await openTarget(target, io, {
+        role: 'control',
+        ...(options.connectTimeoutMs === undefined
+          ? {}
+          : { connectTimeoutMs: options.connectTimeoutMs }),
+      });
     } catch (error) {
       await recorder?.close().catch(() => undefined);
       throw error;
     }
+    const robot = opened.hal;
+    // the map is known of the embedded simulator only
+    const world: RobotWorld = robot instanceof SimulationHAL ? { map: () => robot.world.map } : {};
+    const hal =
+      recorder === undefined
+        ? robot
+        : recordHal(robot, recorder, {
+            signal: sampling.signal,
+            deviceId: opened.deviceId,
+            ...(target.kind === 'sim' ? { map: { name: target.map } } : {}),
+          });
+    let close: () => Promise<void> = async () => undefined;
     try {
       const executor = createToolExecutor(hal, {
         tools: halTools(hal),
@@ -95,6 +102,13 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
           host: options.host,
           port: options.port,
           ...(options.token === undefined ? {} : { token: options.token }),
+        }).catch((error: unknown) => {
+          throw listenError(error, {
+            host: options.host,
+            port: options.port,
+            portOption: '--port',
+            hostOption: '--host',
+          });
         });
         close = endpoint.close;
         io.err(`hal mcp: ${hal.mode} robot, MCP over HTTP at ${endpoint.url}\n`);
@@ -108,7 +122,9 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
       }
     } finally {
       await close().catch(() => undefined);
-      await hal.cleanup().catch(() => undefined);
+      // the HAL's own cleanup, through the recorder when there is one (it stops the motors)
+      if (recorder !== undefined) await hal.cleanup().catch(() => undefined);
+      await opened.close();
       sampling.abort();
       if (recorder !== undefined) {
         const stats = await recorder.close();

@@ -2,12 +2,12 @@
 // MCAP file (calls, pose, e-stops: docs/recording.md). A refused step is recorded and the run goes
 // on, as a robot under test would; the summary says which.
 import { Command } from 'commander';
-import { McapRecorder, recordHal } from '@hal/recorder';
+import { recordHal } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
-import { CliError } from '../cli-error.js';
 import { actionText, callFor } from '../drive/actions.js';
 import { emit } from '../io.js';
 import { cliLogger } from '../logger.js';
+import { addOverwriteOption, openRecordingFile } from '../output-place.js';
 import { parseStep } from '../record/steps.js';
 import { addTargetOptions, describeTarget, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
@@ -16,6 +16,7 @@ import type { RegisterCommand } from './context.js';
 
 interface RecordOptions extends TargetCliOptions {
   output: string;
+  overwrite?: boolean;
 }
 
 interface StepOutcome {
@@ -30,20 +31,18 @@ export const registerRecord: RegisterCommand = (program, { io, global }) => {
     .requiredOption('-o, --output <file>', 'the MCAP file to write')
     .argument(
       '<steps...>',
-      'each one action: "forward M", "turn DEG", "move-to X Y", "wheels L R MS", stop, "estop [REASON]", reset-estop',
+      'each one action: "forward DISTANCE", "turn ANGLE", "move-to X Y", "wheels L R MS", stop, "estop [REASON]", reset-estop; distances in metres or with a unit (10cm), angles in degrees or with a unit (1.5rad)',
     );
+  addOverwriteOption(command, 'the -o file');
   addTargetOptions(command).action(async (stepTexts: string[], options: RecordOptions) => {
     const steps = stepTexts.map(parseStep);
     const target = resolveTarget(options, io.env);
     const json = global().json;
     const logger = cliLogger(io, json);
-    const recorder = await McapRecorder.toFile(options.output, { logger }).catch(
-      (error: unknown) => {
-        throw new CliError(
-          'FAILED',
-          `cannot write ${options.output}: ${error instanceof Error ? error.message : String(error)}`,
-        );
-      },
+    // a file that cannot be written is refused (USAGE) before the robot is touched
+    const recorder = await openRecordingFile(
+      { option: '-o', path: options.output, overwrite: options.overwrite === true },
+      { logger },
     );
     const connect =
       options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };

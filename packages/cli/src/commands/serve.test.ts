@@ -149,6 +149,8 @@ describe('hal serve --record', () => {
       io,
     );
     expect(code).toBe(2);
-    expect(io.stderr()).toContain('--record: cannot write /nonexistent-dir/run.mcap');
+    expect(io.stderr()).toContain(
+      'hal: USAGE: "--record" /nonexistent-dir/run.mcap: its folder /nonexistent-dir does not exist',
+    );
   });
 });

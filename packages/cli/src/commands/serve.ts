@@ -5,7 +5,7 @@ import { Command, Option } from 'commander';
 import { TAFY_NODE_TYPE } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
 import { openConnection, refuseServedTwice, serveHalOnNats } from '@hal/nats';
-import { McapRecorder, recordHal } from '@hal/recorder';
+import { recordHal } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { HalGateway } from '@hal/nats';
@@ -22,7 +22,9 @@ import { servePlan, servedSubjects } from '../serve/where.js';
 import type { ServeCliOptions, ServePlan } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
+import { listenError } from '../listen-error.js';
 import { cliLogger } from '../logger.js';
+import { addOverwriteOption, openRecordingFile } from '../output-place.js';
 import { openTarget } from '../target-hal.js';
 import { aborted } from '../wait.js';
 import type { CommandContext, RegisterCommand } from './context.js';
@@ -95,6 +97,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
       "record the served robot's run (every call from every client) into this MCAP file",
     ),
   );
+  addOverwriteOption(command, 'the --record file');
   addNatsOptions(command);
   addTargetOptions(command, SERVED_KINDS);
   command.action(async (options: ServeCliOptions & TargetCliOptions) => {
@@ -132,7 +135,7 @@ async function serveTarget(
   const recording =
     options.record === undefined
       ? undefined
-      : await startRecording(options.record, io, global().json);
+      : await startRecording(options.record, options.overwrite === true, io, global().json);
   const opened = await openTarget(target, io, {
     json: global().json,
     ...(options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout }),
@@ -164,10 +167,18 @@ async function serveTarget(
       });
     }
     if (plan.ws !== undefined) {
+      const ws = plan.ws;
       server = await serveHal(hal, {
-        ...plan.ws,
+        ...ws,
         deviceId,
         logger: cliLogger(io, global().json),
+      }).catch((error: unknown) => {
+        throw listenError(error, {
+          host: ws.host,
+          port: ws.port,
+          portOption: '--ws-port',
+          hostOption: '--host',
+        });
       });
     }
     let mdns: { service: string; name: string } | { error: string } | undefined;
@@ -236,6 +247,7 @@ async function serveTarget(
 /** --record: the served HAL, recorded into `file`, and how to finish the file. */
 async function startRecording(
   file: string,
+  overwrite: boolean,
   io: CliIO,
   json: boolean,
 ): Promise<{
@@ -243,14 +255,10 @@ async function startRecording(
   close(): Promise<RecorderStats & { file: string }>;
 }> {
   const log = cliLogger(io, json);
-  const recorder = await McapRecorder.toFile(file, {
-    logger: log,
-  }).catch((error: unknown) => {
-    throw new CliError(
-      'USAGE',
-      `--record: cannot write ${file}: ${error instanceof Error ? error.message : String(error)}`,
-    );
-  });
+  const recorder = await openRecordingFile(
+    { option: '--record', path: file, overwrite },
+    { logger: log },
+  );
   const sampling = new AbortController();
   return {
     wrap: (served, deviceId) => recordHal(served, recorder, { signal: sampling.signal, deviceId }),

@@ -24,10 +24,10 @@ describe('hal test', () => {
 
   it('refuses an unknown capability, a bad sample count and a bad judge before connecting', async () => {
     for (const [argv, text] of [
-      [['--capability', 'motor.warp'], 'a capability is one of system, motor.differential'],
+      [['--capability', 'motor.warp'], '"--capability" is one of system, motor.differential'],
       [['--samples', '0'], '"--samples" must be an integer in 1..10000, got "0"'],
       [['--samples', 'NaN'], '"--samples" must be an integer in 1..10000, got "NaN"'],
-      [['--judge', 'p75'], 'judge is p50 or p99'],
+      [['--judge', 'p75'], '"--judge" is p50 or p99'],
       [['--device', 'cube.01'], 'a device id is 1-64 letters'],
     ] as const) {
       const io = captureIO();

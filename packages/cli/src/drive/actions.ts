@@ -1,6 +1,5 @@
 // The motions and safety calls `hal drive` can make, checked against the HAL's own call schemas
 // (V1 limits) before anything is sent: a bad number is a USAGE error, never a motor command.
-import { InvalidArgumentError } from 'commander';
 import { V1_ROBOT, argsFromObject, findCall, invokeSpec, motionCall } from '@hal/types';
 import type { CallSpec, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 import { CliError } from '../cli-error.js';
@@ -13,17 +12,6 @@ export type DriveAction =
   | { kind: 'stop' }
   | { kind: 'estop'; reason?: string }
   | { kind: 'reset-estop' };
-
-/** A command-line number: finite, nothing else (so "1e3" is fine and "12abc", "NaN" are not). */
-export function numberArg(name: string) {
-  return (value: string): number => {
-    const n = Number(value);
-    if (value.trim() === '' || !Number.isFinite(n)) {
-      throw new InvalidArgumentError(`${name} must be a finite number, got "${value}"`);
-    }
-    return n;
-  };
-}
 
 /** One issue of a zod schema, as far as this file reads it. */
 interface Issue {

@@ -1,8 +1,8 @@
 // `hal emulate`'s options, and the cube-emulator flags they become.
-import { InvalidArgumentError, Option } from 'commander';
+import { Option } from 'commander';
 import type { Command } from 'commander';
 import { ipv4Arg } from '../discover/options.js';
-import { integerArg } from '../values.js';
+import { hexKeyArg, integerArg, numberArg, portArg } from '../values.js';
 import { deviceIdArg } from '../nats-options.js';
 
 export interface EmulateCliOptions {
@@ -19,26 +19,11 @@ export interface EmulateCliOptions {
   interface?: string;
 }
 
-function timeScaleArg(value: string): number {
-  const n = Number(value);
-  if (value.trim() === '' || !(n > 0 && n <= 1000)) {
-    throw new InvalidArgumentError(`"--time-scale" must be a number in (0, 1000], got "${value}"`);
-  }
-  return n;
-}
-
-function keyArg(value: string): string {
-  if (!/^([0-9a-fA-F]{2}){1,64}$/.test(value)) {
-    throw new InvalidArgumentError('"--key" must be 1..64 bytes written as hex');
-  }
-  return value;
-}
-
 export function addEmulateOptions(command: Command): Command {
   return command
     .addOption(
       new Option('--udp-port <port>', 'UDP port (0 = a free one)')
-        .argParser(integerArg('--udp-port', 0, 65_535))
+        .argParser(portArg('--udp-port', { anyFree: true }))
         .default(4210),
     )
     .addOption(
@@ -55,12 +40,14 @@ export function addEmulateOptions(command: Command): Command {
         .default('cube-emulator'),
     )
     .addOption(
-      new Option('--key <hex>', 'pre-shared key: requests must be MACed').argParser(keyArg),
+      new Option('--key <hex>', 'pre-shared key: requests must be MACed').argParser(
+        hexKeyArg('--key'),
+      ),
     )
     .addOption(new Option('--insecure', 'allow a non-loopback --bind without --key').default(false))
     .addOption(
       new Option('--time-scale <x>', "run the robot's clock x times faster").argParser(
-        timeScaleArg,
+        numberArg('--time-scale', { min: 0, aboveMin: true, max: 1000 }),
       ),
     )
     .addOption(

@@ -5,8 +5,9 @@
 import { mkdir } from 'node:fs/promises';
 import { join } from 'node:path';
 import type { InstrumentedHal, TrialInfo } from '@hal/eval';
-import { McapRecorder, recordHal } from '@hal/recorder';
+import { recordHal } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { openRecordingFile } from '../output-place.js';
 
 /** A name safe as a folder: `local:SmolLM2` becomes `local-SmolLM2`. */
 const folder = (name: string) => name.replace(/[^A-Za-z0-9._@-]+/g, '-');
@@ -41,8 +42,9 @@ export function recordTrials(dir: string): {
     const file = recordingPath(dir, info);
     await mkdir(join(file, '..'), { recursive: true });
     const epochNs = BigInt(Date.now()) * 1_000_000n;
-    const recorder = await McapRecorder.toFile(
-      file,
+    // the folder was checked before the run (new, empty, or --overwrite): a file there is replaced
+    const recorder = await openRecordingFile(
+      { option: '--record', path: file, overwrite: true },
       info.on === 'simulator'
         ? { clock: () => epochNs + BigInt(Math.round(info.nowUs())) * 1000n }
         : {},

@@ -3,8 +3,14 @@ import { parseCommandSpec } from './command-spec.js';
 
 describe('hal fleet run --command', () => {
   it('reads the short forms and JSON as fleet commands', () => {
-    expect(parseCommandSpec('forward:5')).toEqual({ kind: 'moveForward', distanceCm: 5 });
-    expect(parseCommandSpec('backward:2.5')).toEqual({ kind: 'moveBackward', distanceCm: 2.5 });
+    // a bare distance is metres, as in hal drive and hal record; a unit may be given
+    expect(parseCommandSpec('forward:0.05')).toEqual({ kind: 'moveForward', distanceCm: 5 });
+    expect(parseCommandSpec('forward:5')).toEqual({ kind: 'moveForward', distanceCm: 500 });
+    expect(parseCommandSpec('forward:5cm')).toEqual({ kind: 'moveForward', distanceCm: 5 });
+    expect(parseCommandSpec('forward:0.07m')).toEqual({ kind: 'moveForward', distanceCm: 7 });
+    expect(parseCommandSpec('backward:25mm')).toEqual({ kind: 'moveBackward', distanceCm: 2.5 });
+    expect(parseCommandSpec('rotate:right:1.5rad')).toMatchObject({ degrees: 85.9436692696 });
+    expect(parseCommandSpec('moveTo:50cm,-0.2m')).toEqual({ kind: 'moveTo', x: 0.5, y: -0.2 });
     expect(parseCommandSpec('rotate:left:90')).toEqual({
       kind: 'rotate',
       direction: 'left',
@@ -44,7 +50,8 @@ describe('hal fleet run --command', () => {
         expect.objectContaining({ name: 'CliError', code: 'USAGE' }),
       );
     }
-    expect(() => parseCommandSpec('fly:3')).toThrow(/forward:<cm>/);
+    expect(() => parseCommandSpec('fly:3')).toThrow(/forward:<distance>/);
+    expect(() => parseCommandSpec('forward:5deg')).toThrow(/expected forward:<distance>/);
     expect(() => parseCommandSpec('rotate:up:90')).toThrow(/direction/);
   });
 });

@@ -1,12 +1,12 @@
 // `hal fleet run --record FILE`: one MCAP file for the whole fleet, each robot's calls, pose,
 // camera, log, e-stops (and a physical robot's steps and link) on its own channels under
 // `/<device>` (docs/recording.md), and the run itself in the metadata record `hal.fleet`.
-import { McapRecorder, recordHal, RECORDER_VERSION } from '@hal/recorder';
+import { recordHal, RECORDER_VERSION } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { cliLogger } from '../logger.js';
+import { openRecordingFile } from '../output-place.js';
 
 /** A fleet run being recorded. */
 export interface FleetRecording {
@@ -22,15 +22,11 @@ export interface FleetRecording {
 export async function startFleetRecording(
   file: string,
   io: CliIO,
-  json: boolean,
+  { json, overwrite }: { json: boolean; overwrite: boolean },
 ): Promise<FleetRecording> {
-  const recorder = await McapRecorder.toFile(file, { logger: cliLogger(io, json) }).catch(
-    (error: unknown) => {
-      throw new CliError(
-        'USAGE',
-        `--record: cannot write ${file}: ${error instanceof Error ? error.message : String(error)}`,
-      );
-    },
+  const recorder = await openRecordingFile(
+    { option: '--record', path: file, overwrite },
+    { logger: cliLogger(io, json) },
   );
   const sampling = new AbortController();
   return {

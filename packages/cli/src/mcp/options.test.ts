@@ -2,45 +2,75 @@ import { Command, CommanderError } from 'commander';
 import { describe, expect, it } from 'vitest';
 import { addMcpOptions, mcpOptions } from './options.js';
 import type { McpCliOptions } from './options.js';
-import { createRobot } from './robot.js';
 
-/** Parses `argv` as `hal mcp` does; usage errors are thrown as CommanderErrors. */
-function parseCli(argv: string[], env: Record<string, string | undefined>) {
+/** Parses `argv` as `hal mcp` does; commander's own usage errors are thrown as CommanderErrors. */
+function parseCli(argv: string[], env: Record<string, string | undefined> = {}) {
   const command = addMcpOptions(new Command('mcp'))
     .exitOverride()
     .configureOutput({ writeErr: () => undefined, writeOut: () => undefined });
   return mcpOptions(command.parse(argv, { from: 'user' }).opts<McpCliOptions>(), env);
 }
 
-const quiet = { HAL_KEY: undefined, HAL_MCP_TOKEN: undefined };
+const usage = expect.objectContaining({ name: 'CliError', code: 'USAGE', exitCode: 2 });
 
 describe('hal mcp options', () => {
   it('defaults to the simulator over stdio, HTTP on 127.0.0.1:3333 when asked', () => {
-    expect(parseCli([], quiet)).toEqual({ http: false, host: '127.0.0.1', port: 3333, leash: {} });
-    expect(parseCli(['--http', '--port', '0'], quiet)).toMatchObject({ http: true, port: 0 });
+    expect(parseCli([])).toEqual({
+      target: { kind: 'sim', map: 'empty', speed: 1 },
+      http: false,
+      host: '127.0.0.1',
+      port: 3333,
+      leash: {},
+      overwrite: false,
+    });
+    expect(parseCli(['--http', '--port', '0'])).toMatchObject({ http: true, port: 0 });
   });
 
-  it('reads the robot, the key and the token from options or the environment', () => {
-    expect(parseCli(['--udp', '10.0.0.5:4211', '--key', 'abcd'], quiet)).toMatchObject({
-      udp: '10.0.0.5:4211',
+  it("takes its robot from the target options every command has, $HAL_KEY the key's default", () => {
+    expect(parseCli(['--udp', '[::1]:4211', '--key', 'abcd']).target).toEqual({
+      kind: 'udp',
+      host: '::1',
+      port: 4211,
       key: 'abcd',
+      timeScale: 1,
     });
-    expect(
-      parseCli(['--serial', '/dev/ttyUSB0'], { HAL_KEY: '00ff', HAL_MCP_TOKEN: 't0k3n' }),
-    ).toMatchObject({
-      serial: '/dev/ttyUSB0',
+    expect(parseCli(['--serial', '/dev/ttyUSB0'], { HAL_KEY: '00ff' }).target).toMatchObject({
+      kind: 'serial',
+      path: '/dev/ttyUSB0',
       key: '00ff',
-      token: 't0k3n',
+    });
+    expect(parseCli(['--ws', 'ws://127.0.0.1:8765', '--token', 'a'.repeat(16)]).target).toEqual({
+      kind: 'ws',
+      url: 'ws://127.0.0.1:8765',
+      token: 'a'.repeat(16),
+    });
+    expect(
+      parseCli(['--device', 'cube-01', '--nats', 'nats://127.0.0.1:4333']).target,
+    ).toMatchObject({ kind: 'nats', deviceId: 'cube-01' });
+    expect(
+      parseCli([
+        '--sim',
+        '--map',
+        'obstacles',
+        '--calibration',
+        'cal.json',
+        '--connect-timeout',
+        '500',
+      ]),
+    ).toMatchObject({
+      target: { kind: 'sim', map: 'obstacles', calibration: 'cal.json' },
+      connectTimeoutMs: 500,
     });
   });
 
-  it('still refuses arguments that are not options', () => {
-    expect(() => parseCli(['obstacles'], quiet)).toThrow(CommanderError);
+  it('reads the HTTP token from --http-token or $HAL_MCP_TOKEN', () => {
+    expect(parseCli(['--http-token', 't'.repeat(16)]).token).toBe('t'.repeat(16));
+    expect(parseCli([], { HAL_MCP_TOKEN: 'e'.repeat(16) }).token).toBe('e'.repeat(16));
   });
 
-  it('turns leash options into a leash', () => {
+  it('turns leash options into a leash, distances with their unit', () => {
     expect(
-      parseCli(['--max-distance', '0.5', '--max-speed', '0.02', '--geofence', '-1,1,-2,2'], quiet)
+      parseCli(['--max-distance', '50cm', '--max-speed', '0.02', '--geofence', '-1,1,-200cm,2m'])
         .leash,
     ).toEqual({
       maxDistanceM: 0.5,
@@ -49,28 +79,41 @@ describe('hal mcp options', () => {
     });
   });
 
-  it('refuses bad options with a commander error', () => {
-    for (const argv of [
-      ['--port', 'x'],
-      ['--geofence', '1,0,0,1'],
-      ['--map', 'moon'],
-      ['--bogus'],
-    ]) {
-      expect(() => parseCli(argv, quiet), argv.join(' ')).toThrow(CommanderError);
+  it('refuses bad values with the one usage error, naming the option', () => {
+    for (const [argv, message] of [
+      [['--port', '99999'], '"--port" must be an integer in 0..65535, got "99999"'],
+      [['--port', 'x'], '"--port" must be an integer in 0..65535, got "x"'],
+      [['--udp', 'a:b:c'], /"--udp" must be HOST, HOST:PORT or \[IPV6\]:PORT/],
+      [
+        ['--udp', 'x', '--serial', 'y'],
+        'name one robot, not --udp and --serial (one of --sim, --udp, --serial, --ws, --device)',
+      ],
+      [['--key', 'abc', '--udp', 'x'], /"--key" must be 1..64 bytes/],
+      [['--geofence', '1,0,0,1'], /"--geofence" is minX,maxX,minY,maxY/],
+      [['--max-distance', 'far'], /"--max-distance" must be a distance/],
+      [['--timeout', '5'], '"--timeout" must be an integer in 100..600000, got "5"'],
+      [
+        ['--http', '--host', '0.0.0.0'],
+        /"--host" 0.0.0.0 is reachable from other machines: give --http-token/,
+      ],
+    ] as const) {
+      expect(() => parseCli([...argv]), argv.join(' ')).toThrow(
+        expect.objectContaining({
+          name: 'CliError',
+          code: 'USAGE',
+          message: typeof message === 'string' ? message : expect.stringMatching(message),
+        }),
+      );
     }
+    expect(() => parseCli(['--http', '--host', '0.0.0.0', '--http-token', 'short'])).toThrow(usage);
+    expect(parseCli(['--http', '--host', '0.0.0.0', '--http-token', 's'.repeat(16)]).host).toBe(
+      '0.0.0.0',
+    );
   });
-});
 
-describe('createRobot', () => {
-  it('builds a simulator with its map, or a PhysicalHAL for --udp and --serial', () => {
-    const sim = createRobot({ map: 'obstacles' }, {});
-    expect(sim.hal.mode).toBe('simulation');
-    expect(sim.world.map?.()).toMatchObject({ name: 'obstacles' });
-    const udp = createRobot({ udp: '127.0.0.1:4999' }, {});
-    expect(udp.hal.mode).toBe('physical');
-    expect(udp.world.map).toBeUndefined();
-    expect(createRobot({ serial: '/dev/null' }, {}).hal.mode).toBe('physical');
-    expect(() => createRobot({ udp: 'a:b:c' }, {})).toThrow(/host or host:port/);
-    expect(() => createRobot({ udp: 'x', serial: 'y' }, {})).toThrow(/not both/);
+  it('leaves unknown options and stray words to commander', () => {
+    expect(() => parseCli(['obstacles'])).toThrow(CommanderError);
+    expect(() => parseCli(['--bogus'])).toThrow(CommanderError);
+    expect(() => parseCli(['--map', 'moon'])).toThrow(CommanderError);
   });
 });

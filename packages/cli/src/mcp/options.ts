@@ -1,82 +1,110 @@
-// The options of `hal mcp` (those the former hal-mcp command took) and what they ask for.
-// Parsing only; commands/mcp.ts runs the server.
+// The options of `hal mcp`: the robot (the target options every command takes, the embedded
+// simulator when none is named), how to serve (stdio, or HTTP at --host/--port with
+// --http-token), the leash, and --record. Parsing only; commands/mcp.ts runs the server.
 import { Option } from 'commander';
 import type { Command } from 'commander';
 import type { Leash } from '@hal/tools';
-import { BUILTIN_MAPS } from '@hal/simulation';
-import type { BuiltinMapName } from '@hal/simulation';
-import { addLeashOptions, leashFromOptions, numberOption } from '../leash-options.js';
+import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import type { RobotTarget } from './robot.js';
+import { addOverwriteOption } from '../output-place.js';
+import { addTargetOptions, namesTarget, resolveTarget } from '../target.js';
+import type { Target, TargetCliOptions } from '../target.js';
+import { integerArg, portArg, usageError } from '../values.js';
+
+/** The default HTTP port of `hal mcp --http`. */
+export const DEFAULT_MCP_HTTP_PORT = 3333;
 
 /** What the command line asked for. */
-export interface McpOptions extends RobotTarget {
+export interface McpOptions {
+  /** The robot served. */
+  target: Target;
+  /** Give up connecting to the robot after this long, ms. */
+  connectTimeoutMs?: number;
   /** Serve streamable HTTP instead of stdio. */
   http: boolean;
   host: string;
   port: number;
+  /** The bearer token HTTP clients must send. */
   token?: string;
   timeoutMs?: number;
   leash: Leash;
   /** An MCAP file to record the served robot's run into. */
   record?: string;
+  /** Replace the --record file when it exists. */
+  overwrite: boolean;
 }
 
 /** The options as commander parses them. */
-export interface McpCliOptions extends LeashCliOptions {
-  udp?: string;
-  serial?: string;
-  key?: string;
-  map?: BuiltinMapName;
+export interface McpCliOptions extends TargetCliOptions, LeashCliOptions {
   http: boolean;
   host: string;
   port: number;
-  token?: string;
+  httpToken?: string;
   timeout?: number;
   record?: string;
+  overwrite?: boolean;
 }
 
 /** Adds the options of `hal mcp` to `command`. */
 export function addMcpOptions(command: Command): Command {
   command
-    .option('--udp <host[:port]>', 'a robot over WiFi UDP (default port 4210)')
-    .option('--serial <path>', 'a robot over a serial port')
-    .option('--key <hex>', "the robot's pre-shared key (default $HAL_KEY)")
-    .addOption(new Option('--map <name>', "the simulator's map").choices(Object.keys(BUILTIN_MAPS)))
     .option('--http', 'serve streamable HTTP instead of stdio', false)
-    .option('--host <address>', 'HTTP address; any but loopback needs --token', '127.0.0.1')
-    .option('--port <port>', 'HTTP port', numberOption('--port'), 3333)
-    .option('--token <token>', 'bearer token HTTP clients must send (default $HAL_MCP_TOKEN)')
+    .option('--host <address>', 'HTTP address; any but loopback needs --http-token', '127.0.0.1')
+    .addOption(
+      new Option('--port <port>', 'HTTP port (0: any free one)')
+        .argParser(portArg('--port', { anyFree: true }))
+        .default(DEFAULT_MCP_HTTP_PORT),
+    )
     .option(
-      '--timeout <ms>',
-      'time one tool call may take (motions get more)',
-      numberOption('--timeout'),
+      '--http-token <token>',
+      'bearer token HTTP clients must send, 16+ characters (default $HAL_MCP_TOKEN)',
+    )
+    .addOption(
+      new Option('--timeout <ms>', 'time one tool call may take (motions get more)').argParser(
+        integerArg('--timeout', 100, 600_000),
+      ),
     )
     .option(
       '--record <file>',
       "record the robot's run (every tool call's HAL calls, the pose, e-stops) into this MCAP file",
     );
-  return addLeashOptions(command);
+  addOverwriteOption(command, 'the --record file');
+  addLeashOptions(command);
+  return addTargetOptions(command);
 }
 
-/** What the parsed options ask for; `$HAL_KEY` and `$HAL_MCP_TOKEN` fill in the key and token. */
+/** Addresses only this machine can reach. */
+function isLoopback(host: string): boolean {
+  return host === 'localhost' || host === '::1' || /^127\.\d+\.\d+\.\d+$/.test(host);
+}
+
+/**
+ * What the parsed options ask for: the robot they name (the embedded simulator when none),
+ * `$HAL_MCP_TOKEN` for the HTTP token. USAGE for a robot named twice, or HTTP beyond loopback
+ * without a token of 16 characters or more.
+ */
 export function mcpOptions(
   o: McpCliOptions,
   env: Readonly<Record<string, string | undefined>>,
 ): McpOptions {
-  const key = o.key ?? env['HAL_KEY'];
-  const token = o.token ?? env['HAL_MCP_TOKEN'];
+  const target = resolveTarget(namesTarget(o) ? o : { ...o, sim: true }, env);
+  const token = o.httpToken ?? env['HAL_MCP_TOKEN'];
+  const hasToken = token !== undefined && token !== '';
+  if (o.http && !isLoopback(o.host) && (!hasToken || token.length < 16)) {
+    throw usageError(
+      `"--host" ${o.host} is reachable from other machines: give --http-token (16+ characters, or $HAL_MCP_TOKEN)`,
+    );
+  }
   return {
-    ...(o.udp === undefined ? {} : { udp: o.udp }),
-    ...(o.serial === undefined ? {} : { serial: o.serial }),
-    ...(key === undefined || key === '' ? {} : { key }),
-    ...(o.map === undefined ? {} : { map: o.map }),
+    target,
+    ...(o.connectTimeout === undefined ? {} : { connectTimeoutMs: o.connectTimeout }),
     http: o.http,
     host: o.host,
     port: o.port,
-    ...(token === undefined || token === '' ? {} : { token }),
+    ...(hasToken ? { token } : {}),
     ...(o.timeout === undefined ? {} : { timeoutMs: o.timeout }),
     leash: leashFromOptions(o),
     ...(o.record === undefined ? {} : { record: o.record }),
+    overwrite: o.overwrite === true,
   };
 }

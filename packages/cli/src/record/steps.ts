@@ -1,16 +1,26 @@
-// The steps of `hal record`: each argument one action in `hal drive`'s words ("forward 0.1",
-// "turn 90", "move-to 0.2 0.1", "wheels 100 100 500", "stop", "estop why", "reset-estop"),
-// checked against the robot's limits before anything is sent.
+// The steps of `hal record`: each argument one action in `hal drive`'s words and units
+// ("forward 0.1" or "forward 10cm", "turn 90" or "turn 1.5rad", "move-to 0.2 0.1",
+// "wheels 100 100 500", "stop", "estop why", "reset-estop"), checked against the robot's limits
+// before anything is sent.
 import { CliError } from '../cli-error.js';
 import { checkAction } from '../drive/actions.js';
 import type { DriveAction } from '../drive/actions.js';
+import { article, QUANTITY_FORMS, readNumber, readQuantity } from '../values.js';
+import type { QuantityKind } from '../values.js';
 
-function number(step: string, word: string | undefined, what: string): number {
-  const n = Number(word);
-  if (word === undefined || word.trim() === '' || !Number.isFinite(n)) {
+/** A word of `step` as a number, or as a distance or angle with its unit; USAGE when not. */
+function number(step: string, word: string | undefined, what: string, kind?: QuantityKind): number {
+  const n =
+    word === undefined
+      ? undefined
+      : kind === undefined
+        ? readNumber(word)
+        : readQuantity(word, kind);
+  if (n === undefined) {
+    const form = kind === undefined ? 'a number' : `${article(kind)} (${QUANTITY_FORMS[kind]})`;
     throw new CliError(
       'USAGE',
-      `step "${step}": ${what} must be a finite number, got ${word === undefined ? 'nothing' : `"${word}"`}`,
+      `step "${step}": ${what} must be ${form}, got ${word === undefined ? 'nothing' : `"${word}"`}`,
     );
   }
   return n;
@@ -32,15 +42,19 @@ export function parseStep(step: string): DriveAction {
   switch (kind) {
     case 'forward':
       arity(step, rest, 1);
-      action = { kind, metres: number(step, rest[0], 'the distance') };
+      action = { kind, metres: number(step, rest[0], 'the distance', 'distance') };
       break;
     case 'turn':
       arity(step, rest, 1);
-      action = { kind, degrees: number(step, rest[0], 'the angle') };
+      action = { kind, degrees: number(step, rest[0], 'the angle', 'angle') };
       break;
     case 'move-to':
       arity(step, rest, 2);
-      action = { kind, x: number(step, rest[0], 'x'), y: number(step, rest[1], 'y') };
+      action = {
+        kind,
+        x: number(step, rest[0], 'x', 'distance'),
+        y: number(step, rest[1], 'y', 'distance'),
+      };
       break;
     case 'wheels':
       arity(step, rest, 3);
@@ -62,7 +76,7 @@ export function parseStep(step: string): DriveAction {
     default:
       throw new CliError(
         'USAGE',
-        `unknown step "${step}": one of forward M, turn DEG, move-to X Y, wheels L R MS, stop, estop [REASON], reset-estop`,
+        `unknown step "${step}": one of forward DISTANCE, turn ANGLE, move-to X Y, wheels L R MS, stop, estop [REASON], reset-estop (a distance in metres or with a unit, 30cm; an angle in degrees or with a unit, 1.5rad)`,
       );
   }
   checkAction(action);

@@ -19,6 +19,8 @@ export interface ServeCliOptions extends NatsCliOptions {
   heartbeatTimeout?: number;
   /** --record: the MCAP file the served robot's run is recorded into. */
   record?: string;
+  /** --overwrite: replace the --record file when it exists. */
+  overwrite?: boolean;
 }
 
 export interface ServePlan {

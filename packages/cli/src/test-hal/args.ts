@@ -1,8 +1,7 @@
 // Parsers for `hal test hal`'s options: bad values are usage errors before anything is sent.
-import { InvalidArgumentError } from 'commander';
 import { CHECK_GROUPS, SPEC_CAPABILITIES, specCapability } from '@hal/compliance';
 import type { CheckGroup, SpecCapability } from '@hal/compliance';
-import { integerArg } from '../values.js';
+import { integerArg, usageError } from '../values.js';
 
 /** Collects repeated `--capability` values, each one the runner knows. */
 export function capabilityArg(
@@ -11,9 +10,7 @@ export function capabilityArg(
 ): SpecCapability[] {
   const capability = specCapability(value);
   if (capability === undefined) {
-    throw new InvalidArgumentError(
-      `a capability is one of ${SPEC_CAPABILITIES.join(', ')}, got "${value}"`,
-    );
+    throw usageError(`"--capability" is one of ${SPEC_CAPABILITIES.join(', ')}, got "${value}"`);
   }
   return [...(previous ?? []), capability];
 }
@@ -22,9 +19,7 @@ export function capabilityArg(
 export function groupArg(value: string, previous: CheckGroup[] | undefined): CheckGroup[] {
   const group = CHECK_GROUPS.find((g) => g === value);
   if (group === undefined) {
-    throw new InvalidArgumentError(
-      `a check group is one of ${CHECK_GROUPS.join(', ')}, got "${value}"`,
-    );
+    throw usageError(`"--group" is one of ${CHECK_GROUPS.join(', ')}, got "${value}"`);
   }
   return [...(previous ?? []), group];
 }
@@ -33,7 +28,7 @@ export const samplesArg = integerArg('--samples', 1, 10_000);
 
 export function judgeArg(value: string): 'p50' | 'p99' {
   if (value !== 'p50' && value !== 'p99') {
-    throw new InvalidArgumentError(`judge is p50 or p99, got "${value}"`);
+    throw usageError(`"--judge" is p50 or p99, got "${value}"`);
   }
   return value;
 }
