@@ -30,6 +30,26 @@ describe('hal', () => {
     expect(help.stdout()).toContain('--json');
   });
 
+  it('refuses an unknown command as a usage error, --help or not, naming it', async () => {
+    for (const argv of [
+      ['nosuch'],
+      ['nosuch', '--help'],
+      ['--json', 'nosuch', '-h'],
+      ['help', 'nosuch'],
+    ]) {
+      const io = captureIO();
+      expect(await runHal(argv, io), argv.join(' ')).toBe(2);
+      expect(io.stdout(), argv.join(' ')).not.toContain('Usage: hal');
+      expect(io.stderr(), argv.join(' ')).toMatch(
+        /hal: USAGE: unknown command 'nosuch'|"message":"unknown command 'nosuch'"/,
+      );
+    }
+    // a known command's help is still help
+    const help = captureIO();
+    expect(await runHal(['drive', '--help'], help)).toBe(0);
+    expect(help.stdout()).toContain('Usage: hal drive');
+  });
+
   it('refuses an unknown option with exit code 2', async () => {
     const bad = captureIO();
     expect(await runHal(['--no-such-option'], bad)).toBe(2);

@@ -85,6 +85,28 @@ function silenceErrorText(program: Command): void {
   }
 }
 
+/**
+ * Refuses a first word that is no command of `program` (`hal nosuch --help`), as commander does
+ * without `--help`, where commander would print the root help and exit 0 instead. `hal help
+ * nosuch` is refused the same way.
+ */
+function refuseUnknownCommand(program: Command, argv: readonly string[]): void {
+  const words = argv.filter((arg) => !arg.startsWith('-'));
+  const known = (name: string | undefined) =>
+    name === undefined ||
+    program.commands.some((c) => c.name() === name || c.aliases().includes(name));
+  const [first, second] = words;
+  const named = first === 'help' ? second : first;
+  if (first === 'help' || !known(first)) {
+    if (!known(named)) {
+      program.error(`error: unknown command '${named}'`, {
+        exitCode: 2,
+        code: 'commander.unknownCommand',
+      });
+    }
+  }
+}
+
 /** Runs an already built program (see {@link runHal}); tests add commands to it first. */
 export async function runProgram(
   program: Command,
@@ -95,6 +117,7 @@ export async function runProgram(
   // with --json an error is one JSON document: commander's own text would be a second copy
   if (json) silenceErrorText(program);
   try {
+    refuseUnknownCommand(program, argv);
     await program.parseAsync([...argv], { from: 'user' });
     return 0;
   } catch (error) {
