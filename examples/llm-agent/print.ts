@@ -28,6 +28,6 @@ export function describeEvent(e: AgentEvent): string | undefined {
       // not clipped: the URL and the cause are at its end
       return `  endpoint error ${e.error.code}: ${e.error.message}`;
     case 'done':
-      return `done: ${e.reason} after ${e.steps} steps, ${(e.elapsedMs / 1000).toFixed(1)} s`;
+      return `done: ${e.reason} after ${e.steps} step${e.steps === 1 ? '' : 's'}, ${(e.elapsedMs / 1000).toFixed(1)} s`;
   }
 }
