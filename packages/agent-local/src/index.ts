@@ -1,9 +1,14 @@
 export { createLocalChatProvider } from './local-provider.js';
 export { defaultThreads } from './threads.js';
 export type { LocalChatProvider, LocalChatProviderOptions } from './local-provider.js';
-export { checkModelFile, DEFAULT_MODEL_NAME, defaultModelFile } from './model-file.js';
+export {
+  checkModelFile,
+  DEFAULT_MODEL_NAME,
+  defaultModelFile,
+  isDefaultModelFile,
+} from './model-file.js';
 export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
-export { replySchema } from './grammar-schema.js';
+export { MAX_COUNTED_REPETITION, replySchema } from './grammar-schema.js';
 export { replyGrammar } from './grammar.js';
 export { LocalModelError } from './errors.js';
 export type { LocalModelErrorCode } from './errors.js';

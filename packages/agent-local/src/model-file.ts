@@ -1,6 +1,6 @@
 import { open, stat } from 'node:fs/promises';
 import { homedir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
 import { LocalModelError } from './errors.js';
 
 /** The model `bash scripts/setup.sh` puts in the cache: SmolLM2-135M-Instruct, Q4_1 (Apache-2.0). */
@@ -16,6 +16,18 @@ export function defaultModelFile(
   const cache = env['XDG_CACHE_HOME'];
   const base = cache !== undefined && cache !== '' ? cache : join(homedir(), '.cache');
   return join(base, 'hal', 'models', DEFAULT_MODEL_NAME);
+}
+
+/**
+ * Whether `path` names the default model's file ({@link defaultModelFile}), however it is
+ * written (relative, with `..`). A caller runs it as it runs the default: with few tools and the
+ * short prompt the small model needs.
+ */
+export function isDefaultModelFile(
+  path: string,
+  env: Readonly<Record<string, string | undefined>> = process.env,
+): boolean {
+  return resolve(path) === resolve(defaultModelFile(env));
 }
 
 const GGUF_MAGIC = 'GGUF';

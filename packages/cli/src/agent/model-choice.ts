@@ -1,7 +1,7 @@
 // Which model `hal agent` talks to: the local GGUF (the default), or an OpenAI-compatible
 // endpoint when --base-url is given. Parsing only; the command loads or reaches it.
 import type { AgentEndpoint } from '@hal/agent';
-import { SMALL_MODEL_TOOLS } from '@hal/agent-local';
+import { isDefaultModelFile, SMALL_MODEL_TOOLS } from '@hal/agent-local';
 import { CliError } from '../cli-error.js';
 
 /** The model options as commander parses them. */
@@ -18,7 +18,7 @@ export interface ModelCliOptions {
 export type ModelChoice =
   | {
       kind: 'local';
-      /** Undefined: the SmolLM2 file setup caches. */
+      /** Undefined: the SmolLM2 file `hal model pull` caches (also when it was given by its path). */
       modelFile?: string;
       /** The tools the model is offered; undefined: all of them. */
       offerTools?: readonly string[];
@@ -77,13 +77,18 @@ export function modelChoice(
   }
   if (options.model !== undefined)
     throw new CliError('USAGE', '--model names a model of an endpoint: give --base-url too');
+  // the default file given by its path is the default model, run as the default is
+  const modelFile =
+    options.modelFile === undefined || isDefaultModelFile(options.modelFile, env)
+      ? undefined
+      : options.modelFile;
   const offer =
     tools === 'all'
       ? undefined
-      : (tools ?? (options.modelFile === undefined ? SMALL_MODEL_TOOLS : undefined));
+      : (tools ?? (modelFile === undefined ? SMALL_MODEL_TOOLS : undefined));
   return {
     kind: 'local',
-    ...(options.modelFile === undefined ? {} : { modelFile: options.modelFile }),
+    ...(modelFile === undefined ? {} : { modelFile }),
     ...(offer === undefined ? {} : { offerTools: offer }),
     ...(options.threads === undefined ? {} : { threads: options.threads }),
     ...(options.context === undefined ? {} : { contextSize: options.context }),

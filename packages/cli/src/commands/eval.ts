@@ -20,6 +20,8 @@ import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
 import { recordTrials } from '../eval/record-trials.js';
 import { writeReports } from '../eval/write-reports.js';
 import { emit, progress } from '../io.js';
+import { cliLogger } from '../logger.js';
+import { modelFailureError, trialVerdict } from '../eval/model-failures.js';
 import { checkOutputPlace } from '../output-place.js';
 import type { RegisterCommand } from './context.js';
 
@@ -310,6 +312,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             ...(options.threads === undefined ? {} : { threads: options.threads }),
           },
           io.env,
+          cliLogger(io, g.json),
         );
         let report: EvalReport;
         let opened: Awaited<ReturnType<typeof openPlaces>> | undefined;
@@ -345,7 +348,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
               progress(
                 io,
                 g,
-                `${bar(done, total)} ${done}/${total} ${agent} ${score.task} seed ${score.seed}: ${score.success ? 'pass' : `FAIL (${score.failures[0] ?? ''})`}`,
+                `${bar(done, total)} ${done}/${total} ${agent} ${score.task} seed ${score.seed}: ${trialVerdict(score)}`,
               ),
           });
         } catch (error) {
@@ -370,6 +373,9 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           progress(io, g, `wrote ${files.json}, ${files.markdown}, ${files.svg}`);
         }
         emit(io, g, report, () => summaryTable(report));
+        // a model that never answered is a failed run, named once per agent, not a score
+        const unreached = modelFailureError(report);
+        if (unreached !== undefined) throw unreached;
         if (options.minSuccess !== undefined) {
           const below = report.scores.agents.filter(
             (a) => a.overall.rate < (options.minSuccess ?? 0),

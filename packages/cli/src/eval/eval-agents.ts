@@ -3,6 +3,7 @@
 // environment only.
 import {
   createLocalChatProvider,
+  isDefaultModelFile,
   LOCAL_SYSTEM_PROMPT,
   LocalModelError,
   SMALL_MODEL_TOOLS,
@@ -11,6 +12,7 @@ import type { LocalChatProvider } from '@hal/agent-local';
 import { chatAgent, claimerAgent, naiveAgent, navigationAgent, oracleAgent } from '@hal/eval';
 import type { EvalAgent } from '@hal/eval';
 import { toOpenAITools } from '@hal/tools';
+import type { Logger } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS } from '../agent/model-choice.js';
 import { CliError } from '../cli-error.js';
 
@@ -59,13 +61,22 @@ export function agentNames(text: string): string[] {
   return names;
 }
 
-/** Builds the agents; loads the local model when it is named. */
+/**
+ * Builds the agents; loads the local model when it is named (a model that cannot load is a
+ * FAILED error before any trial). llama.cpp's own warnings go to `logger`.
+ */
 export async function buildAgents(
   names: readonly string[],
   options: EvalAgentOptions,
   env: Readonly<Record<string, string | undefined>>,
+  logger?: Logger,
 ): Promise<EvalAgents> {
   let local: LocalChatProvider | undefined;
+  // the default file given by its path is the default model, run as the default is
+  const modelFile =
+    options.modelFile === undefined || isDefaultModelFile(options.modelFile, env)
+      ? undefined
+      : options.modelFile;
   const agents: EvalAgent[] = [];
   for (const name of names) {
     const fixed = FIXED[name];
@@ -76,11 +87,10 @@ export async function buildAgents(
     if (name === 'local') {
       try {
         local = await createLocalChatProvider({
-          ...(options.modelFile === undefined
-            ? { offerTools: SMALL_MODEL_TOOLS }
-            : { modelFile: options.modelFile }),
+          ...(modelFile === undefined ? { offerTools: SMALL_MODEL_TOOLS } : { modelFile }),
           ...(options.threads === undefined ? {} : { threads: options.threads }),
           ...(options.temperature === undefined ? {} : { temperature: options.temperature }),
+          ...(logger === undefined ? {} : { logger }),
           env,
         });
       } catch (error) {
@@ -91,7 +101,7 @@ export async function buildAgents(
       const provider = local;
       const modelName = provider.modelFile.split(/[\\/]/).pop() ?? provider.modelFile;
       const systemPrompt =
-        options.systemPrompt ?? (options.modelFile === undefined ? LOCAL_SYSTEM_PROMPT : undefined);
+        options.systemPrompt ?? (modelFile === undefined ? LOCAL_SYSTEM_PROMPT : undefined);
       agents.push(
         chatAgent({
           name: `local:${modelName.replace(/\.gguf$/i, '')}`,
@@ -99,8 +109,7 @@ export async function buildAgents(
           prepare: (tools) => provider.prepare(toOpenAITools(tools)),
           ...(systemPrompt === undefined ? {} : { systemPrompt }),
           // the default SmolLM2 does one simple thing, then repeats or wanders (see hal agent)
-          maxSteps:
-            options.maxSteps ?? (options.modelFile === undefined ? DEFAULT_SMALL_MODEL_STEPS : 20),
+          maxSteps: options.maxSteps ?? (modelFile === undefined ? DEFAULT_SMALL_MODEL_STEPS : 20),
         }),
       );
       continue;
