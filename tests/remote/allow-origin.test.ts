@@ -5,20 +5,12 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { afterEach, describe, expect, it } from 'vitest';
 import { knock } from './knock.js';
-import { startServe, stopAllServes } from './serve-command.js';
+import { startServe, stopAllServes, untilMatches } from './serve-command.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const FOREIGN = 'http://evil.example';
 
 afterEach(stopAllServes);
-
-/** Waits (up to 10 s) for `text` to hold `pattern`; the text is read each time. */
-async function eventually(text: () => string, pattern: RegExp): Promise<void> {
-  for (let waited = 0; !pattern.test(text()); waited += 50) {
-    if (waited >= 10_000) throw new Error(`never matched ${pattern}: ${text()}`);
-    await new Promise((resolve) => setTimeout(resolve, 50));
-  }
-}
 
 describe('hal serve --ws-port without a token, from the launcher', () => {
   it('refuses a page from another site, and lets in a program and a page from this machine', async () => {
@@ -29,7 +21,7 @@ describe('hal serve --ws-port without a token, from the launcher', () => {
     expect(refused.opened === false && refused.body).toMatch(
       /--allow-origin http:\/\/evil\.example/,
     );
-    await eventually(
+    await untilMatches(
       () => stderr,
       /refused a connection \(HTTP 403\): Origin "http:\/\/evil\.example"/,
     );

@@ -54,3 +54,16 @@ export function startServe(
 export function stopAllServes(): void {
   for (const child of running) child.kill('SIGTERM');
 }
+
+/** Waits (up to `timeoutMs`) for `text()`, read again every 50 ms, to match `pattern`. */
+export async function untilMatches(
+  text: () => string,
+  pattern: RegExp,
+  timeoutMs = 10_000,
+): Promise<void> {
+  for (let waited = 0; !pattern.test(text()); waited += 50) {
+    if (waited >= timeoutMs)
+      throw new Error(`never matched ${pattern} in ${timeoutMs} ms: ${text()}`);
+    await new Promise((resolve) => setTimeout(resolve, 50));
+  }
+}
