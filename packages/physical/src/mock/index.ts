@@ -1,5 +1,8 @@
-// @hal/physical/testing: an in-process robot that speaks protocol 1.1, for tests without hardware:
-// `new PhysicalHAL(config, { transport: robot.transport() })`.
+// @hal/physical/testing: a robot that speaks protocol 1.1, for tests without hardware: in the
+// process (`new PhysicalHAL(config, { transport: robot.transport() })`) or on a real UDP socket
+// (`new PhysicalHAL({ ..., connection: (await MockUdpRobot.start()).connection })`).
 export { MockRobot } from './mock-robot.js';
 export type { MockRobotOptions } from './mock-robot.js';
+export { MockUdpRobot } from './udp-robot.js';
+export type { MockUdpConnection, MockUdpRobotOptions } from './udp-robot.js';
 export type { MockTransportOptions } from './mock-transport.js';

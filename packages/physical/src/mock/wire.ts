@@ -1,5 +1,6 @@
 import type { MessageAuthenticator } from '../protocol/auth.js';
 import { appendMac, splitMac } from '../protocol/auth.js';
+import { MAX_MESSAGE_BYTES } from '../protocol/codec.js';
 import { Refusal } from './refusal.js';
 import type { Json } from './refusal.js';
 
@@ -43,6 +44,8 @@ export class MockWire {
 
   /** One request, or the refusal to answer it with (AUTH_FAILED, MALFORMED). */
   read(bytes: Uint8Array): Json | Refusal {
+    if (bytes.length > MAX_MESSAGE_BYTES)
+      return new Refusal('MALFORMED', `message longer than ${MAX_MESSAGE_BYTES} bytes`);
     let json = bytes;
     if (this.#auth !== undefined) {
       const signed = splitMac(bytes);
