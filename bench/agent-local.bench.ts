@@ -11,11 +11,10 @@ import {
   createLocalChatProvider,
   defaultModelFile,
   LOCAL_SYSTEM_PROMPT,
-  replyGrammar,
-  replySchema,
   SMALL_MODEL_TOOLS,
   systemText,
 } from '@hal/agent-local';
+import { replyGrammar, replySchema } from '@hal/agent-local/grammar';
 import { SimulationHAL, World } from '@hal/simulation';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import { getLlama, LlamaChat, LlamaLogLevel } from 'node-llama-cpp';

@@ -6,6 +6,11 @@ export type LocalModelErrorCode =
   | 'MODEL_INVALID'
   /** A tool's JSON Schema uses something the grammar cannot express; the message names the tool. */
   | 'SCHEMA_UNSUPPORTED'
+  /**
+   * node-llama-cpp, the optional peer dependency that runs the model, is not installed; the
+   * message says what to install.
+   */
+  | 'DEPENDENCY_MISSING'
   /** An option is wrong (threads, context size, token limits). */
   | 'CONFIG'
   /** The model failed while generating, or its output could not be read. */

@@ -8,7 +8,5 @@ export {
   isDefaultModelFile,
 } from './model-file.js';
 export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
-export { MAX_COUNTED_REPETITION, replySchema } from './grammar-schema.js';
-export { replyGrammar } from './grammar.js';
 export { LocalModelError } from './errors.js';
 export type { LocalModelErrorCode } from './errors.js';

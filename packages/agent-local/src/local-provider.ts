@@ -7,6 +7,7 @@ import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
 import { fitHistory } from './history.js';
+import { loadNodeLlamaCpp } from './load-llama.js';
 import { checkModelFile, defaultModelFile } from './model-file.js';
 import { systemText } from './prompt.js';
 import { readReply } from './reply-json.js';
@@ -94,7 +95,7 @@ export async function createLocalChatProvider(
   await checkModelFile(modelFile, options.modelFile === undefined);
   // loaded here, not at import: a program that imports this package but runs no model (the `hal`
   // command answering --help) does not load llama.cpp's bindings
-  const { getLlama, LlamaChat, LlamaLogLevel: Levels } = await import('node-llama-cpp');
+  const { getLlama, LlamaChat, LlamaLogLevel: Levels } = await loadNodeLlamaCpp();
   const log = (level: LlamaLogLevel, message: string) => {
     const text = message.trim();
     if (text === '' || options.logger === undefined) return;
