@@ -75,7 +75,7 @@ describe('hal fleet --config', () => {
       '--mode',
       'synchronized',
       '--command',
-      'forward:1',
+      'forward:1cm',
     );
     expect(io.stderr()).not.toContain('hal:');
     expect(code).toBe(0);
@@ -87,7 +87,7 @@ describe('hal fleet --config', () => {
 
   it("runs the config file's mode when --mode is not given, and refuses a file whose mode runs nothing", async () => {
     const before = robot.events.filter((e) => e.event === 'move_started').length;
-    const { code, io } = await hal('fleet', 'run', '--config', config, '--command', 'forward:1');
+    const { code, io } = await hal('fleet', 'run', '--config', config, '--command', 'forward:1cm');
     expect(io.stderr()).not.toContain('hal:');
     expect(code).toBe(0);
     expect(io.stdout()).toContain('synchronized moveForward: 2 ok, 0 failed');
@@ -95,7 +95,7 @@ describe('hal fleet --config', () => {
 
     const independent = join(dir, 'independent.json');
     await writeFile(independent, JSON.stringify({ devices: [{ type: 'simulated', id: 'sim-1' }] }));
-    const bad = await hal('fleet', 'run', '--config', independent, '--command', 'forward:1');
+    const bad = await hal('fleet', 'run', '--config', independent, '--command', 'forward:1cm');
     expect(bad.code).toBe(2);
     expect(bad.io.stderr()).toContain('its mode is "independent"');
   }, 60_000);
@@ -134,7 +134,7 @@ describe('hal fleet --config', () => {
         '--leader',
         'sim-a',
         '--command',
-        'forward:10',
+        'forward:10cm',
         '--settle-timeout-ms',
         '5000',
       ],

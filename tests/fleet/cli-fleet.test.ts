@@ -55,7 +55,7 @@ describe('hal fleet', () => {
       '--mode',
       'synchronized',
       '--command',
-      'forward:1',
+      'forward:1cm',
       ...DEVICES,
     );
     expect(io.stderr()).toContain('synchronized moveForward on 3 device(s)');
@@ -79,7 +79,7 @@ describe('hal fleet', () => {
       '--spacing',
       '0.25',
       '--command',
-      'forward:10',
+      'forward:10cm',
       ...DEVICES,
     );
     expect(io.stderr()).toBe('');
@@ -105,7 +105,7 @@ describe('hal fleet', () => {
       '--mode',
       'synchronized',
       '--command',
-      'forward:1',
+      'forward:1cm',
       ...DEVICES,
     );
     expect(refused.code).toBe(1);
@@ -125,7 +125,7 @@ describe('hal fleet', () => {
       '--mode',
       'synchronized',
       '--command',
-      'forward:1',
+      'forward:1cm',
       ...DEVICES,
     );
     expect(again.code).toBe(0);
@@ -149,7 +149,7 @@ describe('hal fleet', () => {
       '--mode',
       'leader-follower',
       '--command',
-      'forward:1',
+      'forward:1cm',
       ...DEVICES,
     );
     expect(noLeader.code).toBe(2);

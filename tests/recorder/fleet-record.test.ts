@@ -40,7 +40,7 @@ describe('hal fleet run --record', () => {
     );
     const file = join(dir, 'sims.mcap');
     const run = await runHalProcess(
-      ['--json', 'fleet', 'run', '--config', config, '--command', 'forward:5', '--record', file],
+      ['--json', 'fleet', 'run', '--config', config, '--command', 'forward:5cm', '--record', file],
       60_000,
     );
     expect(run.code, run.stderr).toBe(0);
@@ -53,7 +53,7 @@ describe('hal fleet run --record', () => {
     expectWellFormed(recording);
     expect(recording.metadata.get('hal.fleet')).toMatchObject({
       mode: 'synchronized',
-      command: 'forward:5',
+      command: 'forward:5cm',
       devices: '["sim-1","sim-2","sim-3"]',
     });
     for (const [i, id] of ['sim-1', 'sim-2', 'sim-3'].entries()) {
@@ -128,7 +128,17 @@ describe('hal fleet run --record', () => {
     const io = captureIO();
     try {
       const code = await runHal(
-        ['--json', 'fleet', 'run', '--config', config, '--command', 'forward:2', '--record', file],
+        [
+          '--json',
+          'fleet',
+          'run',
+          '--config',
+          config,
+          '--command',
+          'forward:2cm',
+          '--record',
+          file,
+        ],
         io,
       );
       expect(code, io.stderr()).toBe(0);

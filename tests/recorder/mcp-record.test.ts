@@ -88,6 +88,8 @@ describe('hal mcp --record', () => {
     const client = new Client({ name: 'hal-record-test', version: '1.0.0' });
     await expect(client.connect(transport)).rejects.toThrow();
     await client.close().catch(() => undefined);
-    expect(stderr).toContain('--record: cannot write');
+    expect(stderr).toContain(
+      `hal: USAGE: "--record" ${join(dir, 'no-such-dir', 'x.mcap')}: its folder ${join(dir, 'no-such-dir')} does not exist`,
+    );
   }, 30_000);
 });
