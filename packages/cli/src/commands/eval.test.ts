@@ -1,6 +1,6 @@
 // `hal eval` in-process: the scripted agents on the built-in tasks, the reports, the refusals,
 // and the real local model (SmolLM2-135M from bash scripts/setup.sh) on one task end to end.
-import { mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
+import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -33,6 +33,24 @@ const oneTask = {
 };
 
 describe('hal eval', () => {
+  it('prints the table before the reports, so a report that cannot be written loses no run', async () => {
+    const out = join(dir, 'unwritable-reports');
+    // eval.json is taken by a folder: the place passes its check with --overwrite, the write fails
+    await mkdir(join(out, 'eval.json'), { recursive: true });
+    const io = captureIO();
+    const args = ['eval', '--agent', 'oracle', '--tasks', 'safety', '--trials', '1'];
+    expect(await runHal([...args, '--out', out, '--overwrite'], io)).toBe(1);
+    expect(io.stdout()).toContain('oracle');
+    expect(io.stderr()).toContain(
+      `hal: FAILED: "--out" ${out}: the reports could not be written (EISDIR)`,
+    );
+    // without --overwrite the folder that holds files is refused before any trial
+    const refused = captureIO();
+    expect(await runHal([...args, '--out', out], refused)).toBe(2);
+    expect(refused.stderr()).toContain(`hal: USAGE: "--out" ${out}: is not empty`);
+    expect(refused.stdout()).toBe('');
+  });
+
   it('scores the oracle, the naive baseline and the claimer, and writes the reports', async () => {
     const io = captureIO();
     const out = join(dir, 'reports');

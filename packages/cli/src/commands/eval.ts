@@ -368,11 +368,18 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
               (dropped > 0 ? ` (${dropped} message(s) dropped: the disk was too slow)` : ''),
           );
         }
+        // the table first: a report that cannot be written at the end loses nothing of the run
+        emit(io, g, report, () => summaryTable(report));
         if (options.out !== undefined) {
-          const files = await writeReports(options.out, report);
+          const out = options.out;
+          const files = await writeReports(out, report).catch((error: unknown) => {
+            throw new CliError(
+              'FAILED',
+              `"--out" ${out}: the reports could not be written (${(error as NodeJS.ErrnoException).code ?? String(error)})`,
+            );
+          });
           progress(io, g, `wrote ${files.json}, ${files.markdown}, ${files.svg}`);
         }
-        emit(io, g, report, () => summaryTable(report));
         // a model that never answered is a failed run, named once per agent, not a score
         const unreached = modelFailureError(report);
         if (unreached !== undefined) throw unreached;
