@@ -69,7 +69,9 @@ async function readIndexed(reader: McapIndexedReader, fileBytes: number): Promis
 function gapsText(gaps: RecordingGap[], fileBytes: number, records: number): string {
   const parts = gaps.map((gap) =>
     gap.kind === 'cut-short'
-      ? `cut short at byte ${gap.offset} of ${fileBytes} (${gap.reason})`
+      ? gap.offset === fileBytes
+        ? `cut short after its last complete record, at byte ${gap.offset} (${gap.reason})`
+        : `cut short at byte ${gap.offset} of ${fileBytes} (${gap.reason})`
       : `damaged at byte ${gap.offset} of ${fileBytes} (${gap.reason})${
           gap.resumedAt === undefined ? '' : `, read on from byte ${gap.resumedAt}`
         }`,

@@ -94,10 +94,12 @@ describe('McapRecorder', () => {
       {
         kind: 'cut-short',
         offset: sink.bytes().byteLength,
-        reason:
-          'the file ends after a complete record, with no summary: its writer never finished it',
+        reason: 'no summary after it: its writer never finished the file',
       },
     ]);
+    expect(open.truncation).toMatch(
+      /^cut short after its last complete record, at byte \d+ \(no summary after it: its writer never finished the file\); \d+ records read$/,
+    );
     await recorder.close();
     expect((await readRecording(sink.bytes())).complete).toBe(true);
   });

@@ -222,7 +222,7 @@ export function recoverRecords(
         offset: result.offset,
         reason:
           result.offset === bytes.byteLength
-            ? 'the file ends after a complete record, with no summary: its writer never finished it'
+            ? 'no summary after it: its writer never finished the file'
             : `the file ends at byte ${bytes.byteLength}, inside the record that starts at byte ${result.offset}`,
       });
       break;
