@@ -5,6 +5,21 @@ import { packageOfCommand } from '../setup/system-tools.js';
 
 export const DEFAULT_CHROMIUM_PATH = '/usr/bin/chromium';
 
+/**
+ * The flags every browser test starts Chromium with: headless, without a GPU (WebGL is drawn in
+ * software, by SwiftShader, as on a CI machine or a server), and nothing of its own on the
+ * network. A root user's container needs `--no-sandbox`.
+ */
+export const CHROMIUM_FLAGS: readonly string[] = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+];
+
 /** The browser the tests launch: `$CHROMIUM_PATH` when set, else Debian's chromium. */
 export function chromiumPath(env: NodeJS.ProcessEnv = process.env): string {
   return env['CHROMIUM_PATH'] ?? DEFAULT_CHROMIUM_PATH;

@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import type { BrowserContext, Page } from 'playwright-core';
 import { inject } from 'vitest';
-import { requireChromium } from './chromium.js';
+import { CHROMIUM_FLAGS, requireChromium } from './chromium.js';
 
 export interface DemoBrowser {
   /** The served demo's URL. */
@@ -38,15 +38,7 @@ export async function openDemoInChromium(
       executablePath,
       headless: true,
       viewport,
-      args: [
-        '--headless',
-        '--no-sandbox',
-        '--disable-gpu',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--disable-sync',
-        '--no-first-run',
-      ],
+      args: [...CHROMIUM_FLAGS],
     });
     const page = context.pages()[0] ?? (await context.newPage());
     const problems: string[] = [];

@@ -40,6 +40,16 @@ describe('FrameSchedule', () => {
     expect(schedule.next(32, false, 'a')).toEqual({ view: false, scene: false });
   });
 
+  it('counts a frame drawn out of turn (on a resize) and keeps the frames due as they were', () => {
+    const schedule = new FrameSchedule({ minIntervalMs: 200, idleRedrawMs: 1000 });
+    expect(schedule.next(0, false, 'a').view).toBe(true);
+    schedule.drewOutOfTurn();
+    expect(schedule.framesDrawn).toBe(2);
+    expect(schedule.next(100, true, 'a').view).toBe(false);
+    expect(schedule.next(200, true, 'a').view).toBe(true);
+    expect(schedule.framesDrawn).toBe(3);
+  });
+
   it('draws a still scene once per idle interval', () => {
     const schedule = new FrameSchedule({ minIntervalMs: 200, idleRedrawMs: 1000 });
     const drawn: number[] = [];

@@ -32,6 +32,15 @@ export class FrameSchedule {
     return this.#framesDrawn;
   }
 
+  /**
+   * Notes a frame of the 3D view drawn out of turn, when the canvas was resized (which clears it:
+   * see `Viewport.onResized`). It counts as a frame drawn; the times of the schedule stay as they
+   * are, so the next frame due is drawn when it would have been.
+   */
+  drewOutOfTurn(): void {
+    this.#framesDrawn += 1;
+  }
+
   /** What to draw on the animation frame at `now` (ms), and notes it as drawn. */
   next(now: number, viewMoved: boolean, sceneState: string): FrameDraws {
     if (now - this.#frameAt < this.#minIntervalMs) return { view: false, scene: false };

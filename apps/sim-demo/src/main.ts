@@ -183,6 +183,16 @@ const frames = new FrameSchedule({
   minIntervalMs: renderProfile.minFrameIntervalMs,
   idleRedrawMs: 1000,
 });
+/** Draws the 3D view and moves the robots' labels over it. */
+function drawView(): void {
+  viewport.render(scene.scene);
+  labels.update();
+}
+// A resized canvas is blank until drawn again: draw it at once, not on the next frame due.
+viewport.onResized(() => {
+  frames.drewOutOfTurn();
+  drawView();
+});
 let lastTelemetry = 0;
 function frame(now: number): void {
   scene.update();
@@ -192,10 +202,7 @@ function frame(now: number): void {
   plot.record(robot.x, robot.y);
   const viewMoved = viewport.update();
   const draw = frames.next(now, viewMoved, `${scene.revision} ${recording.revision} ${robot.id}`);
-  if (draw.view) {
-    viewport.render(scene.scene);
-    labels.update();
-  }
+  if (draw.view) drawView();
   if (draw.scene) {
     robotCamera.render(robot.id);
     plot.draw(world, robot.id, goals.goal, goals.plannedPath, (id) => colors.get(id));

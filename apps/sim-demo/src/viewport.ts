@@ -22,6 +22,8 @@ export class Viewport {
   #followed: THREE.Vector3 | undefined;
   /** The camera or the canvas changed since the last frame drawn. */
   #moved = true;
+  /** What {@link onResized} was given, called in order. */
+  readonly #resized: (() => void)[] = [];
 
   constructor(
     container: HTMLElement,
@@ -46,8 +48,22 @@ export class Viewport {
     this.controls = controls;
     controls.addEventListener('change', () => (this.#moved = true));
     this.frameArena();
-    new ResizeObserver(() => this.#resize()).observe(container);
     this.#resize();
+    new ResizeObserver(() => {
+      this.#resize();
+      for (const listener of this.#resized) listener();
+    }).observe(container);
+  }
+
+  /**
+   * Calls `redraw` each time the canvas takes the size of its container, right after, in the same
+   * rendering step. A canvas that takes a new size is cleared, and the browser shows it as it is at
+   * the end of that step: a frame left to the next animation frame leaves the view blank for one
+   * frame, and that frame is the one a headless screenshot captures (Chromium sizes the page to the
+   * window just before it takes the picture). So `redraw` draws the view at once.
+   */
+  onResized(redraw: () => void): void {
+    this.#resized.push(redraw);
   }
 
   /** Looks at the whole arena from its south side. */
