@@ -21,7 +21,7 @@ import { emit, progress } from '../io.js';
 import { cliLogger } from '../logger.js';
 import { addOverwriteOption, checkOutputPlace, openRecordingFile } from '../output-place.js';
 import { poseText } from '../pose-text.js';
-import { addTargetOptions, resolveTarget } from '../target.js';
+import { addTargetOptions, namesTarget, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import type { RegisterCommand } from './context.js';
@@ -32,8 +32,6 @@ interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOpt
   overwrite?: boolean;
   timeout?: number;
 }
-
-const TARGET_FLAGS = ['sim', 'udp', 'serial', 'ws', 'device', 'nats'] as const;
 
 /** Loads the local model, its errors as the CLI reports them. */
 async function loadLocal(
@@ -125,8 +123,11 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     const goal = words.join(' ').trim();
     if (goal === '') throw new CliError('USAGE', 'the goal must not be empty');
     const choice = modelChoice(options, io.env);
-    if (!TARGET_FLAGS.some((flag) => options[flag] !== undefined)) options.sim = true;
-    const target = resolveTarget(options, io.env);
+    // the embedded simulator when no robot is named, as in hal mcp
+    const target = resolveTarget(
+      namesTarget(options) ? options : { ...options, sim: true },
+      io.env,
+    );
     const leash = leashFromOptions(options);
     const logger = cliLogger(io, json);
 
