@@ -17,7 +17,10 @@ export interface ChunkedMcapWriterOptions {
   compressChunk?: ChunkCompressor;
 }
 
-const FOOTER_CRC_BYTES = 4;
+/** A footer's opcode, length, summary start and summary offset start: what its CRC covers. */
+const FOOTER_START_BYTES = 1 + 8 + 8 + 8;
+/** A footer's content: summary start, summary offset start, summary CRC. */
+const FOOTER_CONTENT_BYTES = 8n + 8n + 4n;
 
 /**
  * An MCAP writer that closes a chunk when it is full, as `@mcap/core`'s `McapWriter` does, and
@@ -212,29 +215,30 @@ export class ChunkedMcapWriter {
     );
     const summaryOffsetStart = summaryStart + BigInt(b.length);
     for (const offset of offsets) b.writeSummaryOffset(offset);
-    b.writeFooter({ summaryStart, summaryOffsetStart, summaryCrc: 0 });
     // the summary CRC covers the summary, its offsets and the footer up to the CRC itself
-    const bytes = b.buffer;
-    const crc = crc32(bytes.subarray(0, bytes.byteLength - FOOTER_CRC_BYTES));
-    new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).setUint32(
-      bytes.byteLength - FOOTER_CRC_BYTES,
-      crc,
-      true,
+    const footerStart = new DataView(new ArrayBuffer(FOOTER_START_BYTES));
+    footerStart.setUint8(0, Opcode.FOOTER);
+    footerStart.setBigUint64(1, FOOTER_CONTENT_BYTES, true);
+    footerStart.setBigUint64(9, summaryStart, true);
+    footerStart.setBigUint64(17, summaryOffsetStart, true);
+    const summaryCrc = crc32Final(
+      crc32Update(crc32Update(crc32Init(), b.buffer), new Uint8Array(footerStart.buffer)),
     );
+    b.writeFooter({ summaryStart, summaryOffsetStart, summaryCrc });
     b.writeMagic();
     await this.#flush();
   }
 
   /** Writes what the record builder holds, counted into the data section's CRC. */
   async #flushData(): Promise<void> {
-    this.#dataCrc = crc32Update(this.#dataCrc, this.#records.buffer);
-    await this.#flush();
+    await this.#flush(true);
   }
 
-  async #flush(): Promise<void> {
-    const bytes = this.#records.buffer;
-    if (bytes.byteLength === 0) return;
-    await this.#writable.write(bytes);
+  async #flush(dataSection = false): Promise<void> {
+    if (this.#records.length === 0) return;
+    const bytes = this.#records.buffer; // a copy
+    if (dataSection) this.#dataCrc = crc32Update(this.#dataCrc, bytes);
     this.#records.reset();
+    await this.#writable.write(bytes);
   }
 }
