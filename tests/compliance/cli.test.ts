@@ -175,7 +175,7 @@ describe('hal test hal', () => {
     );
     expect(code).toBe(2);
     expect(io.stderr()).toContain(
-      'a check group is one of format, timing, errors, capability, state, got "speed"',
+      'hal: USAGE: "--group" is one of format, timing, errors, capability, state, got "speed"',
     );
     expect(broken.requests).toBe(before);
   });
