@@ -40,8 +40,21 @@ function output(io: CliIO) {
     writeOut: (s: string) => io.out(s),
     writeErr: (s: string) => io.err(s),
     outputError: (s: string, write: (s: string) => void) =>
-      write(s.replace(/^error: /, 'hal: USAGE: ')),
+      write(withNegativeHint(s).replace(/^error: /, 'hal: USAGE: ')),
   };
+}
+
+/**
+ * Commander reads `-5cm` (a negative value with its unit, where `-5` alone is taken as a number)
+ * as an unknown option: says how to give it.
+ */
+function withNegativeHint(message: string): string {
+  const value = /unknown option '(-[\d.][^']*)'/.exec(message)?.[1];
+  if (value === undefined) return message;
+  return message.replace(
+    `unknown option '${value}'`,
+    `unknown option '${value}' (a negative value with a unit goes after --: ... -- ${value})`,
+  );
 }
 
 /** The JSON shape of an error with --json. */
@@ -125,7 +138,7 @@ export async function runProgram(
       // help and --version end here too, with exit code 0; usage errors were already written
       if (error.exitCode === 0) return 0;
       if (json) {
-        const message = error.message.replace(/^error: /, '');
+        const message = withNegativeHint(error.message).replace(/^error: /, '');
         io.err(`${JSON.stringify({ error: { code: 'USAGE', message } })}\n`);
       }
       return 2;

@@ -61,6 +61,15 @@ describe('hal drive on the embedded simulator', () => {
     const cm = captureIO();
     expect(await runHal(['drive', 'forward', '2cm', ...fast], cm)).toBe(0);
     expect(cm.stdout()).toMatch(/^forward 0\.02 m: ok/);
+    // a negative one goes after -- (commander takes -2cm for an option), and says so if not
+    const back = captureIO();
+    expect(await runHal(['drive', 'forward', ...fast, '--', '-2cm'], back)).toBe(0);
+    expect(back.stdout()).toMatch(/^forward -0\.02 m: ok/);
+    const hint = captureIO();
+    expect(await runHal(['drive', 'forward', '-2cm', ...fast], hint)).toBe(2);
+    expect(hint.stderr()).toContain(
+      "hal: USAGE: unknown option '-2cm' (a negative value with a unit goes after --: ... -- -2cm)",
+    );
   });
 
   it.each([
