@@ -97,7 +97,10 @@ async function check(place: OutputPlace): Promise<string> {
     });
   }
   // a pseudo filesystem first: root may "write" there, and a recursive mkdir there never returns
-  const kindOfFs = PSEUDO_FILESYSTEMS.get(Number((await statfs(folder)).type));
+  const fsType = await statfs(folder).catch((error: unknown) => {
+    throw refuse(`its filesystem cannot be read (${errnoOf(error)})`);
+  });
+  const kindOfFs = PSEUDO_FILESYSTEMS.get(Number(fsType.type));
   if (kindOfFs !== undefined) throw refuse(`is on ${kindOfFs}, where nothing can be written`);
   await access(folder, constants.W_OK).catch((error: unknown) => {
     throw refuse(`cannot write in ${folder === full ? 'it' : folder} (${errnoOf(error)})`);
