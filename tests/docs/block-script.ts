@@ -4,7 +4,9 @@
 // line, and stopped with Ctrl-C when the block ends. So is anything the block itself put in the
 // background (`cube-emulator ... &`). Only one thing is rewritten: when CUBE_BUILD_DIR names the
 // firmware's host build, `firmware/build/cube-emulator` becomes that build's emulator, as the
-// tests' own emulator helper (tests/physical/emulator.ts) does.
+// tests' own emulator helper (tests/physical/emulator.ts) does. One thing is added: a block that
+// names nats://127.0.0.1:4222 and starts no nats-server itself (the docs say to start one, as the
+// README does) gets one there, started first and stopped with the rest.
 import { commandLines } from './shell-blocks.js';
 import type { ShellBlock } from './shell-blocks.js';
 import { longRunning } from './long-running.js';
@@ -73,12 +75,34 @@ function quote(text: string): string {
   return `'${text.replaceAll("'", String.raw`'\''`)}'`;
 }
 
-/** The script for `block`; `buildDir` is CUBE_BUILD_DIR when it is set. */
+/** The NATS server the docs' commands name. */
+export const DOCS_NATS_URL = 'nats://127.0.0.1:4222';
+
+export interface BlockScriptOptions {
+  /** CUBE_BUILD_DIR, when it is set. */
+  buildDir?: string;
+  /** The nats-server executable, for a block that needs the docs' NATS server. */
+  natsServer?: string;
+}
+
+/** The script for `block`. */
 export function blockScript(
   block: Pick<ShellBlock, 'language' | 'text'>,
-  buildDir?: string,
+  options: BlockScriptOptions = {},
 ): string {
-  const body = commandLines(block).map((line) => {
+  const { buildDir, natsServer } = options;
+  const lines = commandLines(block);
+  const services: string[] = [];
+  if (
+    block.text.includes(DOCS_NATS_URL) &&
+    !lines.some((line) => /^(?:\S*\/)?nats-server\b/.test(line.trim()))
+  ) {
+    if (natsServer === undefined)
+      throw new Error(`the block names ${DOCS_NATS_URL}: give natsServer`);
+    const command = `${quote(natsServer)} -a 127.0.0.1 -p 4222`;
+    services.push(`__doc_start 'nats-server' 'Server is ready' 0 ${quote(command)}`);
+  }
+  const body = lines.map((line) => {
     const command =
       buildDir === undefined
         ? line
@@ -87,7 +111,7 @@ export function blockScript(
     if (entry === undefined) return command;
     return `__doc_start ${quote(entry.name)} ${quote(entry.ready)} ${entry.tty === true ? 1 : 0} ${quote(command)}`;
   });
-  return `${PRELUDE}\n${body.join('\n')}\n`;
+  return `${PRELUDE}\n${[...services, ...body].join('\n')}\n`;
 }
 
 /**

@@ -13,18 +13,29 @@
 // must exist). Long-running commands (`pnpm start`, `hal serve`, `hal teleop`, `hal mcp`, ...; see
 // long-running.ts) are started, checked for their ready line and stopped with Ctrl-C at the end of
 // their block. `hal` is on PATH as docs/cli.md sets it up from a checkout (scripts/hal.js). A
-// block that names nats://127.0.0.1:4222 gets a nats-server there, started by this test; a block
+// block that names nats://127.0.0.1:4222 gets a nats-server there, started with it; a block
 // that runs firmware/build/cube-emulator gets $CUBE_BUILD_DIR/cube-emulator when that is set.
-// Blocks run a few at a time, never two at once that name the same port.
+//
+// The blocks name default ports (4222, 8765, 4210, 3333), which a machine running the README's
+// services has taken. Each block runs in a network of its own (block-network.ts), where they are
+// free: the test holds them on the machine's 127.0.0.1 all the while, as those services would, so
+// a block that reached the machine's network would fail here. Blocks run a few at a time. (Where
+// the machine gives no network namespace, they run on its network, never two at once that name
+// the same port, and those ports must be free.)
 import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
+import { natsServerPath } from '../nats/nats-server.js';
 import { requireEmulator } from '../physical/emulator.js';
-import { blockPorts, blockScript } from './block-script.js';
+import { blockNetwork } from './block-network.js';
+import type { BlockNetwork } from './block-network.js';
+import { blockPorts, blockScript, DOCS_NATS_URL } from './block-script.js';
+import type { BlockScriptOptions } from './block-script.js';
+import { holdPorts, takenPorts } from './held-ports.js';
+import type { HeldPorts } from './held-ports.js';
 import { shellBlocks } from './shell-blocks.js';
 import type { ShellBlock } from './shell-blocks.js';
 
@@ -45,7 +56,6 @@ const notRun = blocks.filter((b) => b.notRun !== undefined);
 /** Seconds one block may run (long-running commands included) before it is stopped. */
 const BLOCK_TIMEOUT_S = 180;
 const PARALLEL = 3;
-const NATS_URL = 'nats://127.0.0.1:4222';
 
 const where = (b: ShellBlock): string => `${b.file}:${b.line}`;
 
@@ -84,15 +94,18 @@ interface Outcome {
 }
 
 let binDir = '';
-function runBlock(block: ShellBlock): Promise<Outcome> {
+let network: BlockNetwork | undefined;
+let held: HeldPorts | undefined;
+const scriptOptions: BlockScriptOptions = { buildDir: process.env['CUBE_BUILD_DIR'] };
+function runBlock(block: ShellBlock, where: BlockNetwork): Promise<Outcome> {
   const env: NodeJS.ProcessEnv = { ...process.env, PATH: `${binDir}:${process.env['PATH'] ?? ''}` };
   for (const name of Object.keys(env)) {
     if (/^(HAL_|OPENAI_)/.test(name)) delete env[name]; // the block says what it needs
   }
   env['NO_COLOR'] = '1';
-  const script = blockScript(block, process.env['CUBE_BUILD_DIR']);
+  const { file, args } = where.command(blockScript(block, scriptOptions));
   return new Promise((resolve) => {
-    const child = spawn('bash', ['-c', script], { cwd: root, env, detached: true });
+    const child = spawn(file, args, { cwd: root, env, detached: true });
     let output = '';
     child.stdout.on('data', (chunk: Buffer) => (output += chunk.toString()));
     child.stderr.on('data', (chunk: Buffer) => (output += chunk.toString()));
@@ -120,13 +133,19 @@ beforeAll(async () => {
     timeout: 120_000,
   });
   if (warm.status !== 0) throw new Error(`scripts/hal.js --version failed: ${warm.stderr}`);
-  if (runnable.some((b) => b.text.includes(NATS_URL))) await startNatsServer({ port: 4222 });
+  if (runnable.some((b) => b.text.includes(DOCS_NATS_URL))) {
+    scriptOptions.natsServer = natsServerPath();
+  }
+  network = blockNetwork();
+  // The ports the blocks name, taken on the machine as its own services would take them.
+  if (network.own)
+    held = await holdPorts([...new Set(runnable.flatMap(blockPorts))].sort((a, b) => a - b));
   // a clear message, naming the build command, rather than a block failing on a missing file
   if (runnable.some((b) => b.text.includes('firmware/build/cube-emulator'))) requireEmulator();
 }, 150_000);
 
 afterAll(async () => {
-  await stopAllNatsServers();
+  await held?.release();
   if (binDir !== '') rmSync(binDir, { recursive: true, force: true });
 });
 
@@ -134,6 +153,21 @@ describe('the shell blocks of README.md and docs/*.md', () => {
   it('are found (the scan sees fences at all)', () => {
     expect(blocks.length).toBeGreaterThan(10);
     expect(runnable.length).toBeGreaterThan(5);
+  });
+
+  it('have the ports they name to themselves, whatever the machine runs', async () => {
+    const ports = [...new Set(runnable.flatMap(blockPorts))].sort((a, b) => a - b);
+    expect(ports).toEqual(expect.arrayContaining([4222, 8765]));
+    const taken = await takenPorts(ports);
+    if (network?.own === true) {
+      // each block has its own loopback, while the machine's has every one of them taken
+      expect(taken).toEqual(ports);
+    } else {
+      expect(
+        taken,
+        `ports taken on this machine, which gives a block no network of its own (${network?.reason ?? ''})`,
+      ).toEqual([]);
+    }
   });
 
   it('have every "not run" marker on the line right before a shell fence, with a reason', () => {
@@ -159,13 +193,18 @@ describe('the shell blocks of README.md and docs/*.md', () => {
     it.concurrent.each(runnable)(
       '$file:$line',
       async (block) => {
-        const unlockPorts = await lockPorts(blockPorts(block));
+        if (network === undefined) throw new Error('beforeAll did not finish');
+        // In a network of its own a block shares no port with the others.
+        const unlockPorts = network.own ? () => undefined : await lockPorts(blockPorts(block));
         const release = await slot();
         try {
-          const { code, output } = await runBlock(block);
+          const { code, output } = await runBlock(block, network);
+          const onMachine = network.own
+            ? ''
+            : `\n(run on this machine's network, which gives no namespace: ${network.reason ?? ''}; the ports it names must be free)`;
           expect(
             code,
-            `${where(block)} failed:\n${block.text}\n--- output ---\n${output.slice(-6000)}`,
+            `${where(block)} failed:\n${block.text}\n--- output ---\n${output.slice(-6000)}${onMachine}`,
           ).toBe(0);
         } finally {
           release();

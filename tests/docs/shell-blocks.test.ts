@@ -138,8 +138,32 @@ describe('blockScript', () => {
   it('points firmware/build/cube-emulator at CUBE_BUILD_DIR when that is set', () => {
     const script = blockScript(
       { language: 'sh', text: 'ls -l firmware/build/cube-emulator' },
-      '/b',
+      { buildDir: '/b' },
     );
     expect(script).toContain("ls -l '/b'/cube-emulator");
+  });
+
+  it("starts a nats-server on 4222 first for a block that names the docs' NATS URL and starts none", () => {
+    const needs = blockScript(
+      { language: 'sh', text: 'hal status --device sim-1 --nats nats://127.0.0.1:4222' },
+      { natsServer: '/usr/sbin/nats-server' },
+    );
+    const lines = needs.split('\n');
+    const start = lines.findIndex(
+      (l) => l.includes('/usr/sbin/nats-server') && l.includes(' -a 127.0.0.1 -p 4222'),
+    );
+    const status = lines.findIndex((l) => l.startsWith('hal status'));
+    expect(start).toBeGreaterThan(0);
+    expect(lines[start]).toMatch(/^__doc_start 'nats-server' 'Server is ready' 0 /);
+    expect(status).toBeGreaterThan(start);
+    const own = blockScript(
+      {
+        language: 'sh',
+        text: 'nats-server -a 127.0.0.1 &\nhal status --nats nats://127.0.0.1:4222',
+      },
+      { natsServer: '/usr/sbin/nats-server' },
+    );
+    expect(own).not.toContain('/usr/sbin/nats-server');
+    expect(blockScript({ language: 'sh', text: 'hal status --sim' })).not.toContain('nats-server');
   });
 });
