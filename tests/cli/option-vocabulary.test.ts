@@ -32,7 +32,7 @@ describe('usage errors exit 2 in every command, naming the option', () => {
   it.each([
     [['mcp', '--http', '--port', '99999'], '"--port" must be an integer in 0..65535, got "99999"'],
     [
-      ['agent', '--sim', '--base-url', 'notaurl', 'drive'],
+      ['agent', '--sim', '--base-url', 'notaurl', '--model', 'm', 'drive'],
       '"--base-url" must be a http:// or https:// URL, got "notaurl"',
     ],
     [['emulate', '--key', 'abc'], '"--key" must be 1..64 bytes written as hex'],
