@@ -1,4 +1,4 @@
-// The real thing: SmolLM2-135M (from `bash scripts/setup.sh`) on the CPU, driving SimulationHAL.
+// The real thing: SmolLM2-135M (from `hal model pull`) on the CPU, driving SimulationHAL.
 // Loaded once for the file, on one thread (other test files share the cores); each run is a few
 // dozen tokens. Nothing here asserts that the small model chose well: only what the code
 // guarantees.
@@ -22,7 +22,7 @@ let provider: LocalChatProvider;
 let hal: SimulationHAL;
 
 beforeAll(async () => {
-  // a missing model fails here, with the message that names bash scripts/setup.sh
+  // a missing model fails here, with the message that names hal model pull
   provider = await createLocalChatProvider({
     threads: 1,
     gpu: false,

@@ -15,7 +15,7 @@ import { defaultThreads } from './threads.js';
 
 /** Options of {@link createLocalChatProvider}. */
 export interface LocalChatProviderOptions {
-  /** A GGUF model file. Default the SmolLM2-135M file `bash scripts/setup.sh` caches. */
+  /** A GGUF model file. Default the SmolLM2-135M file `hal model pull` caches. */
   modelFile?: string;
   /** 'auto' (default): a GPU when llama.cpp finds one and its build is installed, else the CPU. */
   gpu?: 'auto' | false;

@@ -1,4 +1,4 @@
-// `hal agent` in-process with the real local model (SmolLM2-135M from bash scripts/setup.sh) on
+// `hal agent` in-process with the real local model (SmolLM2-135M from hal model pull) on
 // the embedded simulator: one short generation per run, on one thread (other test files share
 // the cores).
 import { describe, expect, it } from 'vitest';

@@ -66,7 +66,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     .addOption(
       new Option(
         '--model-file <path>',
-        'a GGUF model to run in this process (default: SmolLM2-135M from bash scripts/setup.sh)',
+        'a GGUF model to run in this process (default: SmolLM2-135M, fetched by hal model pull)',
       ),
     )
     .addOption(

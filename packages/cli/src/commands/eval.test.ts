@@ -1,5 +1,5 @@
 // `hal eval` in-process: the scripted agents on the built-in tasks, the reports, the refusals,
-// and the real local model (SmolLM2-135M from bash scripts/setup.sh) on one task end to end.
+// and the real local model (SmolLM2-135M from hal model pull) on one task end to end.
 import { mkdir, mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';

@@ -195,7 +195,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       .addOption(
         new Option(
           '--model-file <path>',
-          'the GGUF file of the local agent (default: SmolLM2-135M from bash scripts/setup.sh)',
+          'the GGUF file of the local agent (default: SmolLM2-135M, fetched by hal model pull)',
         ),
       )
       .addOption(
