@@ -1,14 +1,17 @@
 // `hal emulate`: runs the emulated robot (cube-emulator, the firmware core on this computer),
 // prints where it listens, announces it with mDNS as the board announces itself (the TXT entries
-// come from the emulator, built by the firmware core), and stops it cleanly on Ctrl-C.
+// come from the emulator, built by the firmware core), and stops it cleanly on Ctrl-C. Where no
+// cube-emulator can be had (an installed `hal`, without the firmware sources), it serves the mock
+// robot of @hal/physical/testing instead, and says so.
 import { announceRobot, findRobot } from '@hal/discovery';
 import type { Announcer, MdnsOptions } from '@hal/discovery';
 import { CliError } from '../cli-error.js';
 import { addEmulateOptions, emulatorArgs } from '../emulate/emulate-options.js';
 import type { EmulateCliOptions } from '../emulate/emulate-options.js';
 import { startEmulatorProcess } from '../emulate/emulator-process.js';
-import type { ReadyLine } from '../emulate/emulator-process.js';
-import { locateEmulator } from '../emulate/locate-emulator.js';
+import type { EmulatorProcess, ReadyLine } from '../emulate/emulator-process.js';
+import { findFirmwareDir, locateEmulator } from '../emulate/locate-emulator.js';
+import { MOCK_NOTICE, startMockEmulator } from '../emulate/mock-emulator.js';
 import { emit, progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import type { RegisterCommand } from './context.js';
@@ -27,12 +30,21 @@ async function announce(ready: ReadyLine, mdns: MdnsOptions): Promise<Announcer>
   return announceRobot({ port: ready.mdns.port, txt: ready.mdns.txt, mdns });
 }
 
-function describeReady(ready: ReadyLine, o: EmulateCliOptions, announced: boolean): string {
+/** Which robot runs: the firmware's cube-emulator, or the mock where there is none. */
+type EmulatorKind = 'cube-emulator' | 'mock';
+
+function describeReady(
+  ready: ReadyLine,
+  o: EmulateCliOptions,
+  announced: boolean,
+  kind: EmulatorKind,
+): string {
   const lines = [
-    `cube-emulator "${ready.device_id}" listening on udp ${o.bind}:${ready.udp_port}` +
+    `${kind === 'mock' ? 'mock robot' : 'cube-emulator'} "${ready.device_id}" listening on udp ${o.bind}:${ready.udp_port}` +
       (ready.pty === '' ? '' : `, serial ${ready.pty}`) +
       ` (auth ${ready.auth}, protocol ${ready.protocol_version})`,
   ];
+  if (kind === 'mock') lines.push(MOCK_NOTICE);
   if (announced) {
     lines.push(
       `announced as ${ready.mdns?.service ?? '_hal-cube._udp'} (see it with: hal discover)`,
@@ -44,16 +56,35 @@ function describeReady(ready: ReadyLine, o: EmulateCliOptions, announced: boolea
   return lines.join('\n');
 }
 
-async function runEmulate(o: EmulateCliOptions, io: CliIO, g: GlobalOptions): Promise<void> {
+/** Whether a cube-emulator can be had: named, or built from the checkout's firmware. */
+function emulatorAvailable(o: EmulateCliOptions, io: CliIO): boolean {
+  const fromEnv = io.env['CUBE_EMULATOR'];
+  return (
+    o.emulator !== undefined ||
+    (fromEnv !== undefined && fromEnv !== '') ||
+    findFirmwareDir() !== undefined
+  );
+}
+
+async function startEmulator(
+  o: EmulateCliOptions,
+  io: CliIO,
+  g: GlobalOptions,
+): Promise<EmulatorProcess> {
   const path = await locateEmulator({
     ...(o.emulator === undefined ? {} : { explicit: o.emulator }),
     env: io.env,
     signal: io.signal,
     onBuild: (dir) => progress(io, g, `building cube-emulator in ${dir} (if needed)...`),
   });
-  const emulator = await startEmulatorProcess(path, emulatorArgs(o), (event) =>
+  return startEmulatorProcess(path, emulatorArgs(o), (event) =>
     emit(io, g, event, () => `emulator: ${JSON.stringify(event)}`),
   );
+}
+
+async function runEmulate(o: EmulateCliOptions, io: CliIO, g: GlobalOptions): Promise<void> {
+  const kind: EmulatorKind = emulatorAvailable(o, io) ? 'cube-emulator' : 'mock';
+  const emulator = kind === 'mock' ? await startMockEmulator(o) : await startEmulator(o, io, g);
   let announcer: Announcer | undefined;
   try {
     const mdns: MdnsOptions = o.interface === undefined ? {} : { interface: o.interface };
@@ -63,6 +94,7 @@ async function runEmulate(o: EmulateCliOptions, io: CliIO, g: GlobalOptions): Pr
       g,
       {
         event: 'ready',
+        emulator: kind,
         deviceId: emulator.ready.device_id,
         address: o.bind,
         udpPort: emulator.ready.udp_port,
@@ -72,7 +104,7 @@ async function runEmulate(o: EmulateCliOptions, io: CliIO, g: GlobalOptions): Pr
         announced: announcer !== undefined,
         ...(announcer && emulator.ready.mdns ? { service: emulator.ready.mdns.service } : {}),
       },
-      () => describeReady(emulator.ready, o, announcer !== undefined),
+      () => describeReady(emulator.ready, o, announcer !== undefined, kind),
     );
     const stopped = new Promise<void>((resolve) => {
       if (io.signal.aborted) resolve();
@@ -97,6 +129,8 @@ export const registerEmulate: RegisterCommand = (program, { io, global }) => {
   addEmulateOptions(
     program
       .command('emulate')
-      .description('run the emulated robot (cube-emulator) and announce it on the local network'),
+      .description(
+        'run the emulated robot (cube-emulator, else the mock robot) and announce it on the local network',
+      ),
   ).action((options: EmulateCliOptions) => runEmulate(options, io, global()));
 };
