@@ -80,9 +80,9 @@ export const DOCS_NATS_URL = 'nats://127.0.0.1:4222';
 
 export interface BlockScriptOptions {
   /** CUBE_BUILD_DIR, when it is set. */
-  buildDir?: string;
+  buildDir?: string | undefined;
   /** The nats-server executable, for a block that needs the docs' NATS server. */
-  natsServer?: string;
+  natsServer?: string | undefined;
 }
 
 /** The script for `block`. */
