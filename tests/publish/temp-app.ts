@@ -1,7 +1,7 @@
 // A temporary app outside the workspace, as a user would make one: its own package.json, the
 // packed tarballs and their third-party dependencies installed by npm.
 import { execFile } from 'node:child_process';
-import { copyFileSync, writeFileSync } from 'node:fs';
+import { copyFileSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
 import type { Manifest, PackedPackage } from './workspace-packages.js';
@@ -37,16 +37,19 @@ export async function packedFiles(tarball: string): Promise<string[]> {
 }
 
 /**
- * Installs the tarballs into `appDir`. Each @hal package is also an override, so that a package
- * depending on another (`"@hal/types": "0.1.0"` after packing) gets the local tarball, never a
- * registry lookup. `extra` are further dependencies a user's app adds (three for the scene).
- * Install scripts are skipped: serialport's bindings load the prebuilt binary their package
- * ships (the installed `hal` opens the emulator's pty with it), and build nothing.
+ * Installs the tarballs into `appDir`. Each @hal package is also an override (unless `overrides`
+ * is false), so that a package depending on another (`"@hal/types": "0.1.0"` after packing) gets
+ * the local tarball, never a registry lookup; without overrides the app is installed as the docs
+ * tell a user to: the tarballs given together, each @hal dependency found among them. `extra` are
+ * further dependencies a user's app adds (three for the scene). Install scripts are skipped:
+ * serialport's bindings load the prebuilt binary their package ships (the installed `hal` opens
+ * the emulator's pty with it), and build nothing.
  */
 export async function installApp(
   appDir: string,
   packed: readonly PackedPackage[],
   extra: Record<string, string>,
+  { overrides = true }: { overrides?: boolean } = {},
 ): Promise<void> {
   const local = Object.fromEntries(packed.map((p) => [p.name, `file:${p.filename}`]));
   const manifest = {
@@ -54,7 +57,7 @@ export async function installApp(
     private: true,
     type: 'module',
     dependencies: { ...local, ...extra },
-    overrides: local,
+    ...(overrides ? { overrides: local } : {}),
   };
   writeFileSync(join(appDir, 'package.json'), `${JSON.stringify(manifest, null, 2)}\n`);
   await run(
@@ -108,10 +111,20 @@ export async function runAppCommand(
   appDir: string,
   name: string,
   args: readonly string[],
+  timeoutMs = 60_000,
 ): Promise<{ stdout: string; stderr: string }> {
   return run(join(appDir, 'node_modules', '.bin', name), [...args], {
     cwd: appDir,
     env: cleanEnv(),
-    timeout: 60_000,
+    timeout: timeoutMs,
   });
+}
+
+/**
+ * The version of `name` the workspace has installed (from `from`'s node_modules), as a caret
+ * range: what a user's app adds beside the packages (typescript, vitest, three's types).
+ */
+export function workspaceVersion(repoRoot: string, name: string, from = '.'): string {
+  const manifest = join(repoRoot, from, 'node_modules', name, 'package.json');
+  return `^${(JSON.parse(readFileSync(manifest, 'utf8')) as { version: string }).version}`;
 }
