@@ -1,7 +1,7 @@
 // `hal serve --allow-origin <origin>`: a web page's origin the WebSocket door trusts beyond this
 // machine's own (repeatable). The origin is checked as serveHal checks its allowedOrigins.
-import { InvalidArgumentError } from 'commander';
 import { isHalError, trustedOrigin } from '@hal/types';
+import { usageError } from '../values.js';
 
 /** Adds one `--allow-origin` value, normalised, to the ones given before it. */
 export function allowOriginArg(value: string, previous: string[] | undefined): string[] {
@@ -9,7 +9,7 @@ export function allowOriginArg(value: string, previous: string[] | undefined): s
     return [...(previous ?? []), trustedOrigin(value)];
   } catch (error) {
     if (!isHalError(error)) throw error;
-    throw new InvalidArgumentError(
+    throw usageError(
       `"--allow-origin" must be an origin as a browser sends it, http(s)://HOST[:PORT], got "${value}"`,
     );
   }
