@@ -66,11 +66,13 @@ describe('startMockEmulator', () => {
     });
   });
 
-  it('names the port in use', async () => {
+  it('names the port in use and the option that changes it', async () => {
     const first = await startMockEmulator(options());
     started.push(first);
-    await expect(
-      startMockEmulator(options({ udpPort: first.ready.udp_port })),
-    ).rejects.toMatchObject({ code: 'FAILED', message: expect.stringContaining('EADDRINUSE') });
+    const port = first.ready.udp_port;
+    await expect(startMockEmulator(options({ udpPort: port }))).rejects.toMatchObject({
+      code: 'FAILED',
+      message: `port ${port} is in use (EADDRINUSE); choose another with --udp-port`,
+    });
   });
 });

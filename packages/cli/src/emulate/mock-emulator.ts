@@ -5,6 +5,7 @@ import { MessageCodec, createAuthenticator } from '@hal/physical/protocol';
 import { MockUdpRobot } from '@hal/physical/testing';
 import { isHalError } from '@hal/types';
 import { CliError } from '../cli-error.js';
+import { listenError } from '../listen-error.js';
 import type { EmulateCliOptions } from './emulate-options.js';
 import type { EmulatorProcess, ReadyLine } from './emulator-process.js';
 
@@ -69,8 +70,13 @@ export async function startMockEmulator(o: EmulateCliOptions): Promise<EmulatorP
       ...(o.hostTimeoutMs === undefined ? {} : { hostTimeoutMs: o.hostTimeoutMs }),
     });
   } catch (error) {
-    if (isHalError(error)) throw new CliError('FAILED', `${error.code}: ${error.message}`);
-    throw error;
+    if (!isHalError(error)) throw error;
+    // a port in use names the option that changes it, as every listening command does
+    const place = { host: o.bind, port: o.udpPort, portOption: '--udp-port', hostOption: '--bind' };
+    const named = listenError(error.cause, place);
+    throw named instanceof CliError
+      ? named
+      : new CliError('FAILED', `${error.code}: ${error.message}`);
   }
   try {
     return {
