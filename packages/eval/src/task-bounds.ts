@@ -54,7 +54,8 @@ function overlaps(o: TaskObject, x: number, y: number): boolean {
 
 /**
  * The first thing of `task` placed where it cannot be: the start or an object outside the
- * arena (jitter included), or a start that overlaps an object, a wall or an obstacle.
+ * arena (jitter included), a point to reach outside it, or a start that overlaps an object, a
+ * wall or an obstacle.
  */
 export function placementProblem(task: Task): PlacementProblem | undefined {
   const map = mapOf(task);
@@ -79,6 +80,18 @@ export function placementProblem(task: Task): PlacementProblem | undefined {
         why:
           `puts "${o.name}" outside ${arena}: its centre must be within ±${m(out.limit)} ` +
           `(the arena is centred on the origin; its size and the object jitter ${m(objectsM)} included), got ${m(o[out.axis])}`,
+      };
+    }
+  }
+  for (const [i, check] of task.checks.entries()) {
+    if (check.kind !== 'reach-point') continue;
+    const out = outside(map, check.x, check.y, robot, 0);
+    if (out !== undefined) {
+      return {
+        field: `checks.${i}.${out.axis}`,
+        why:
+          `is a point the robot cannot reach inside ${arena}: its centre stays within ±${m(out.limit)} ` +
+          `(its radius ${m(ROBOT_RADIUS_M)} included), got ${m(check[out.axis])}`,
       };
     }
   }

@@ -144,6 +144,13 @@ describe('parseTaskFile: choices and places', () => {
     expect(error.message).toContain('outside the 2 x 2 m arena');
   });
 
+  it('refuses a point to reach outside the arena', () => {
+    const task = { ...goodTask, checks: [{ kind: 'reach-point', x: 0.5, y: -7, toleranceM: 0.1 }] };
+    const error = refusal(file([task]));
+    expect(error.field).toBe('tasks.0.checks.0.y');
+    expect(error.message).toContain('cannot reach inside the 5 x 5 m arena');
+  });
+
   it("refuses a start inside an object or one of the map's obstacles", () => {
     const onBox = { ...goodTask, world: { ...goodTask.world, start: { x: 1, y: 0.1 } } };
     const error = refusal(file([onBox]));
