@@ -167,8 +167,7 @@ describe('hal on a NATS device that no one serves', () => {
   });
   afterAll(() => stopAllNatsServers());
 
-  it('claims only the time it waited: the whole --connect-timeout', async () => {
-    const started = Date.now();
+  it('says no one serves the device, at once, with no timeout it did not wait for', async () => {
     const { code, errors } = await halJson([
       'status',
       '--nats',
@@ -176,19 +175,18 @@ describe('hal on a NATS device that no one serves', () => {
       '--device',
       'nobody',
       '--connect-timeout',
-      '1000',
+      '5000',
     ]);
-    const waited = Date.now() - started;
     expect(code).toBe(1);
     expect(errors).toEqual([
       {
         error: expect.objectContaining({
           code: 'NOT_CONNECTED',
-          message: `no answer from the device nobody on NATS ${server.url} within 1000 ms`,
+          message:
+            'device "nobody" is offline: it has not answered on "hal.v1.dev.nobody.system.capability.req": no one serves it',
         }),
       },
     ]);
-    expect(waited).toBeGreaterThanOrEqual(1000);
   });
 });
 

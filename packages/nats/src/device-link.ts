@@ -62,9 +62,8 @@ function replyOrError(reply: z.ZodType): z.ZodType {
 export class DeviceLink {
   /** The `device_id` of the last reply: who answered (the served id of the default device). */
   sender: string | undefined;
-  /** When the device last said anything; until it has, when this link began asking. */
-  #lastSeen = Date.now();
-  #heard = false;
+  /** When the device last said anything (0: never, so it counts as offline until it does). */
+  #lastSeen = 0;
   #connected = true;
   readonly #subs: Subscription[] = [];
   readonly #status: AsyncIterator<Status>;
@@ -91,7 +90,6 @@ export class DeviceLink {
 
   seen(): void {
     this.#lastSeen = Date.now();
-    this.#heard = true;
   }
 
   /** True when the device has said nothing for `offlineAfterMs` while our NATS link is up. */
@@ -163,17 +161,16 @@ export class DeviceLink {
           throw new HalError('NOT_CONNECTED', 'the NATS connection is closed', { cause: error });
         }
         if (this.offline()) {
-          // the time said is the time waited: a device never heard from has had as long as
-          // this link has been asking, one that went quiet as long as since its last word
-          const silentMs = Date.now() - this.#lastSeen;
+          // a device never heard from has not been waited for: say what was seen, claim no time
           const noOne = inChain(error, errors.NoRespondersError);
-          const reason = this.#heard
-            ? `nothing from it for ${silentMs} ms`
-            : `it never answered in ${silentMs} ms (${noOne ? 'no one serves' : 'no reply on'} "${subject}")`;
+          const reason =
+            this.#lastSeen === 0
+              ? `it has not answered on "${subject}"${noOne ? ': no one serves it' : ''}`
+              : `nothing from it for ${Date.now() - this.#lastSeen} ms`;
           throw deviceOfflineError(
             this.options.deviceId ?? DEFAULT_DEVICE_LABEL,
             reason,
-            { subject, silentMs },
+            { subject },
             error,
           );
         }
