@@ -115,8 +115,21 @@ function linkDependencies(inputs) {
   }
 }
 
+/** esbuild, or exit 1 saying how to install it: a clone before `pnpm install` has no node_modules. */
+async function loadEsbuild() {
+  try {
+    return await import('esbuild');
+  } catch (error) {
+    if (error?.code !== 'ERR_MODULE_NOT_FOUND') throw error;
+    process.stderr.write(
+      'hal: FAILED: this checkout has no node_modules (esbuild is missing): run `bash scripts/setup.sh` (or `pnpm install`) first\n',
+    );
+    process.exit(1);
+  }
+}
+
 async function build() {
-  const esbuild = await import('esbuild');
+  const esbuild = await loadEsbuild();
   const nativeOutside = {
     name: 'native-outside',
     setup(b) {

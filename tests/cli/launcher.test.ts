@@ -86,6 +86,25 @@ describe('the checkout launcher (scripts/hal.js)', () => {
     }
   });
 
+  it('says to install first in a clone with no node_modules, in one line, instead of a stack trace', () => {
+    const clone = mkdtempSync(join(tmpdir(), 'hal-bare-clone-'));
+    try {
+      mkdirSync(join(clone, 'scripts'));
+      copyFileSync(`${root}scripts/hal.js`, join(clone, 'scripts', 'hal.js'));
+      const run = spawnSync(process.execPath, [join(clone, 'scripts', 'hal.js'), '--version'], {
+        encoding: 'utf8',
+        timeout: 60_000,
+      });
+      expect(run.status).toBe(1);
+      expect(run.stderr).toBe(
+        'hal: bundling packages/cli (the first build: there is no bundle yet)\n' +
+          'hal: FAILED: this checkout has no node_modules (esbuild is missing): run `bash scripts/setup.sh` (or `pnpm install`) first\n',
+      );
+    } finally {
+      rmSync(clone, { recursive: true, force: true });
+    }
+  });
+
   it('reuses a fresh bundle and rebuilds it once a source is newer', () => {
     expect(hal('--version').status).toBe(0);
     const before = statSync(bundle).mtimeMs;
