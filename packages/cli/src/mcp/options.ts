@@ -4,6 +4,7 @@
 import { Option } from 'commander';
 import type { Command } from 'commander';
 import type { Leash } from '@hal/tools';
+import { isLoopback } from '@hal/types';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
 import { addOverwriteOption } from '../output-place.js';
@@ -71,11 +72,6 @@ export function addMcpOptions(command: Command): Command {
   addOverwriteOption(command, 'the --record file');
   addLeashOptions(command);
   return addTargetOptions(command);
-}
-
-/** Addresses only this machine can reach. */
-function isLoopback(host: string): boolean {
-  return host === 'localhost' || host === '::1' || /^127\.\d+\.\d+\.\d+$/.test(host);
 }
 
 /**
