@@ -42,7 +42,7 @@ const GGUF_MAGIC = 'GGUF';
  */
 export async function checkModelFile(path: string, isDefault: boolean): Promise<void> {
   const fix = isDefault
-    ? ': run `hal model pull` to fetch it (`pnpm hal model pull` in a checkout), or give another GGUF file'
+    ? ': run `hal model pull` to fetch it (`npx hal model pull` in an app, `pnpm hal model pull` in a checkout), or give another GGUF file'
     : '';
   let size: number;
   try {
