@@ -1,6 +1,7 @@
 // `--model-file` as a user gives it, in a child process (llama.cpp writes its grammar errors
 // straight to the process's stderr, which only a child shows): any GGUF is offered every tool and
-// runs, and the default file given by its path runs as the default. The model is the SmolLM2-135M
+// runs (that the default file given by its path runs as the default is modelChoice's unit test,
+// packages/cli/src/agent/model-choice.test.ts). The model is the SmolLM2-135M
 // file `hal model pull` (or bash scripts/setup.sh) caches; a link to it elsewhere is "another
 // GGUF" to hal.
 import { mkdtemp, rm, symlink, writeFile } from 'node:fs/promises';
@@ -67,21 +68,6 @@ describe('--model-file', () => {
       expectNoGrammar(run.stderr);
       const outcome = lines(run.stdout).at(-1);
       expect(outcome).toMatchObject({ type: 'outcome', steps: 1 });
-    },
-    MODEL_MS,
-  );
-
-  it(
-    'hal agent runs the default file given by its path as the default: its few tools and one step',
-    async () => {
-      const run = await runHalProcess(
-        ['--json', 'agent', ...fast, '--model-file', defaultModelFile(), 'drive forward 10 cm'],
-        MODEL_MS,
-      );
-      expect(run.code, run.stderr).toBe(0);
-      expectNoGrammar(run.stderr);
-      // the default model's one request (any other model gets 20)
-      expect(lines(run.stdout).at(-1)).toMatchObject({ type: 'outcome', steps: 1 });
     },
     MODEL_MS,
   );

@@ -4,6 +4,9 @@ import type { Client } from '@modelcontextprotocol/sdk/client/index.js';
 
 export const REPO_ROOT = fileURLToPath(new URL('../..', import.meta.url));
 
+/** The embedded simulator's clock speed-up in these tests (hal mcp --sim --time-scale). */
+const SIM_SPEED_UP = ['--sim', '--time-scale', '20'];
+
 /** Runs `hal mcp` from source, as `pnpm hal mcp` does. */
 export function serverCommand(args: string[] = []): {
   command: string;
@@ -18,6 +21,8 @@ export function serverCommand(args: string[] = []): {
       'tsx',
       'packages/cli/src/main.ts',
       'mcp',
+      // the simulator runs on the real-time clock, as for a user; a test speeds it up
+      ...(args.some((arg) => arg === '--udp' || arg === '--serial') ? [] : SIM_SPEED_UP),
       ...args,
     ],
     cwd: REPO_ROOT,
