@@ -3,18 +3,13 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
 import { checkOutputPlace, openRecordingFile } from './output-place.js';
+import { usageErrorLike } from './usage-error.fixture.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'hal-output-place-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-function usage(message: string | RegExp) {
-  return expect.objectContaining({
-    name: 'CliError',
-    code: 'USAGE',
-    exitCode: 2,
-    message: typeof message === 'string' ? message : expect.stringMatching(message),
-  });
-}
+/** The one usage error every parser throws, its message naming the option. */
+const usage = usageErrorLike;
 
 describe('checkOutputPlace', () => {
   it('takes a new file in a folder that exists, and replaces one only with overwrite', async () => {

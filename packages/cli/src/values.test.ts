@@ -13,16 +13,10 @@ import {
   readQuantity,
   urlArg,
 } from './values.js';
+import { usageErrorLike } from './usage-error.fixture.js';
 
 /** The one usage error every parser throws, its message naming the option. */
-function usage(message: string | RegExp) {
-  return expect.objectContaining({
-    name: 'CliError',
-    code: 'USAGE',
-    exitCode: 2,
-    message: typeof message === 'string' ? message : expect.stringMatching(message),
-  });
-}
+const usage = usageErrorLike;
 
 describe('integerArg', () => {
   const port = integerArg('--port', 0, 65_535);
