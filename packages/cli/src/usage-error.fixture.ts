@@ -3,7 +3,9 @@
 import { expect } from 'vitest';
 
 /** Matches the CLI's usage error whose message is `message` (or matches it). */
-export function usageErrorLike(message: string | RegExp): unknown {
+export function usageErrorLike(
+  message: string | RegExp,
+): ReturnType<typeof expect.objectContaining> {
   return expect.objectContaining({
     name: 'CliError',
     code: 'USAGE',
