@@ -35,6 +35,10 @@ describe('usage errors exit 2 in every command, naming the option', () => {
       ['agent', '--sim', '--base-url', 'notaurl', '--model', 'm', 'drive'],
       '"--base-url" must be a http:// or https:// URL, got "notaurl"',
     ],
+    [
+      ['eval', '--agent', 'openai:m', '--base-url', 'notaurl'],
+      '"--base-url" must be a http:// or https:// URL, got "notaurl"',
+    ],
     [['emulate', '--key', 'abc'], '"--key" must be 1..64 bytes written as hex'],
     [
       ['eval', '--on', 'udp://10.0.0.1', '--key', 'xyz'],

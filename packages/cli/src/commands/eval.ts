@@ -13,7 +13,7 @@ import {
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
-import { distanceArg, hexKeyArg, integerArg, numberArg, positiveArg } from '../values.js';
+import { distanceArg, hexKeyArg, integerArg, numberArg, positiveArg, urlArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
 import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
@@ -202,7 +202,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         new Option(
           '--base-url <url>',
           "the openai: agents' endpoint, up to /v1 (default $OPENAI_BASE_URL, else OpenAI; key from $OPENAI_API_KEY)",
-        ),
+        ).argParser(urlArg('--base-url', ['http:', 'https:'])),
       )
       .addOption(
         new Option('--temperature <t>', 'sampling temperature of the model agents').argParser(
