@@ -299,7 +299,11 @@ export class Session {
     // that fails our MAC check means a wrong key, said at once rather than after every attempt.
     for (let sent = 1; reply === undefined; sent++) {
       try {
-        reply = await this.#options.transport.request(seq, bytes, { ...options, attempts: 1 });
+        reply = await this.#options.transport.request(seq, bytes, {
+          ...options,
+          attempts: 1,
+          callerAttempt: { attempt: sent, of: attempts },
+        });
       } catch (cause) {
         const timedOut = isHalError(cause) && cause.code === 'TIMEOUT';
         const refusedMac =

@@ -101,3 +101,48 @@ describe('ReplyMatcher timing (fake clock)', () => {
     expect(vi.getTimerCount()).toBe(0);
   });
 });
+
+describe('ReplyMatcher with a caller that resends on its own (the hello)', () => {
+  beforeEach(() => {
+    vi.useFakeTimers({ toFake: ['setTimeout', 'clearTimeout', 'performance'] });
+  });
+  afterEach(() => {
+    vi.useRealTimers();
+  });
+
+  /** The caller's loop: one transport request per attempt, the same seq, until a reply. */
+  async function resendUntilAnswered(
+    matcher: ReplyMatcher,
+    answerOnAttempt: number,
+    of: number,
+  ): Promise<unknown> {
+    for (let attempt = 1; ; attempt++) {
+      const sent = matcher.request(
+        9,
+        async () => {
+          if (attempt === answerOnAttempt) queueMicrotask(() => matcher.deliver(reply(9)));
+        },
+        { timeoutMs: 20, attempts: 1, callerAttempt: { attempt, of } },
+      );
+      const outcome = sent.then(
+        () => 'answered',
+        (error: unknown) => error,
+      );
+      await vi.advanceTimersByTimeAsync(25);
+      const settled = await outcome;
+      if (settled === 'answered' || attempt >= of) return settled;
+    }
+  }
+
+  it('counts its lost attempts as retries, not timeouts, when a later attempt is answered', async () => {
+    const matcher = new ReplyMatcher();
+    expect(await resendUntilAnswered(matcher, 3, 5)).toBe('answered');
+    expect(matcher.stats()).toMatchObject({ sent: 3, retries: 2, timeouts: 0, received: 1 });
+  });
+
+  it('counts one timeout when its last attempt goes unanswered too', async () => {
+    const matcher = new ReplyMatcher();
+    expect(await resendUntilAnswered(matcher, 0, 3)).toMatchObject({ code: 'TIMEOUT' });
+    expect(matcher.stats()).toMatchObject({ sent: 3, retries: 2, timeouts: 1, received: 0 });
+  });
+});

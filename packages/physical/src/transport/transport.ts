@@ -31,6 +31,13 @@ export interface RequestOptions {
   timeoutMs?: number;
   /** Send at most this many times. */
   attempts?: number;
+  /**
+   * For a caller that resends a request itself, one transport request per attempt (the hello,
+   * which looks at each failed attempt before the next): which of its attempts this is. Its
+   * sends after the first count as retries, and running out counts as a timeout only on the
+   * caller's last attempt, so the statistics read as for one request resent by the transport.
+   */
+  callerAttempt?: { attempt: number; of: number };
 }
 
 /** The request defaults a transport's own options set (only the fields given). */
@@ -148,6 +155,8 @@ interface Pending {
   readonly resolve: (reply: WireReply) => void;
   readonly reject: (error: unknown) => void;
   attempt: number;
+  /** The caller's own attempt this request is, when it resends it itself. */
+  readonly callerAttempt: { attempt: number; of: number } | undefined;
   sentAt: number;
   /** When this attempt times out (on the matcher's clock); Infinity while the send is under way. */
   deadline: number;
@@ -249,6 +258,7 @@ export class ReplyMatcher {
         resolve,
         reject,
         attempt: 0,
+        callerAttempt: options.callerAttempt,
         sentAt: 0, // set by each attempt
         deadline: Infinity,
         lastError: undefined,
@@ -262,7 +272,8 @@ export class ReplyMatcher {
   #attempt(entry: Pending): void {
     if (entry.attempt >= entry.attempts) {
       this.#finish(entry);
-      this.counts.timeouts += 1;
+      const caller = entry.callerAttempt;
+      if (caller === undefined || caller.attempt >= caller.of) this.counts.timeouts += 1;
       entry.reject(
         new HalError(
           'TIMEOUT',
@@ -277,7 +288,7 @@ export class ReplyMatcher {
     }
     entry.attempt += 1;
     const attempt = entry.attempt;
-    if (attempt > 1) this.counts.retries += 1;
+    if (attempt > 1 || (entry.callerAttempt?.attempt ?? 1) > 1) this.counts.retries += 1;
     entry.sentAt = this.#now();
     entry.deadline = Infinity;
     this.counts.sent += 1;
