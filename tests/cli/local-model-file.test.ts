@@ -5,20 +5,12 @@
 // file `hal model pull` (or bash scripts/setup.sh) caches; a link to it elsewhere is "another
 // GGUF" to hal.
 import { mkdtemp, rm, symlink, writeFile } from 'node:fs/promises';
-import { homedir, tmpdir } from 'node:os';
+import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { defaultModelFile } from '@hal/agent-local';
 import type { EvalReport } from '@hal/eval';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { runHalProcess } from '../helpers/hal-process.js';
-
-/** Where the default model is cached (as @hal/agent-local's defaultModelFile says). */
-const defaultModelFile = () =>
-  join(
-    process.env['XDG_CACHE_HOME'] || join(homedir(), '.cache'),
-    'hal',
-    'models',
-    'SmolLM2-135M-Instruct.Q4_1.gguf',
-  );
 
 const MODEL_MS = 240_000; // a busy shared CPU can be slow; a quiet one takes seconds
 

