@@ -34,6 +34,7 @@ struct Options {
   bool exit_on_stdin_eof = false;
   bool pty = true;
   bool insecure = false;
+  long report_wheels_ms = 0;
 };
 
 void Usage(FILE* f) {
@@ -59,6 +60,10 @@ void Usage(FILE* f) {
       "  --device-id ID        device_id reported by hello (default "
       "cube-emulator)\n"
       "  --no-pty              do not open a pseudo-terminal\n"
+      "  --report-wheels-ms N  print a `wheels` event with the wheel "
+      "positions\n"
+      "                        when they changed, at most every N ms (1..10000;\n"
+      "                        default: never)\n"
       "  --exit-on-stdin-eof   exit when standard input closes\n");
 }
 
@@ -118,6 +123,17 @@ bool ParseArgs(int argc, char** argv, Options* o) {
       const char* v = value("--device-id");
       if (v == nullptr) return false;
       o->device_id = v;
+    } else if (a == "--report-wheels-ms") {
+      const char* v = value("--report-wheels-ms");
+      if (v == nullptr) return false;
+      char* end = nullptr;
+      o->report_wheels_ms = std::strtol(v, &end, 10);
+      if (*end != '\0' || o->report_wheels_ms < 1 ||
+          o->report_wheels_ms > 10000) {
+        std::fprintf(stderr,
+                     "cube-emulator: --report-wheels-ms must be 1..10000\n");
+        return false;
+      }
     } else if (a == "--insecure") {
       o->insecure = true;
     } else if (a == "--no-pty") {
@@ -253,6 +269,13 @@ int main(int argc, char** argv) {
                 static_cast<uint64_t>(static_cast<double>(robot.boot_us()) /
                                       opt.time_scale));
 
+  // What a second party (`hal emulate --camera`) needs to follow the body:
+  // the wheel positions, printed when they changed, at most every N ms.
+  int64_t reported_left = robot.left_position();
+  int64_t reported_right = robot.right_position();
+  uint64_t reported_at_us = real_clock.NowUs();
+  if (opt.report_wheels_ms > 0) log.Wheels();
+
   static uint8_t buf[4096];
   static uint8_t reply[cube::kMaxMessage];
   const char* why = "signal";
@@ -308,6 +331,16 @@ int main(int argc, char** argv) {
     CatchUpSteps(robot, /*with_task=*/true);
     link.Poll(real_clock.NowUs() / 1000);
     log.CheckConfig();
+    if (opt.report_wheels_ms > 0 &&
+        (robot.left_position() != reported_left ||
+         robot.right_position() != reported_right) &&
+        real_clock.NowUs() - reported_at_us >=
+            static_cast<uint64_t>(opt.report_wheels_ms) * 1000u) {
+      reported_left = robot.left_position();
+      reported_right = robot.right_position();
+      reported_at_us = real_clock.NowUs();
+      log.Wheels();
+    }
   }
   log.Stopping(g_stop != 0 ? "signal" : why);
   return 0;

@@ -334,6 +334,21 @@ void EventLog::CheckConfig() {
   Emit(w, buf);
 }
 
+void EventLog::Wheels() {
+  char buf[256];
+  JsonWriter w(buf, sizeof(buf) - 1);
+  w.BeginObject();
+  w.Key("event");
+  w.String("wheels");
+  w.Key("left_position");
+  w.Int(cube_.left_position());
+  w.Key("right_position");
+  w.Int(cube_.right_position());
+  w.Key("t_us");
+  w.Int(static_cast<int64_t>(cube_.uptime_us()));
+  Emit(w, buf);
+}
+
 void EventLog::Stopping(const char* why) {
   char buf[256];
   JsonWriter w(buf, sizeof(buf) - 1);

@@ -67,6 +67,8 @@ class EventLog : public CubeObserver {
   // Prints a `config` event when the robot's configuration differs from the
   // last one seen (set_config over either link); call after each request.
   void CheckConfig();
+  // Prints a `wheels` event: the absolute wheel positions (steps) now.
+  void Wheels();
   void Stopping(const char* why);
 
  private:

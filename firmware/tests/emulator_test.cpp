@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -283,6 +284,42 @@ TEST(Emulator, RunsTheSeedCommandsOverUdpWithTheirStepCounts) {
   EXPECT_EQ(r["left_steps"], 1000 + 2172 - 1706);
   EXPECT_EQ(r["right_steps"], -1000 + 2172 + 1707);
   EXPECT_EQ(r["running"], false);
+}
+
+TEST(Emulator, ReportsTheWheelPositionsWhileTheyTurnWhenAsked) {
+  Emulator e({"--time-scale", "5", "--report-wheels-ms", "20", "--no-pty",
+              "--host-timeout-ms", "10000"});
+  const json first = e.WaitEvent("wheels", 1000);
+  ASSERT_FALSE(first.is_null()) << "no wheels event at start";
+  EXPECT_EQ(first["left_position"], 0);
+  EXPECT_EQ(first["right_position"], 0);
+  const json r = json::parse(
+      e.Udp(R"({"cmd":"move_steps","left":1000,"right":-1000,"speed":800})"));
+  EXPECT_EQ(r["ok"], true);
+  int between = 0;
+  int64_t last = 0;
+  for (int i = 0; i < 400 && last != 1000; ++i) {
+    const json w = e.WaitEvent("wheels", 3000);
+    ASSERT_FALSE(w.is_null()) << "the wheels stopped being reported at " << last;
+    const int64_t left = w["left_position"].get<int64_t>();
+    EXPECT_EQ(w["right_position"].get<int64_t>(), -left);
+    EXPECT_GE(left, last) << "positions only grow in this move";
+    if (left > 0 && left < 1000) ++between;
+    last = left;
+  }
+  EXPECT_EQ(last, 1000) << "the last report is where the wheels stopped";
+  EXPECT_GE(between, 2) << "positions are reported while the wheels turn";
+  EXPECT_TRUE(e.WaitEvent("wheels", 300).is_null())
+      << "nothing is reported while the wheels stand still";
+}
+
+TEST(Emulator, RefusesAReportPeriodOutOfRange) {
+  for (const char* bad : {"0", "10001", "x"}) {
+    const std::string cmd = std::string(CUBE_EMULATOR_PATH) +
+                            " --report-wheels-ms " + bad + " 2>/dev/null";
+    const int status = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << bad;
+  }
 }
 
 TEST(Emulator, PrintsAConfigEventOnlyWhenSetConfigChangesTheConfiguration) {
