@@ -25,6 +25,14 @@ export type {
   TaskObject,
 } from './task-schema.js';
 export { checkTaskFile, loadTaskFile, parseTaskFile } from './task-load.js';
+export {
+  checkWorld,
+  loadWorldFile,
+  mapWithObjects,
+  parseWorldFile,
+  realiseWorld,
+} from './world-file.js';
+export type { RealisedWorld, TaskWorld, TaskWorldInput } from './world-file.js';
 export type { TaskVariant } from './variant.js';
 export { judge, trueAnswer } from './checks.js';
 export type { CheckVerdict, TrialEnd } from './checks.js';

@@ -1,7 +1,7 @@
-import { BUILTIN_MAPS, parseMap, SeededRandom } from '@hal/simulation';
+import { SeededRandom } from '@hal/simulation';
 import type { WorldMap } from '@hal/simulation';
-import { COLOURS } from './task-schema.js';
 import type { Task, TaskObject } from './task-schema.js';
+import { mapWithObjects } from './world-file.js';
 
 /** One member of a task's family: the world as a seed placed it. */
 export interface TaskVariant {
@@ -58,33 +58,6 @@ export function realiseTask(task: Task, seed: number): TaskVariant {
     x: mm(o.x + jitter(objectsM)),
     y: mm(o.y + jitter(objectsM)),
   }));
-  const base = typeof task.world.map === 'string' ? BUILTIN_MAPS[task.world.map] : task.world.map;
-  const map = parseMap({
-    ...base,
-    obstacles: [
-      ...base.obstacles,
-      ...objects.map((o) =>
-        o.kind === 'box'
-          ? {
-              kind: 'box',
-              x: o.x,
-              y: o.y,
-              width: o.width,
-              depth: o.depth,
-              height: o.height,
-              color: COLOURS[o.colour],
-            }
-          : {
-              kind: 'cylinder',
-              x: o.x,
-              y: o.y,
-              radius: o.radius,
-              height: o.height,
-              color: COLOURS[o.colour],
-            },
-      ),
-    ],
-    starts: [start],
-  });
+  const map = mapWithObjects(task.world.map, objects, start);
   return { task, seed, map, objects, start };
 }
