@@ -32,3 +32,14 @@ export type {
   FreeSpaceTest,
   StepContact,
 } from './robot-model/step-contact.js';
+export {
+  cameraProjection,
+  floorPointOfPixel,
+  focalLengthPx,
+  horizonRow,
+  lensPosition,
+  nearestVisibleFloorM,
+  pixelOfPoint,
+  pixelRay,
+} from './camera.js';
+export type { CameraProjection, FloorPoint, ImagePoint, Vec3 } from './camera.js';

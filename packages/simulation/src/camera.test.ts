@@ -1,4 +1,6 @@
 import jpeg from 'jpeg-js';
+import { cameraProjection, horizonRow, pixelOfPoint } from '@hal/kinematics';
+import { V1_CAMERA } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { renderRobotView } from './camera.js';
 import { defaultJpegEncoder, encodeJpeg, jpegDataUrl } from './jpeg.js';
@@ -25,12 +27,16 @@ function pixel(image: { width: number; data: Uint8Array }, x: number, y: number)
 
 describe('renderRobotView', () => {
   it('renders a 320x240 JPEG with sky above the horizon and floor below', async () => {
-    const world = new World();
+    // An arena too large for its walls to be drawn (beyond the 15 m drawing distance).
+    const world = new World({ map: { name: 'open', arena: { width: 40, height: 40 } } });
     world.addRobot({ id: 'r' });
     const image = await frameOf(world, 'r');
     expect([image.width, image.height]).toEqual([320, 240]);
     const sky = pixel(image, 160, 10);
     expect(sky.b).toBeGreaterThan(sky.r + 40);
+    const floor = pixel(image, 160, 230);
+    expect(Math.abs(floor.r - floor.b)).toBeLessThan(40);
+    expect(floor.r).toBeGreaterThan(150);
   });
 
   const encoders: Array<[string, JpegEncoder]> = [
@@ -51,7 +57,11 @@ describe('renderRobotView', () => {
       });
       const robot = world.addRobot({ id: 'r' });
       const ahead = await frameOf(world, 'r', encoder);
-      const centre = pixel(ahead, 160, 130);
+      // The box's near face spans the rows above where its base meets the floor, 0.45 m ahead
+      // of the lens.
+      const base = pixelOfPoint(cameraProjection(V1_CAMERA), { x: 0.5, y: 0, z: 0 });
+      expect(base).toBeDefined();
+      const centre = pixel(ahead, 160, Math.floor((base?.v ?? 0) - 10));
       expect(centre.r).toBeGreaterThan(150);
       expect(centre.g).toBeLessThan(80);
       expect(centre.b).toBeLessThan(80);
@@ -90,9 +100,11 @@ describe('renderRobotView', () => {
     const greenColumns = (id: string) => {
       const robot = world.robot(id);
       const image = renderRobotView(world, robot, {});
+      // Just below the horizon: level with the lens, where the post is at any distance.
+      const row = Math.ceil(horizonRow(cameraProjection(V1_CAMERA))) + 1;
       let count = 0;
       for (let x = 0; x < image.width; x += 1) {
-        const i = (121 * image.width + x) * 4;
+        const i = (row * image.width + x) * 4;
         if ((image.data[i + 1] ?? 0) > 150 && (image.data[i] ?? 0) < 100) count += 1;
       }
       return count;

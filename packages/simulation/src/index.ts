@@ -37,7 +37,7 @@ export type { BoxSolid, CylinderSolid, Point, Rgb, Solid, SolidRole } from './sh
 export { readDistanceSensors, scanAround } from './sensors.js';
 export type { RangeSensorOptions } from './sensors.js';
 
-export { renderRobotView } from './camera.js';
+export { cameraModelOf, cameraPose, renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';
 export { defaultJpegEncoder, encodeJpeg } from './jpeg.js';
 export { canvasJpegEncoder, jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';

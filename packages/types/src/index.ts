@@ -29,6 +29,9 @@ export {
 } from './robot-config.js';
 export type { ConnectionConfig, HALConfig, RobotConfig } from './robot-config.js';
 
+export { CameraModelSchema, V1_CAMERA, cameraModel } from './camera-model.js';
+export type { CameraModel } from './camera-model.js';
+
 export {
   DetectedObjectSchema,
   DeviceInfoSchema,

@@ -1,6 +1,6 @@
 import * as THREE from 'three';
 import type { CameraOptions } from '../camera.js';
-import { cameraPose } from '../camera.js';
+import { cameraModelOf, cameraPose } from '../camera.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import { toThree } from './coordinates.js';
 
@@ -72,16 +72,23 @@ export function placeRobotCamera(
   options: CameraOptions = {},
   into?: THREE.PerspectiveCamera,
 ): THREE.PerspectiveCamera {
-  const width = options.width ?? 320;
-  const height = options.height ?? 240;
-  const hfov = ((options.fieldOfViewDeg ?? 62) * Math.PI) / 180;
-  const vfov = 2 * Math.atan(Math.tan(hfov / 2) * (height / width));
+  const model = cameraModelOf(options);
+  const hfov = (model.fieldOfViewDeg * Math.PI) / 180;
+  const vfov = 2 * Math.atan(Math.tan(hfov / 2) * (model.height / model.width));
   const camera = into ?? new THREE.PerspectiveCamera(1, 1, 0.01, 40);
   camera.fov = (vfov * 180) / Math.PI;
-  camera.aspect = width / height;
+  camera.aspect = model.width / model.height;
   camera.updateProjectionMatrix();
   const pose = cameraPose(robot, options);
   camera.position.copy(toThree(pose.x, pose.y, pose.z));
-  camera.lookAt(toThree(pose.x + Math.cos(pose.yaw), pose.y + Math.sin(pose.yaw), pose.z));
+  // Looking along the heading, tilted down by the model's tilt.
+  const level = Math.cos(pose.tilt);
+  camera.lookAt(
+    toThree(
+      pose.x + level * Math.cos(pose.yaw),
+      pose.y + level * Math.sin(pose.yaw),
+      pose.z - Math.sin(pose.tilt),
+    ),
+  );
   return camera;
 }
