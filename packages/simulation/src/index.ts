@@ -36,6 +36,8 @@ export type { BoxSolid, CylinderSolid, Point, Rgb, Solid, SolidRole } from './sh
 
 export { readDistanceSensors, scanAround } from './sensors.js';
 export type { RangeSensorOptions } from './sensors.js';
+export { IMU_BANDWIDTH_HZ, SimulatedImu } from './gyro.js';
+export type { ImuOptions } from './gyro.js';
 
 export { cameraModelOf, cameraPose, renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';

@@ -1,5 +1,6 @@
-import type { DistanceSensors, IMUReading, ScanResult } from '@hal/types';
+import type { DistanceSensors, ScanResult } from '@hal/types';
 import type { SimRobot } from './robot/sim-robot.js';
+import { rangeScan } from './range-scan.js';
 import { rayEnter } from './shapes.js';
 import type { Solid } from './shapes.js';
 import type { World } from './world.js';
@@ -17,7 +18,6 @@ export interface RangeSensorOptions {
 }
 
 const DEG = Math.PI / 180;
-const G = 9.80665;
 
 /**
  * Distance from the robot's body edge to the nearest solid (or other robot) seen by a ray from
@@ -114,8 +114,10 @@ export function readDistanceSensors(
 }
 
 /**
- * A sweep of rays around the robot: `full` 360 degrees every 5, `targeted` +/-60 degrees every
- * 2, `quick` the five range sensors. Each solid seen is reported once, at its centre.
+ * A sweep of the range sensor around the robot: `full` 360 degrees every 5, `targeted` +/-60
+ * degrees every 2, `quick` the bearings of the five range sensors. Reports what the rays hit
+ * within range, grouped into objects placed in the robot's believed frame (see range-scan.ts):
+ * never where the world has them, nor anything out of range or hidden behind something nearer.
  */
 export function scanAround(
   world: World,
@@ -124,62 +126,16 @@ export function scanAround(
   options: RangeSensorOptions = {},
 ): ScanResult {
   const o = withDefaults(options);
-  const angles: number[] = [];
-  if (mode === 'full') for (let a = -180; a < 180; a += 5) angles.push(a);
-  else if (mode === 'targeted') for (let a = -60; a <= 60; a += 2) angles.push(a);
-  else angles.push(-90, -45, 0, 45, 90);
-  const seen = new Map<string, ScanResult['objects'][number]>();
-  let nearest = Number.POSITIVE_INFINITY;
-  for (const a of angles) {
-    const hit = rangeAlong(world, robot, robot.yaw + a * DEG, o.maxRange);
-    if (hit.distance >= o.maxRange) continue;
-    nearest = Math.min(nearest, hit.distance);
-    if (hit.robotId !== undefined) {
-      const other = world.robot(hit.robotId);
-      seen.set(`robot:${hit.robotId}`, {
-        id: hit.robotId,
-        type: 'robot',
-        position: { x: other.x, y: other.y, z: 0 },
-        confidence: 1,
-      });
-    } else if (hit.solid !== undefined) {
-      const s = hit.solid;
-      const id = `${s.role}-${s.index}`;
-      const position =
-        s.kind === 'box'
-          ? { x: (s.minX + s.maxX) / 2, y: (s.minY + s.maxY) / 2, z: s.height / 2 }
-          : { x: s.x, y: s.y, z: s.height / 2 };
-      seen.set(id, {
-        id,
-        type: s.role === 'obstacle' ? s.kind : s.role,
-        position,
-        confidence: 1,
-      });
-    }
-  }
-  const front = coneReading(world, robot, 0, { ...o, noiseSigma: 0 });
-  const result: ScanResult = {
-    objects: [...seen.values()],
-    clearAhead: front > 0.3,
-    source: 'simulation',
-  };
-  if (Number.isFinite(nearest)) result.nearestObstacle = nearest;
-  return result;
-}
-
-/**
- * What an IMU on the robot would read: acceleration from the motion profile (robot frame,
- * gravity +z), rotation rate about z, and the heading.
- */
-export function readImu(robot: SimRobot): IMUReading {
-  const now = robot.nowUs;
-  const v = robot.velocity(now);
-  const before = robot.velocity(Math.max(0, now - 1000));
-  const ax = robot.running ? (v.linear - before.linear) / 0.001 : 0;
-  return {
-    acceleration: { x: ax, y: v.linear * v.angular, z: G },
-    gyroscope: { x: 0, y: 0, z: v.angular },
-    heading: robot.yaw,
-    source: 'simulation',
-  };
+  return rangeScan(
+    world,
+    robot,
+    mode,
+    {
+      maxRange: o.maxRange,
+      fieldOfViewDeg: o.fieldOfViewDeg,
+      noiseSigma: o.noiseSigma,
+      range: (angle) => rangeAlong(world, robot, angle, o.maxRange).distance,
+    },
+    coneReading(world, robot, 0, o),
+  );
 }

@@ -92,18 +92,50 @@ export const IMUReadingSchema = z
   .describe('Inertial reading');
 export type IMUReading = z.infer<typeof IMUReadingSchema>;
 
-export const DetectedObjectSchema = z.object({
-  id: z.string(),
-  type: z.string(),
-  position: Vector3Schema.describe('metres, world frame'),
-  confidence: z.number().min(0).max(1),
-});
+export const DetectedObjectSchema = z
+  .object({
+    id: z
+      .string()
+      .describe(
+        'a name for this scan only (`seen-1`, `seen-2`, ...); it says nothing of the world',
+      ),
+    type: z
+      .string()
+      .describe(
+        "what the robot can tell it is: 'obstacle' from range sensors (they cannot tell a box from a robot)",
+      ),
+    position: Vector3Schema.describe(
+      "metres, in the frame of the robot's reported pose (getPose: its odometry, which may drift from the world)",
+    ),
+    confidence: z.number().min(0).max(1),
+    bearingDeg: finite
+      .optional()
+      .describe('degrees counter-clockwise from where the robot believes it heads, (-180, 180]'),
+    distanceM: finite
+      .optional()
+      .describe(
+        "metres from the robot's body to the nearest point seen, as the range sensors read",
+      ),
+    sizeM: finite.optional().describe('metres, its width across the line of sight, estimated'),
+    sensor: z
+      .enum(['range', 'camera'])
+      .optional()
+      .describe('what saw it: the range sensors, or the camera (through a perception layer)'),
+  })
+  .describe('Something the robot sees');
+export type DetectedObject = z.infer<typeof DetectedObjectSchema>;
 
 export const ScanResultSchema = z
   .object({
     objects: z.array(DetectedObjectSchema),
     clearAhead: z.boolean().describe('True when nothing is within the clearance distance ahead'),
     nearestObstacle: finite.optional().describe('metres'),
+    frame: z
+      .enum(['odometry', 'world'])
+      .optional()
+      .describe(
+        "the frame of the positions: 'odometry', the robot's reported pose (getPose); 'world', a frame the robot knows exactly",
+      ),
     source: ValueSourceSchema.optional(),
   })
   .describe('Environment scan');

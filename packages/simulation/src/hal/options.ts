@@ -1,5 +1,6 @@
 import type { Logger, RobotConfig } from '@hal/types';
 import type { CameraOptions } from '../camera.js';
+import type { ImuOptions } from '../gyro.js';
 import type { BodyErrorInput } from '../robot/body-error.js';
 import type { JpegEncoder } from '../jpeg-encoders.js';
 import type { SimRobot } from '../robot/sim-robot.js';
@@ -57,6 +58,11 @@ export interface SimulationHALOptions {
   features?: SimulatedFeatures;
   /** Range sensor model. */
   rangeSensors?: RangeSensorOptions;
+  /**
+   * The IMU's errors: gyro bias and noise, accelerometer noise (see {@link ImuOptions}; by default
+   * those of a consumer MEMS IMU, so the heading drifts from the true yaw; all 0: a perfect IMU).
+   */
+  imu?: ImuOptions;
   /** Camera model of the built-in software renderer. */
   camera?: CameraOptions;
   /**

@@ -52,7 +52,10 @@ export function createReadSchemas() {
             'full: all around; targeted: the sector ahead; quick: front, left and right (default)',
           ),
       })
-      .describe('Scan the surroundings for obstacles; distances in metres, positions world frame'),
+      .describe(
+        'Scan the surroundings for obstacles with the range sensors: what they see within their range, ' +
+          "distances in metres, positions in the frame of the robot's reported pose (getPose)",
+      ),
     getDistanceSensors: z
       .object({})
       .describe(
