@@ -4,26 +4,31 @@ import type { MotionHandle, MotionReport } from '../robot/motion-report.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { HalContext } from './context.js';
 
-/** The robot's pose as results carry it: metres and radians, world frame. */
+/** The robot's pose as results carry it: metres and radians, the frame of its odometry. */
 export function poseData(robot: SimRobot): Record<string, number> {
   // what the robot reports (its odometry), as PhysicalHAL's results carry it
   const p = robot.reportedPose;
   return { x: p.x, y: p.y, yaw: p.yaw };
 }
 
-/** What a contact touched, in words: "the arena's edge", "a wall", "an obstacle", "sim-b". */
-function touchedText(ctx: HalContext, contact: Contact): string {
-  if (contact.robotId !== undefined) return `robot ${ctx.world.deviceName(contact.robotId)}`;
-  switch (contact.role) {
-    case 'arena':
-      return "the arena's edge";
-    case 'wall':
-      return 'a wall';
-    case 'obstacle':
-      return 'an obstacle';
-    case 'robot':
-      return 'another robot';
-  }
+/**
+ * Where the robot felt a contact, in the frame of the pose it reports (its odometry): the contact's
+ * place relative to the body, as a bumper would feel it, set on the pose the robot believes it has.
+ * The world's record (the true point, and what was touched) is not the robot's to know.
+ */
+function feltContact(robot: SimRobot, contact: Contact): { point: { x: number; y: number } } {
+  const dx = contact.point.x - robot.x;
+  const dy = contact.point.y - robot.y;
+  const yaw = robot.yaw;
+  const forward = dx * Math.cos(yaw) + dy * Math.sin(yaw);
+  const left = -dx * Math.sin(yaw) + dy * Math.cos(yaw);
+  const p = robot.reportedPose;
+  return {
+    point: {
+      x: p.x + forward * Math.cos(p.yaw) - left * Math.sin(p.yaw),
+      y: p.y + forward * Math.sin(p.yaw) + left * Math.cos(p.yaw),
+    },
+  };
 }
 
 /**
@@ -54,11 +59,11 @@ export async function awaitMotion(ctx: HalContext, handle: MotionHandle): Promis
   ctx.events.emit('motionFinished', { ...report });
   if (report.outcome === 'done') return report;
   if (report.outcome === 'collision' && report.contact !== undefined) {
-    const c = report.contact;
+    const c = feltContact(ctx.robot(), report.contact);
     const self = ctx.world.deviceName(robot.id);
     throw new HalError(
       'COLLISION',
-      `${self} touched ${touchedText(ctx, c)} at (${c.point.x.toFixed(3)}, ${c.point.y.toFixed(3)}) m and stopped`,
+      `${self} touched something at (${c.point.x.toFixed(3)}, ${c.point.y.toFixed(3)}) m and stopped`,
       { details: { contact: c, pose: poseData(ctx.robot()), moveId: report.moveId } },
     );
   }

@@ -61,15 +61,15 @@ describe('SimulationHAL', () => {
       const result = await hal.locomotion.moveForward(50);
       expect(result.success).toBe(false);
       expect(result.code).toBe('COLLISION');
-      const contact = result.details?.['contact'] as { point: { x: number }; role: string };
-      expect(contact.role).toBe('obstacle');
-      expect(contact.point.x).toBeCloseTo(0.25, 6);
+      const contact = result.details?.['contact'] as { point: { x: number } };
+      // where the robot felt it; not what it was (a bump cannot tell)
+      expect(contact).toEqual({ point: { x: expect.closeTo(0.25, 6), y: expect.closeTo(0, 6) } });
       const pose = await hal.locomotion.getPose();
       expect(pose.position.x).toBeCloseTo(0.25 - 0.07, 3);
       expect(pose.velocity.linear).toBe(0);
     });
 
-    it('names the device and what it touched in words in the COLLISION message', async () => {
+    it('names the device and where it touched something in the COLLISION message', async () => {
       const world = new World({
         map: {
           name: 'wall ahead',
@@ -79,11 +79,33 @@ describe('SimulationHAL', () => {
       });
       const hal = await ready(new SimulationHAL({ world, deviceId: 'cube-7' }));
       const obstacle = await hal.locomotion.moveForward(50);
-      expect(obstacle.error).toMatch(/^cube-7 touched an obstacle at \(0\.250, 0\.000\) m/);
+      expect(obstacle.error).toMatch(/^cube-7 touched something at \(0\.250, 0\.000\) m/);
       const boxed = new World({ map: { name: 'small', arena: { width: 1, height: 1 } } });
       const alone = await ready(new SimulationHAL({ world: boxed, deviceId: 'cube-7' }));
       const edge = await alone.locomotion.moveForward(100);
-      expect(edge.error).toMatch(/^cube-7 touched the arena's edge at /);
+      expect(edge.error).toMatch(/^cube-7 touched something at /);
+    });
+
+    it('reports the contact where its drifted odometry puts it, not where the world has it', async () => {
+      const world = new World({ map: { name: 'small', arena: { width: 2, height: 2 } } });
+      const hal = await ready(
+        new SimulationHAL({ world, bodyError: { odometryNoisePct: 10, seed: 4 } }),
+      );
+      await hal.locomotion.rotate('left', 30);
+      expect((await hal.locomotion.moveForward(60)).success).toBe(true);
+      const result = await hal.locomotion.moveForward(60);
+      expect(result.code).toBe('COLLISION');
+      const felt = (result.details?.['contact'] as { point: { x: number; y: number } }).point;
+      const truth = hal.world.robots[0]?.motion?.contact?.point ?? { x: NaN, y: NaN };
+      const believed = hal.robot.reportedPose;
+      const actual = { x: hal.robot.x, y: hal.robot.y };
+      // the same distance from the body in both frames, but not the same place
+      expect(Math.hypot(felt.x - believed.x, felt.y - believed.y)).toBeCloseTo(
+        Math.hypot(truth.x - actual.x, truth.y - actual.y),
+        9,
+      );
+      expect(Math.hypot(felt.x - truth.x, felt.y - truth.y)).toBeGreaterThan(0.01);
+      expect(result.error).not.toMatch(/arena|wall|edge/);
     });
 
     it('stamps results with the simulated clock: a 10 cm move takes its planned 4121 ms', async () => {
@@ -289,10 +311,14 @@ describe('SimulationHAL', () => {
       await b.locomotion.drive(0, 0);
       const result = await a.locomotion.moveForward(40);
       expect(result.code).toBe('COLLISION');
-      expect(result.details?.['contact']).toMatchObject({ role: 'robot', robotId: b.robot.id });
-      expect(result.error).toMatch(
-        new RegExp(`^${a.getDeviceInfo().id} touched robot ${b.getDeviceInfo().id} at `),
-      );
+      // a bump does not say whom it touched
+      expect(Object.keys(result.details?.['contact'] as object)).toEqual(['point']);
+      expect(result.error).toMatch(new RegExp(`^${a.getDeviceInfo().id} touched something at `));
+      expect(result.error).not.toContain(b.getDeviceInfo().id);
+      expect(a.world.robots.find((r) => r.id === a.robot.id)?.motion?.contact).toMatchObject({
+        role: 'robot',
+        robotId: b.robot.id,
+      });
       expect(b.getDeviceInfo().id).not.toBe(b.robot.id);
     });
   });
