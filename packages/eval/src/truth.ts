@@ -3,6 +3,13 @@ import type { Solid, WorldMap } from '@hal/simulation';
 import type { TaskObject } from './task-schema.js';
 import type { TaskVariant } from './variant.js';
 
+/*
+ * Ground truth: the world as the simulator has it (the map's solids, the objects' true places), for
+ * the judge (checks) and the oracle only. An agent under test never reads it: it learns the world
+ * through the HAL's calls, which tell only what its sensors could (scan in its odometry's frame, a
+ * drifting gyro, a contact without what was touched).
+ */
+
 /** The robot's footprint radius in the simulator, metres. */
 export const ROBOT_RADIUS_M = 0.07;
 
