@@ -21,12 +21,21 @@ export const ReadyLineSchema = z.object({
 });
 export type ReadyLine = z.infer<typeof ReadyLineSchema>;
 
+/** The emulator's `wheels` event (with --report-wheels-ms): the wheel positions, steps from boot. */
+export const WheelsEventSchema = z.object({
+  event: z.literal('wheels'),
+  left_position: z.number().int(),
+  right_position: z.number().int(),
+});
+
 export interface EmulatorProcess {
   ready: ReadyLine;
   /** Resolves when it exits, with how, and what it wrote on stderr. */
   exited: Promise<{ code: number | null; signal: string | null; stderr: string }>;
   /** Stops it (SIGTERM, then SIGKILL after `graceMs`) and resolves once it has exited. */
   stop(graceMs?: number): Promise<void>;
+  /** The wheel positions now, steps from boot, where the robot tells them to its own process. */
+  wheels?: () => { left: number; right: number };
 }
 
 export async function startEmulatorProcess(

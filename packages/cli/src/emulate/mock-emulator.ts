@@ -83,6 +83,7 @@ export async function startMockEmulator(o: EmulateCliOptions): Promise<EmulatorP
       ready: await announcement(robot, o.key),
       exited: new Promise<never>(() => undefined),
       stop: () => robot.close(),
+      wheels: () => robot.position,
     };
   } catch (error) {
     await robot.close();
