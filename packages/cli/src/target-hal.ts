@@ -86,14 +86,19 @@ async function build(
     }
     case 'udp':
     case 'serial': {
-      const key = target.key === undefined ? {} : { key: target.key };
+      // the key, and the ESP32-CAM where one is named
+      const link = {
+        ...(target.key === undefined ? {} : { key: target.key }),
+        ...(target.camera === undefined ? {} : { cameraUrl: target.camera.url }),
+        ...(target.camera?.token === undefined ? {} : { cameraToken: target.camera.token }),
+      };
       const connection =
         target.kind === 'udp'
-          ? { type: 'wifi' as const, host: target.host, udpPort: target.port, ...key }
+          ? { type: 'wifi' as const, host: target.host, udpPort: target.port, ...link }
           : {
               type: 'serial' as const,
               port: target.path,
-              ...key,
+              ...link,
               ...(target.baudRate === undefined ? {} : { baudRate: target.baudRate }),
             };
       const hal = new PhysicalHAL(

@@ -73,6 +73,38 @@ describe('naming the robot', () => {
     );
   });
 
+  it("names a physical robot's camera, its token from --camera-token or $HAL_CAMERA_TOKEN", () => {
+    const url = 'http://127.0.0.1:8080';
+    expect(parse(['--udp', 'cube', '--camera-url', url])).toEqual({
+      kind: 'udp',
+      host: 'cube',
+      port: 4210,
+      timeScale: 1,
+      camera: { url },
+    });
+    const fromEnv = parse(['--serial', '/dev/ttyUSB0', '--camera-url', url], undefined, {
+      HAL_CAMERA_TOKEN: 'from-env',
+    });
+    expect(fromEnv).toMatchObject({ camera: { url, token: 'from-env' } });
+    const given = parse(
+      ['--udp', 'cube', '--camera-url', url, '--camera-token', 'given'],
+      undefined,
+      {
+        HAL_CAMERA_TOKEN: 'from-env',
+      },
+    );
+    expect(given).toMatchObject({ camera: { url, token: 'given' } });
+    // the token is never shown again
+    expect(targetArgs(given)).toBe(`--udp cube:4210 --camera-url ${url} --camera-token <token>`);
+    // $HAL_CAMERA_TOKEN alone names no camera
+    expect(parse(['--udp', 'cube'], undefined, { HAL_CAMERA_TOKEN: 'x' })).not.toHaveProperty(
+      'camera',
+    );
+    expect(() =>
+      parse(['--udp', 'cube', '--camera-url', url], undefined, { HAL_CAMERA_TOKEN: 'a b' }),
+    ).toThrow('"$HAL_CAMERA_TOKEN" must be 1..128 of A-Z a-z 0-9 - . _ ~');
+  });
+
   it('reaches a NATS device by --device, or the default device with --nats alone', () => {
     expect(parse(['--device', 'cube-01'], undefined, { NATS_URL: 'nats://hub:4222' })).toEqual({
       kind: 'nats',
@@ -97,6 +129,20 @@ describe('naming the robot', () => {
     [['--udp', 'host:99999'], /"--udp" must be HOST, HOST:PORT or \[IPV6\]:PORT/],
     [['--device', 'a.b'], /a device id is 1-64 letters/],
     [['--sim', '--map', 'moon'], /Allowed choices are empty, obstacles, maze, room/],
+    [['--sim', '--camera-url', 'http://a'], /"--camera-url" needs --udp or --serial/],
+    [['--udp', 'a', '--camera-token', 'abc'], /"--camera-token" needs --camera-url/],
+    [
+      ['--udp', 'a', '--camera-url', 'rtsp://a'],
+      /"--camera-url" must be a http:\/\/ or https:\/\/ URL/,
+    ],
+    [
+      ['--udp', 'a', '--camera-url', 'cam'],
+      /"--camera-url" must be a http:\/\/ or https:\/\/ URL, got "cam"/,
+    ],
+    [
+      ['--udp', 'a', '--camera-url', 'http://a', '--camera-token', 'a/b'],
+      /"--camera-token" must be 1\.\.128 of/,
+    ],
   ])('refuses %j with a clear usage error', (argv, message) => {
     expect(usage(argv)).toMatch(message);
   });

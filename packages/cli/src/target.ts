@@ -6,6 +6,7 @@ import { hexKeyArg, hostPortArg, hostPortText, integerArg, positiveArg, urlArg }
 import type { NatsConnectOptions } from '@hal/nats';
 import { BUILTIN_MAPS } from '@hal/simulation';
 import type { BuiltinMapName } from '@hal/simulation';
+import { cameraToken, cameraTokenArg, cameraUrlArg } from './camera-options.js';
 import { CliError } from './cli-error.js';
 import { addNatsOptions, deviceIdArg, natsConnectOptions } from './nats-options.js';
 import type { NatsCliOptions } from './nats-options.js';
@@ -20,6 +21,7 @@ export type Target =
       key?: string;
       timeScale: number;
       calibration?: string;
+      camera?: TargetCamera;
     }
   | {
       kind: 'serial';
@@ -28,9 +30,16 @@ export type Target =
       key?: string;
       timeScale: number;
       calibration?: string;
+      camera?: TargetCamera;
     }
   | { kind: 'ws'; url: string; token?: string }
   | { kind: 'nats'; deviceId?: string; nats: NatsConnectOptions };
+
+/** A physical robot's ESP32-CAM: its base URL and token (`connection.cameraUrl`/`cameraToken`). */
+export interface TargetCamera {
+  url: string;
+  token?: string;
+}
 
 export type TargetKind = Target['kind'];
 export const TARGET_KINDS: readonly TargetKind[] = ['sim', 'udp', 'serial', 'ws', 'nats'];
@@ -45,6 +54,8 @@ export interface TargetCliOptions extends NatsCliOptions {
   key?: string;
   timeScale?: number;
   calibration?: string;
+  cameraUrl?: string;
+  cameraToken?: string;
   ws?: string;
   token?: string;
   device?: string;
@@ -98,6 +109,21 @@ export function addTargetOptions(
         "the robot's pre-shared key (with --udp or --serial; default $HAL_KEY)",
       ).argParser(hexKeyArg('--key')),
     );
+  }
+  if (has('udp') || has('serial')) {
+    command
+      .addOption(
+        new Option(
+          '--camera-url <url>',
+          "the robot's ESP32-CAM, http(s)://HOST[:PORT] (with --udp or --serial; its stream is /stream)",
+        ).argParser(cameraUrlArg),
+      )
+      .addOption(
+        new Option(
+          '--camera-token <token>',
+          "the camera's token, its CAM_TOKEN (with --camera-url; default $HAL_CAMERA_TOKEN)",
+        ).argParser(cameraTokenArg('--camera-token')),
+      );
   }
   if (has('sim') || has('udp') || has('serial')) {
     command.addOption(
@@ -216,7 +242,9 @@ export function resolveTarget(
   const kind = named[0]![0];
   if (kind !== 'sim') onlyWith(options, ['map'], '--sim');
   if (kind !== 'serial') onlyWith(options, ['baud'], '--serial');
-  if (kind !== 'udp' && kind !== 'serial') onlyWith(options, ['key'], '--udp or --serial');
+  if (kind !== 'udp' && kind !== 'serial')
+    onlyWith(options, ['key', 'cameraUrl', 'cameraToken'], '--udp or --serial');
+  if (options.cameraUrl === undefined) onlyWith(options, ['cameraToken'], '--camera-url');
   if (kind === 'ws' || kind === 'nats')
     onlyWith(options, ['timeScale', 'calibration'], '--sim, --udp or --serial');
   const keyText = options.key ?? env['HAL_KEY'];
@@ -225,11 +253,19 @@ export function resolveTarget(
       ? {}
       : { key: hexKeyArg(options.key === undefined ? '$HAL_KEY' : '--key')(keyText) };
   const calibration = options.calibration === undefined ? {} : { calibration: options.calibration };
+  const camera = physicalCamera(options, env, kind);
   switch (kind) {
     case 'sim':
       return { kind, map: options.map ?? 'empty', speed: options.timeScale ?? 1, ...calibration };
     case 'udp':
-      return { kind, ...options.udp!, ...key, timeScale: options.timeScale ?? 1, ...calibration };
+      return {
+        kind,
+        ...options.udp!,
+        ...key,
+        timeScale: options.timeScale ?? 1,
+        ...calibration,
+        ...camera,
+      };
     case 'serial':
       return {
         kind,
@@ -238,6 +274,7 @@ export function resolveTarget(
         ...key,
         timeScale: options.timeScale ?? 1,
         ...calibration,
+        ...camera,
       };
     case 'ws': {
       const token = options.token ?? env['HAL_SERVE_TOKEN'];
@@ -254,6 +291,17 @@ export function resolveTarget(
         nats: natsConnectOptions(options, env),
       };
   }
+}
+
+/** The camera of a physical robot: `--camera-url` with its token (or $HAL_CAMERA_TOKEN's). */
+function physicalCamera(
+  options: TargetCliOptions,
+  env: Readonly<Record<string, string | undefined>>,
+  kind: TargetKind,
+): { camera?: TargetCamera } {
+  if (options.cameraUrl === undefined || (kind !== 'udp' && kind !== 'serial')) return {};
+  const token = cameraToken(options.cameraToken, env);
+  return { camera: { url: options.cameraUrl, ...(token === undefined ? {} : { token }) } };
 }
 
 /** A short name for the target, for messages (`udp 127.0.0.1:4210`). */
@@ -289,7 +337,11 @@ export function targetArgs(target: Target): string | undefined {
           : `--serial ${target.path}${target.baudRate === undefined ? '' : ` --baud ${target.baudRate}`}`;
       const key = target.key === undefined ? '' : ' --key <hex>';
       const scale = target.timeScale === 1 ? '' : ` --time-scale ${target.timeScale}`;
-      return `${where}${key}${scale}`;
+      const camera =
+        target.camera === undefined
+          ? ''
+          : ` --camera-url ${target.camera.url}${target.camera.token === undefined ? '' : ' --camera-token <token>'}`;
+      return `${where}${key}${scale}${camera}`;
     }
     case 'ws':
       return `--ws ${target.url}`;

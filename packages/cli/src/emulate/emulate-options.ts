@@ -2,6 +2,7 @@
 import { Option } from 'commander';
 import type { Command } from 'commander';
 import { ipv4Arg } from '../discover/options.js';
+import { cameraTokenArg } from '../camera-options.js';
 import { hexKeyArg, integerArg, numberArg, portArg } from '../values.js';
 import { deviceIdArg } from '../nats-options.js';
 
@@ -17,7 +18,19 @@ export interface EmulateCliOptions {
   announce: boolean;
   emulator?: string;
   interface?: string;
+  /** The camera's port (`--camera` alone: {@link DEFAULT_CAMERA_PORT}), when it is served. */
+  camera?: number;
+  /** The world file the camera sees (default an empty arena). */
+  world?: string;
+  /** The token the camera asks for (default $HAL_CAMERA_TOKEN). */
+  cameraToken?: string;
 }
+
+/** The port `--camera` serves on when it names none. */
+export const DEFAULT_CAMERA_PORT = 8080;
+
+/** How often cube-emulator reports the wheels for the camera, ms (a 10 fps camera: 5 a frame). */
+export const WHEEL_REPORT_MS = 20;
 
 export function addEmulateOptions(command: Command): Command {
   return command
@@ -67,6 +80,26 @@ export function addEmulateOptions(command: Command): Command {
       new Option('--interface <address>', 'IPv4 address of the interface to announce on').argParser(
         ipv4Arg('--interface'),
       ),
+    )
+    .addOption(
+      new Option(
+        '--camera [port]',
+        `also serve the ESP32-CAM's HTTP interface (/stream, /status) on the --bind address, rendered from the robot's true pose (port ${DEFAULT_CAMERA_PORT} by default, 0 = a free one)`,
+      )
+        .preset(String(DEFAULT_CAMERA_PORT))
+        .argParser(portArg('--camera', { anyFree: true })),
+    )
+    .addOption(
+      new Option(
+        '--world <file>',
+        'the world the camera sees, in the eval task format ({ map, start, objects }; with --camera; default an empty arena)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--camera-token <token>',
+        "the token the camera asks for, as the sketch's CAM_TOKEN (with --camera; default $HAL_CAMERA_TOKEN)",
+      ).argParser(cameraTokenArg('--camera-token')),
     );
 }
 
@@ -78,5 +111,6 @@ export function emulatorArgs(o: EmulateCliOptions): string[] {
   if (o.timeScale !== undefined) args.push('--time-scale', String(o.timeScale));
   if (o.hostTimeoutMs !== undefined) args.push('--host-timeout-ms', String(o.hostTimeoutMs));
   if (!o.pty) args.push('--no-pty');
+  if (o.camera !== undefined) args.push('--report-wheels-ms', String(WHEEL_REPORT_MS));
   return args;
 }
