@@ -78,8 +78,8 @@ export class SimulatedImu {
   #walkRad = 0;
 
   /**
-   * `seed`: a number, or where to draw one when the IMU is first read (the world's random
-   * source), so that an IMU nobody reads draws nothing.
+   * `seed`: where the errors' seed is drawn when the IMU is first read (the world's random
+   * source), unless `options.seed` gives it; an IMU nobody reads draws nothing.
    */
   constructor(robot: SimRobot, options: ImuOptions, seed: () => number) {
     this.#options = resolved(options);
