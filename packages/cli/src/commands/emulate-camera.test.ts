@@ -2,6 +2,8 @@
 // as every command reaches a robot's camera (--udp with --camera-url and the token from
 // $HAL_CAMERA_TOKEN), sees the world file from where the emulated body is.
 import { mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { createServer } from 'node:net';
+import type { AddressInfo } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { Command } from 'commander';
@@ -143,6 +145,23 @@ describe('hal emulate --camera', { timeout: 30_000 }, () => {
     const io = captureIO();
     expect(await runHal(['emulate', '--no-announce', ...args], io)).toBe(2);
     expect(io.stderr()).toContain(why);
+  });
+
+  it('names --camera when its port is taken, and stops the robot it started', async () => {
+    const taken = createServer();
+    await new Promise<void>((resolve) => taken.listen(0, '127.0.0.1', resolve));
+    const port = (taken.address() as AddressInfo).port;
+    try {
+      const io = captureIO();
+      const args = ['emulate', '--emulator', builtEmulatorPath(), '--udp-port', '0', '--no-pty'];
+      const code = await runHal([...args, '--no-announce', '--camera', String(port)], io);
+      expect(code).toBe(1);
+      expect(io.stderr()).toContain(
+        `port ${port} is in use (EADDRINUSE); choose another with --camera PORT`,
+      );
+    } finally {
+      await new Promise((resolve) => taken.close(resolve));
+    }
   });
 
   it('fails naming the file and the field of a bad world file, before starting anything', async () => {
