@@ -1,0 +1,27 @@
+export { ColourDetector } from './colour-detector.js';
+export type { ColourDetectorOptions } from './colour-detector.js';
+export { decodeFrame, defaultJpegDecoder, frameBytes, jpegJsDecoder } from './decode.js';
+export { loadSharpDecoder } from './sharp-decoder.js';
+export type { JpegDecoder } from './decode.js';
+export type { Detector, DetectorInput } from './detector.js';
+export { FloorModel } from './floor-model.js';
+export type { FloorModelOptions } from './floor-model.js';
+export { FramePerceiver } from './frame-perceiver.js';
+export type { FramePerceiverOptions, Percept } from './frame-perceiver.js';
+export { DEFAULT_FREE_SPACE, scanFreeSpace } from './free-space.js';
+export type { FreeSpaceColumn, FreeSpaceOptions } from './free-space.js';
+export type { RgbaImage } from './image.js';
+export {
+  COLOUR_NAMES,
+  ColourTable,
+  colourLabel,
+  colourOf,
+  DEFAULT_COLOUR_THRESHOLDS,
+  DEFAULT_PALETTE,
+} from './palette.js';
+export type { ColourName, ColourThresholds, PaletteColour } from './palette.js';
+export { projectDetection, toWorld } from './project-object.js';
+export type { Detection } from './project-object.js';
+export type { ImageBox, ObjectKind, SeenObject } from './seen-object.js';
+export { clearanceAhead } from './clearance.js';
+export type { Clearance } from './clearance.js';
