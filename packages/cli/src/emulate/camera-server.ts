@@ -215,6 +215,7 @@ export async function startCameraServer(options: CameraServerOptions): Promise<C
   };
 
   const handle = (req: IncomingMessage, res: ServerResponse): void => {
+    res.sendDate = false; // the camera has no clock to date its answers with
     const url = new URL(req.url ?? '/', 'http://camera');
     if (req.method !== 'GET') {
       fixed(res, 405, 'only GET\n');
