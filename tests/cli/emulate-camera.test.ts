@@ -109,9 +109,23 @@ afterAll(async () => {
   if (dir !== undefined) await rm(dir, { recursive: true, force: true });
 });
 
-/** A frame made after the last motion ended (the camera keeps its latest; a frame is 100 ms). */
+/** The camera's frames sent so far (its GET /status). */
+async function servedFrames(): Promise<number> {
+  const response = await fetch(`${cameraUrl}/status?token=${TOKEN}`);
+  return ((await response.json()) as { frames_served: number }).frames_served;
+}
+
+/**
+ * A frame made after the last motion ended: a frame is rendered as it is sent, so once three more
+ * have gone out the HAL's latest shows the robot where the motion left it (bounded: 5 s).
+ */
 async function frameNow(): Promise<RgbaImage> {
-  await new Promise((resolve) => setTimeout(resolve, 350));
+  const target = (await servedFrames()) + 3;
+  const deadline = Date.now() + 5000;
+  while ((await servedFrames()) < target) {
+    if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
+    await new Promise((resolve) => setTimeout(resolve, 30));
+  }
   return decode(await hal.vision.captureFrame());
 }
 

@@ -12,6 +12,7 @@ import { captureIO } from '../capture-io.fixture.js';
 import type { CapturedIO } from '../capture-io.fixture.js';
 import { builtEmulatorPath } from '../emulate/emulator-path.fixture.js';
 import { redRegion } from '../emulate/frame-colour.fixture.js';
+import { framesLater } from '../emulate/served-frames.fixture.js';
 import { runHal } from '../program.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
@@ -91,7 +92,8 @@ describe('hal emulate --camera', { timeout: 30_000 }, () => {
     );
     const opened = await openTarget(target, captureIO(env));
     try {
-      const settle = () => new Promise((resolve) => setTimeout(resolve, 350));
+      // a frame is rendered as it is sent: a few sent after now show the robot as it is now
+      const settle = () => framesLater(url, TOKEN);
       await settle();
       const before = redRegion(await opened.hal.vision.captureFrame());
       expect([before.width, before.height]).toEqual([320, 240]);

@@ -6,6 +6,7 @@ import { afterEach, describe, expect, it } from 'vitest';
 import { startEmulatedCamera } from './emulated-camera.js';
 import type { EmulatedCamera } from './emulated-camera.js';
 import { redRegion } from './frame-colour.fixture.js';
+import { framesLater } from './served-frames.fixture.js';
 import { startMockEmulator } from './mock-emulator.js';
 import type { EmulateCliOptions } from './emulate-options.js';
 import type { EmulatorProcess } from './emulator-process.js';
@@ -67,16 +68,16 @@ async function setUp(token?: string) {
   return { camera, hal };
 }
 
-/** The next frame made after now (the camera keeps the latest: wait out one frame interval). */
-async function freshFrame(hal: PhysicalHAL): Promise<string> {
-  await new Promise((resolve) => setTimeout(resolve, 350));
+/** A frame rendered after now (the HAL keeps the latest frame the camera sent). */
+async function freshFrame(hal: PhysicalHAL, camera: EmulatedCamera): Promise<string> {
+  await framesLater(camera.url, 'mock-cam');
   return hal.vision.captureFrame();
 }
 
 describe('the emulated camera with the mock robot', { timeout: 20_000 }, () => {
   it("sees the world from the robot's true pose, over UDP and MJPEG", async () => {
     const { camera, hal } = await setUp('mock-cam');
-    const before = redRegion(await freshFrame(hal));
+    const before = redRegion(await freshFrame(hal, camera));
     expect([before.width, before.height]).toEqual([320, 240]);
     expect(before.count).toBeGreaterThan(100);
     // the box is left of the middle (y > 0 is left), and stays left while the robot drives at it
@@ -85,7 +86,7 @@ describe('the emulated camera with the mock robot', { timeout: 20_000 }, () => {
     const moved = await hal.locomotion.moveForward(40);
     expect(moved.success, moved.error).toBe(true);
     expect(camera.pose().x).toBeCloseTo(0.4, 2);
-    const after = redRegion(await freshFrame(hal));
+    const after = redRegion(await freshFrame(hal, camera));
     expect(after.count).toBeGreaterThan(before.count * 1.5);
     expect(after.column).toBeLessThan(before.column);
   });
