@@ -18,9 +18,7 @@ export function kindFromShading(
   // The outermost columns mix with the background: leave them out.
   const trimmed = means.slice(2, -2);
   // A 3-column moving average takes the JPEG's blocky noise out of the profile.
-  const inner = trimmed.map(
-    (m, i) => ((trimmed[i - 1] ?? m) + m + (trimmed[i + 1] ?? m)) / 3,
-  );
+  const inner = trimmed.map((m, i) => ((trimmed[i - 1] ?? m) + m + (trimmed[i + 1] ?? m)) / 3);
   if (inner.length < minColumns) return 'unknown';
   const peak = Math.max(...inner);
   const least = Math.min(...inner);
@@ -34,11 +32,14 @@ export function kindFromShading(
     largestStep = Math.max(largestStep, step);
     travel += step;
   }
-  // A round body: brightest inside, darker on both sides.
+  // A round body: brightest in its middle, darker towards both sides.
   const top = inner.indexOf(peak);
   const leftDrop = (peak - Math.min(...inner.slice(0, top + 1))) / peak;
   const rightDrop = (peak - Math.min(...inner.slice(top))) / peak;
-  if (range >= 0.12 && leftDrop >= 0.4 * range && rightDrop >= 0.4 * range) return 'pillar';
+  const middle = top >= 0.2 * (inner.length - 1) && top <= 0.8 * (inner.length - 1);
+  if (range >= 0.12 && middle && leftDrop >= 0.4 * range && rightDrop >= 0.4 * range) {
+    return 'pillar';
+  }
   // Two flat faces: brightness changes once, from one face's to the other's.
   if (travel <= 1.8 * range && largestStep >= 0.1 * range) return 'box';
   return 'unknown';
