@@ -63,11 +63,14 @@ describe('objects in a rendered frame', () => {
   });
 
   it('names no object for grey walls, the floor or the sky', async () => {
-    const percept = await look({ name: 'room', walls: [{ from: [1, -1], to: [1, 1] }] }, {
-      x: 0,
-      y: 0,
-      yaw: 0,
-    });
+    const percept = await look(
+      { name: 'room', walls: [{ from: [1, -1], to: [1, 1] }] },
+      {
+        x: 0,
+        y: 0,
+        yaw: 0,
+      },
+    );
     expect(percept.objects).toEqual([]);
   });
 });
@@ -83,11 +86,14 @@ describe('free space in a rendered frame', () => {
     // The wall's face is 0.98 m from the centre: 0.91 m from the body's front.
     expect(Math.abs(ahead.aheadM - 0.91)).toBeLessThan(0.05);
 
-    const open = await look({ name: 'open', arena: { width: 12, height: 12 } }, {
-      x: 0,
-      y: 0,
-      yaw: 0,
-    });
+    const open = await look(
+      { name: 'open', arena: { width: 12, height: 12 } },
+      {
+        x: 0,
+        y: 0,
+        yaw: 0,
+      },
+    );
     const clear = clearanceAhead(open.freeSpace, 0.07, 0.1);
     expect(clear.blocked).toBe(false);
     expect(open.freeSpace.every((c) => !c.hit)).toBe(true);
@@ -97,9 +103,9 @@ describe('free space in a rendered frame', () => {
 describe('bad frames', () => {
   it('refuses what is not a JPEG and a frame of another size, with errors that say so', async () => {
     const perceiver = new FramePerceiver();
-    await expect(perceiver.perceive('data:image/jpeg;base64,aGVsbG8=', { x: 0, y: 0, yaw: 0 })).rejects.toThrow(
-      /not a JPEG/,
-    );
+    await expect(
+      perceiver.perceive('data:image/jpeg;base64,aGVsbG8=', { x: 0, y: 0, yaw: 0 }),
+    ).rejects.toThrow(/not a JPEG/);
     await expect(perceiver.perceive('%%%', { x: 0, y: 0, yaw: 0 })).rejects.toThrow(/base64/);
     const world = new World();
     const small = renderRobotView(world, world.addRobot(), { width: 160, height: 120 });

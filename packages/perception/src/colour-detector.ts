@@ -50,7 +50,9 @@ export class ColourDetector implements Detector {
   constructor(options: ColourDetectorOptions = {}) {
     this.#minPixels = options.minPixels ?? 30;
     if (!(Number.isInteger(this.#minPixels) && this.#minPixels >= 1)) {
-      throw new RangeError(`"minPixels" must be a whole number of 1 or more, got ${this.#minPixels}`);
+      throw new RangeError(
+        `"minPixels" must be a whole number of 1 or more, got ${this.#minPixels}`,
+      );
     }
   }
 

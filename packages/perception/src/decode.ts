@@ -13,7 +13,10 @@ export function frameBytes(frame: string | Uint8Array): Uint8Array {
   if (typeof frame !== 'string') return frame;
   const base64 = frame.replace(DATA_URL, '');
   if (!/^[A-Za-z0-9+/]*={0,2}$/.test(base64) || base64.length === 0) {
-    throw new HalError('INVALID_PARAMETER', 'the frame is not a base64 JPEG (nor a data: URL of one)');
+    throw new HalError(
+      'INVALID_PARAMETER',
+      'the frame is not a base64 JPEG (nor a data: URL of one)',
+    );
   }
   const B = (globalThis as { Buffer?: { from(s: string, e: 'base64'): Uint8Array } }).Buffer;
   if (B !== undefined) return new Uint8Array(B.from(base64, 'base64'));

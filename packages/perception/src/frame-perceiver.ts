@@ -80,7 +80,11 @@ export class FramePerceiver {
   }
 
   /** Decodes `frame` (a JPEG data URL, base64 or bytes) and perceives it at `pose`. */
-  async perceive(frame: string | Uint8Array, pose: Pose2D, capturedAt = Date.now()): Promise<Percept> {
+  async perceive(
+    frame: string | Uint8Array,
+    pose: Pose2D,
+    capturedAt = Date.now(),
+  ): Promise<Percept> {
     const start = performance.now();
     const image = await decodeFrame(frame, this.#decoder);
     const decodeMs = performance.now() - start;

@@ -123,8 +123,11 @@ export class ColourTable {
     const table = this.#labels;
     for (let i = 0, o = 0; o < out.length; i += 4, o += 1) {
       out[o] =
-        table[(((data[i] ?? 0) >> 2) << 12) | (((data[i + 1] ?? 0) >> 2) << 6) | ((data[i + 2] ?? 0) >> 2)] ??
-        0;
+        table[
+          (((data[i] ?? 0) >> 2) << 12) |
+            (((data[i + 1] ?? 0) >> 2) << 6) |
+            ((data[i + 2] ?? 0) >> 2)
+        ] ?? 0;
     }
   }
 }

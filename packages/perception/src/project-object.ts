@@ -97,7 +97,8 @@ export function projectDetection(
     // measured best.
     const lineX = right.x - left.x;
     const lineY = right.y - left.y;
-    const offLine = Math.abs((near.x - left.x) * lineY - (near.y - left.y) * lineX) / Math.max(1e-9, span);
+    const offLine =
+      Math.abs((near.x - left.x) * lineY - (near.y - left.y) * lineX) / Math.max(1e-9, span);
     let a = left;
     let b = right;
     if (offLine > 0.08 * span) {

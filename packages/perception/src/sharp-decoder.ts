@@ -7,7 +7,10 @@ interface SharpLike {
       raw(): {
         toBuffer(options: {
           resolveWithObject: true;
-        }): Promise<{ data: Uint8Array; info: { width: number; height: number; channels: number } }>;
+        }): Promise<{
+          data: Uint8Array;
+          info: { width: number; height: number; channels: number };
+        }>;
       };
     };
   };
@@ -42,7 +45,11 @@ export function loadSharpDecoder(): Promise<JpegDecoder | undefined> {
         .raw()
         .toBuffer({ resolveWithObject: true });
       if (info.channels !== 4) throw new Error(`sharp gave ${info.channels} channels, not 4`);
-      return { width: info.width, height: info.height, data: new Uint8Array(data.buffer, data.byteOffset, data.length) };
+      return {
+        width: info.width,
+        height: info.height,
+        data: new Uint8Array(data.buffer, data.byteOffset, data.length),
+      };
     };
   })();
   return sharpLoad;
