@@ -84,7 +84,7 @@ export function addEmulateOptions(command: Command): Command {
     .addOption(
       new Option(
         '--camera [port]',
-        `also serve the ESP32-CAM's HTTP interface (/stream, /status) on the --bind address, rendered from the robot's true pose (0 = a free port)`,
+        "also serve the ESP32-CAM's HTTP interface (/stream, /status) on the --bind address, rendered from the robot's true pose (0 = a free port)",
       )
         .preset(String(DEFAULT_CAMERA_PORT))
         .argParser(portArg('--camera', { anyFree: true })),
