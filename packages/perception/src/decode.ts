@@ -1,10 +1,8 @@
 import { HalError } from '@hal/types';
 import jpeg from 'jpeg-js';
-import type { RgbaImage } from './image.js';
+import type { JpegDecoder, RgbaImage } from './image.js';
 import { loadSharpDecoder } from './sharp-decoder.js';
 
-/** Decodes JPEG bytes to RGBA. */
-export type JpegDecoder = (bytes: Uint8Array) => RgbaImage | Promise<RgbaImage>;
 
 const DATA_URL = /^data:image\/jpeg;base64,/;
 

@@ -5,7 +5,7 @@ import { cameraModel } from '@hal/types';
 import type { CameraModel } from '@hal/types';
 import { ColourDetector } from './colour-detector.js';
 import { decodeFrame } from './decode.js';
-import type { JpegDecoder } from './decode.js';
+import type { JpegDecoder } from './image.js';
 import type { Detector } from './detector.js';
 import { FloorModel } from './floor-model.js';
 import type { FloorModelOptions } from './floor-model.js';

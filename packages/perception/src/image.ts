@@ -9,3 +9,6 @@ export interface RgbaImage {
 export function pixelOffset(image: RgbaImage, x: number, y: number): number {
   return (y * image.width + x) * 4;
 }
+
+/** Decodes JPEG bytes to RGBA. */
+export type JpegDecoder = (bytes: Uint8Array) => RgbaImage | Promise<RgbaImage>;

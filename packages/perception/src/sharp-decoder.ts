@@ -1,4 +1,4 @@
-import type { JpegDecoder } from './decode.js';
+import type { JpegDecoder } from './image.js';
 
 /** The part of sharp's API the decoder uses. */
 interface SharpLike {
