@@ -42,8 +42,12 @@ describe('WorldScene', () => {
     const camera = view.robotCamera(robot);
     const ahead = new THREE.Vector3();
     camera.getWorldDirection(ahead);
-    // Facing +y in the world is facing -z in Three.
-    expect(ahead.z).toBeCloseTo(-1, 3);
+    // Facing +y in the world is facing -z in Three, looking down by the camera's 20 degree tilt
+    // (Three's y is up).
+    const tilt = (20 * Math.PI) / 180;
+    expect(ahead.z).toBeCloseTo(-Math.cos(tilt), 3);
+    expect(ahead.y).toBeCloseTo(-Math.sin(tilt), 3);
+    expect(ahead.x).toBeCloseTo(0, 3);
     expect(fromThree(camera.position).y).toBeCloseTo(0.2 + 0.05, 2);
     const trail = view.scene.getObjectsByProperty('type', 'Line')[0] as THREE.Line;
     expect(trail.geometry.drawRange.count).toBeGreaterThan(10);
