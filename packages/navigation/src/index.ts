@@ -44,6 +44,7 @@ export type { Frontier, FrontierOptions } from './grid/frontier.js';
 
 export { NavigationBridge } from './bridge/navigation-bridge.js';
 export type { NavigationBridgeOptions } from './bridge/bridge-options.js';
+export type { WorldObservation, WorldObserver } from './bridge/world-observer.js';
 export type { NavigationEvents } from './bridge/navigation-events.js';
 export type {
   NavigationOutcome,

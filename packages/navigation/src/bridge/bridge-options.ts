@@ -4,7 +4,8 @@ import type { KnownMap } from '../grid/known-map.js';
 import type { OccupancyGrid } from '../grid/occupancy-grid.js';
 import type { RangeSensorModel } from '../grid/range-sensor-update.js';
 import type { DecisionProvider } from '../decision/provider.js';
-import { positiveOption } from '../errors.js';
+import type { WorldObserver } from './world-observer.js';
+import { NavigationError, positiveOption } from '../errors.js';
 import type { Logger } from '@hal/types';
 
 /** Options of a {@link NavigationBridge}. */
@@ -43,10 +44,16 @@ export interface NavigationBridgeOptions {
   /** Range sensor model for the world model, or false to ignore range sensors. */
   rangeSensors?: Partial<RangeSensorModel> | false;
   /**
-   * With range sensors, turn to face a leg before driving it when it lies more than this many
+   * With range sensors or an `observe`r, turn to face a leg before driving it when it lies more than this many
    * degrees off the heading (the front sensor looks first). Default 20; `false` drives at once.
    */
   faceBeforeDrivingDeg?: number | false;
+  /**
+   * What the bridge perceives each cycle beside its range sensors (a camera pipeline): called
+   * after the range sensors are read, with a frame captured for it and the pose, to update the
+   * grid before the provider decides. Bounded by `sensorTimeoutMs`. Default none.
+   */
+  observe?: WorldObserver;
   /** Cycles in a row without a route before the run fails UNREACHABLE. Default 4. */
   maxNoPathCycles?: number;
   /** Stuck recoveries allowed in one run before it fails STUCK. Default 3. */
@@ -75,6 +82,8 @@ export interface BridgeSettings {
   readonly faceFirstDeg: number;
   readonly maxNoPathCycles: number;
   readonly maxStuckRecoveries: number;
+  /** The world observer, if any. */
+  readonly observe: WorldObserver | undefined;
   readonly now: () => number;
 }
 
@@ -100,6 +109,12 @@ export function resolveBridgeSettings(options: NavigationBridgeOptions): BridgeS
     faceFirst: face !== false,
     faceFirstDeg: face === false ? 180 : positiveOption('faceBeforeDrivingDeg', face),
     maxStuckRecoveries: options.maxStuckRecoveries ?? 3,
+    observe: checkObserver(options.observe),
     now: options.now ?? Date.now,
   };
+}
+
+function checkObserver(observe: unknown): WorldObserver | undefined {
+  if (observe === undefined || typeof observe === 'function') return observe as WorldObserver;
+  throw new NavigationError('CONFIG', `"observe" must be a function, got ${typeof observe}`);
 }

@@ -11,6 +11,7 @@ import type { Terminal } from './navigation-outcome.js';
 import { recoverFromStuck } from './recovery.js';
 import { captureFrame, readPose, readRanges } from './sensing.js';
 import { DEG } from './turning.js';
+import { observeWorld } from './world-observer.js';
 import { refreshPose } from './world-updates.js';
 
 /** Closer than this, metres, and the robot has not moved. */
@@ -18,8 +19,8 @@ const STILL_M = 0.01;
 
 /**
  * The run's cycles, until one ends it: each cycle checks the stop request, the emergency stop,
- * the goal and the caps, then senses (pose, range sensors, frame), decides and acts, and reads
- * the pose again. Motions that leave the robot where it was trigger the stuck recovery.
+ * the goal and the caps, then senses (pose, range sensors, frame, the world observer), decides
+ * and acts, and reads the pose again. Motions that leave the robot where it was trigger the stuck recovery.
  */
 export async function runCycles(
   ctx: BridgeContext,
@@ -48,7 +49,12 @@ export async function runCycles(
     // Sense: the world model follows the actual pose.
     grid.markFree(pose.x, pose.y, grid.robotRadiusM);
     const readings = await readRanges(ctx, pose);
-    const frame = ctx.provider.wantsFrame === true ? await captureFrame(ctx) : undefined;
+    const wantsFrame = ctx.provider.wantsFrame === true;
+    const observer = settings.observe;
+    const frame = wantsFrame || observer !== undefined ? await captureFrame(ctx) : undefined;
+    if (observer !== undefined) {
+      await observeWorld(ctx, observer, { cycle: state.cycle, frame, pose, grid });
+    }
     const cycleEvent: NavigationEvents['cycle'] = { cycle: state.cycle, pose, elapsedMs: elapsed };
     if (readings !== undefined) cycleEvent.readings = readings;
     ctx.events.emit('cycle', cycleEvent);
@@ -62,7 +68,7 @@ export async function runCycles(
       grid,
     };
     if (readings !== undefined) context.readings = readings;
-    if (frame !== undefined) context.frame = frame;
+    if (wantsFrame && frame !== undefined) context.frame = frame;
     if (lastResult !== undefined) context.lastResult = lastResult;
     const decided = await askProvider(ctx, context, signal);
     if ('terminal' in decided) return decided.terminal;

@@ -56,10 +56,12 @@ export async function followRoute(
   }
   const leg = cutLeg(ctx, pose, next);
   ctx.events.emit('path', { cycle: state.cycle, target, plan: { ...plan, waypoints }, leg });
-  // Look before driving: with range sensors, first turn to face the leg, so the front sensor
-  // has seen it before the wheels go (the next cycle re-plans with what it saw).
+  // Look before driving: with range sensors or a world observer (a camera), first turn to face
+  // the leg, so the front sensor or the camera has seen it before the wheels go (the next cycle
+  // re-plans with what it saw).
   const turn = turnDeg(pose.yaw, Math.atan2(leg.y - pose.y, leg.x - pose.x));
-  if (settings.faceFirst && sensorsInUse(ctx) && Math.abs(turn) > settings.faceFirstDeg) {
+  const looking = sensorsInUse(ctx) || settings.observe !== undefined;
+  if (settings.faceFirst && looking && Math.abs(turn) > settings.faceFirstDeg) {
     return runMotion(ctx, state, action, 'turn', rotateArgs(turn));
   }
   return runMotion(ctx, state, action, 'point', { x: leg.x, y: leg.y });
