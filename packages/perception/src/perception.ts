@@ -15,6 +15,8 @@ export interface PerceptionOptions extends FramePerceiverOptions {
   grid?: OccupancyGrid;
   /** Longest wait for a frame or a pose, ms. Default 5000. */
   timeoutMs?: number;
+  /** The robot's body radius, metres (clearances are from its edge). Default 0.07 (V1). */
+  bodyRadiusM?: number;
 }
 
 /** One look: what the frame showed, and what the memory made of its objects. */
@@ -33,16 +35,22 @@ export class Perception {
   readonly perceiver: FramePerceiver;
   readonly memory: ObjectMemory;
   readonly grid: OccupancyGrid | undefined;
+  readonly bodyRadiusM: number;
   readonly #timeoutMs: number;
   readonly #listeners = new Set<(look: Look) => void>();
 
   constructor(hal: HardwareAbstractionLayer, options: PerceptionOptions = {}) {
     this.hal = hal;
-    this.perceiver = new FramePerceiver(options);
+    // the camera the robot reports (its configuration or calibration) unless one is given
+    const camera = options.camera ?? hal.getDeviceInfo().camera;
+    this.perceiver = new FramePerceiver(camera === undefined ? options : { ...options, camera });
     this.memory =
       options.memory instanceof ObjectMemory ? options.memory : new ObjectMemory(options.memory);
     this.grid = options.grid;
     this.#timeoutMs = options.timeoutMs ?? 5000;
+    this.bodyRadiusM = options.bodyRadiusM ?? 0.07;
+    if (!(this.bodyRadiusM >= 0 && Number.isFinite(this.bodyRadiusM)))
+      throw new RangeError(`"bodyRadiusM" must be 0 or more, got ${this.bodyRadiusM}`);
     if (!(this.#timeoutMs > 0 && Number.isFinite(this.#timeoutMs)))
       throw new RangeError(`"timeoutMs" must be a positive number, got ${this.#timeoutMs}`);
   }
