@@ -41,6 +41,12 @@ export const HAL_ERROR_CODES = [
   'AUTH_FAILED',
   /** Another client controls the robot: this one may only watch (read calls, state, e-stop). */
   'NOT_CONTROLLER',
+  /**
+   * The guard saw an obstacle ahead nearer than its stand-off: the motion was refused before
+   * anything moved, or stopped. `details.distanceM` is the free distance seen ahead of the body's
+   * front, metres, `details.source` what saw it (`camera` or `range`).
+   */
+  'OBSTACLE_AHEAD',
 ] as const;
 
 /** A HAL error code (see {@link HAL_ERROR_CODES}). */
