@@ -72,6 +72,12 @@ describe('objects in a rendered frame', () => {
       },
     );
     expect(percept.objects).toEqual([]);
+    // An arena too large for its walls to be drawn: floor and sky only.
+    const open = await look(
+      { name: 'open', arena: { width: 40, height: 40 } },
+      { x: 0, y: 0, yaw: 0 },
+    );
+    expect(open.objects).toEqual([]);
   });
 });
 

@@ -22,7 +22,7 @@ export const DEFAULT_PALETTE: readonly PaletteColour[] = Object.freeze([
   { name: 'orange', hueDeg: 31, toleranceDeg: 7 },
   { name: 'yellow', hueDeg: 45, toleranceDeg: 7 },
   { name: 'green', hueDeg: 131, toleranceDeg: 16 },
-  { name: 'blue', hueDeg: 224, toleranceDeg: 12 },
+  { name: 'blue', hueDeg: 224, toleranceDeg: 9 },
   { name: 'purple', hueDeg: 272, toleranceDeg: 10 },
 ]);
 
