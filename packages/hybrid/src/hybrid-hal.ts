@@ -280,6 +280,7 @@ export class HybridHAL implements HardwareAbstractionLayer {
       type: info.type,
       mode: this.mode,
       capabilities: [...info.capabilities],
+      ...(info.camera === undefined ? {} : { camera: info.camera }),
     };
   }
 

@@ -3,8 +3,8 @@
 // @hal/physical/protocol; the in-process mock robot is in @hal/physical/testing.
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
-export { calibrationParams } from './hal/calibration.js';
-export type { CalibrationSource, WheelCalibration } from './hal/calibration.js';
+export { calibrationParams, robotCalibration } from './hal/calibration.js';
+export type { CalibrationSource, RobotCalibration, WheelCalibration } from './hal/calibration.js';
 export {
   calibrationDir,
   calibrationOf,

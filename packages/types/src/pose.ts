@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import { CameraModelSchema } from './camera-model.js';
 
 const finite = z.number();
 
@@ -162,6 +163,10 @@ export const DeviceInfoSchema = z
     type: z.string(),
     mode: z.enum(['simulation', 'physical', 'hybrid']),
     capabilities: z.array(z.string()),
+    camera: CameraModelSchema.optional().describe(
+      'The camera model its frames are taken with (absent when it has no camera): what ' +
+        'perception projects with, so the model travels with the robot',
+    ),
   })
   .describe('Who the robot is and what it can do');
 export type DeviceInfo = z.infer<typeof DeviceInfoSchema>;

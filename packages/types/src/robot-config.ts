@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import { CameraModelSchema } from './camera-model.js';
 
 /**
  * The robot's geometry and the limits every layer enforces. Defaults are the V1 stepper cube:
@@ -167,6 +168,12 @@ export const HALConfigSchema = z.object({
   robot: RobotConfigSchema.partial()
     .optional()
     .describe('Geometry and limits, default the V1 robot'),
+  camera: CameraModelSchema.partial()
+    .optional()
+    .describe(
+      "The camera's model where it differs from V1's (its calibration wins where it has one); " +
+        'used only when the robot has a camera (connection.cameraUrl)',
+    ),
 });
 
 /** Configuration for creating a HAL instance. */

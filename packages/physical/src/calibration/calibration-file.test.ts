@@ -10,6 +10,7 @@ import {
   writeCalibrationFile,
 } from './calibration-file.js';
 import type { CalibrationFile } from './calibration-file.js';
+import { V1_CAMERA } from '@hal/types';
 
 const FILE: CalibrationFile = {
   version: 1,
@@ -56,8 +57,39 @@ describe('the calibration file', () => {
     const path = calibrationPath(join(dir, 'nested', 'calibration'), FILE.deviceId);
     await writeCalibrationFile(path, FILE);
     expect(await readCalibrationFile(path)).toEqual(FILE);
-    expect(calibrationOf(FILE)).toEqual({ wheelDiameterCm: 6.12, wheelBaseCm: 10.31 });
+    expect(calibrationOf(FILE)).toEqual({ wheels: { wheelDiameterCm: 6.12, wheelBaseCm: 10.31 } });
     expect(await readdir(join(dir, 'nested', 'calibration'))).toEqual(['cube-a1b2c3.json']);
+  });
+
+  it('holds a camera model beside the wheels, or alone', async () => {
+    const camera = {
+      model: { ...V1_CAMERA, tiltDeg: 17.5 },
+      calibratedAt: '2026-12-02T20:00:00.000Z',
+      residualM: 0.004,
+      measurements: [{ colour: 'red', distanceM: 0.5, baseRow: 170 }],
+    };
+    const both = join(dir, 'both.json');
+    await writeCalibrationFile(both, { ...FILE, camera });
+    expect(calibrationOf((await readCalibrationFile(both))!)).toEqual({
+      wheels: { wheelDiameterCm: 6.12, wheelBaseCm: 10.31 },
+      camera: { ...V1_CAMERA, tiltDeg: 17.5 },
+    });
+    const alone = join(dir, 'alone.json');
+    const { wheelDiameterCm: _d, wheelBaseCm: _b, measurements: _m, ...rest } = FILE;
+    await writeCalibrationFile(alone, { ...rest, camera });
+    expect(calibrationOf((await readCalibrationFile(alone))!)).toEqual({
+      camera: { ...V1_CAMERA, tiltDeg: 17.5 },
+    });
+  });
+
+  it('is refused when it holds half the wheels or nothing at all', async () => {
+    const path = join(dir, 'cube-1.json');
+    const { wheelBaseCm: _b, ...half } = FILE;
+    await writeFile(path, JSON.stringify(half));
+    await expect(readCalibrationFile(path)).rejects.toThrow(/"wheelDiameterCm" must be given with/);
+    const { wheelDiameterCm: _d, ...none } = half;
+    await writeFile(path, JSON.stringify(none));
+    await expect(readCalibrationFile(path)).rejects.toThrow(/"wheelDiameterCm" is missing/);
   });
 
   it('is absent (undefined) when there is no file for the device', async () => {

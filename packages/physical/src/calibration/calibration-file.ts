@@ -3,9 +3,9 @@
 // Validated on every read: a corrupt file is an error naming the file, never silently ignored.
 // Node's file system is loaded when a file is read or written, so a browser bundle of this
 // package never meets it.
-import { HalError } from '@hal/types';
+import { CameraModelSchema, HalError } from '@hal/types';
 import { z } from 'zod';
-import type { WheelCalibration } from '../hal/calibration.js';
+import type { RobotCalibration } from '../hal/calibration.js';
 import { DEVICE_SETTING_RANGES } from '../protocol/device-config.js';
 
 type Env = Readonly<Record<string, string | undefined>>;
@@ -24,23 +24,62 @@ const range = (field: keyof typeof DEVICE_SETTING_RANGES) => {
 /** A device id safe as a file name (ids are short names such as `cube-a1b2c3`). */
 const DEVICE_ID = /^[A-Za-z0-9][A-Za-z0-9._-]{0,63}$/;
 
-export const CalibrationFileSchema = z.object({
-  version: z.literal(1).describe('File format version'),
-  deviceId: z.string().regex(DEVICE_ID).describe("The robot's device id (its hello's device_id)"),
-  wheelDiameterCm: range('wheel_diameter_cm').describe('Calibrated wheel diameter, cm'),
-  wheelBaseCm: range('wheel_base_cm').describe('Calibrated wheel base, cm'),
-  stepsPerRevolution: range('steps_per_revolution').optional().describe('Steps per revolution'),
-  calibratedAt: z.iso.datetime().describe('When the measurement was made (ISO 8601, UTC)'),
-  measurements: z
-    .object({
-      straightSteps: z.number().int().describe('Steps per wheel of the straight run'),
-      measuredDistanceCm: z.number().positive().describe('Distance the user measured, cm'),
-      turnSteps: z.number().int().describe('Steps per wheel of the turn in place'),
-      measuredTurnDeg: z.number().positive().describe('Angle the user measured, degrees'),
-    })
-    .optional()
-    .describe('What the values were computed from'),
-});
+/** What `hal calibrate camera` fitted the camera model from. */
+export const CameraMeasurementSchema = z
+  .object({
+    colour: z.string().describe('The colour of the target'),
+    distanceM: z
+      .number()
+      .positive()
+      .describe("Measured distance from the robot's centre to the target's near face, m"),
+    baseRow: z.number().describe("The image row of the target's base (its lower edge), pixels"),
+  })
+  .describe('One sighting of the target');
+
+export const CalibrationFileSchema = z
+  .object({
+    version: z.literal(1).describe('File format version'),
+    deviceId: z.string().regex(DEVICE_ID).describe("The robot's device id (its hello's device_id)"),
+    wheelDiameterCm: range('wheel_diameter_cm')
+      .optional()
+      .describe('Calibrated wheel diameter, cm (`hal calibrate`)'),
+    wheelBaseCm: range('wheel_base_cm')
+      .optional()
+      .describe('Calibrated wheel base, cm (`hal calibrate`)'),
+    stepsPerRevolution: range('steps_per_revolution').optional().describe('Steps per revolution'),
+    calibratedAt: z.iso
+      .datetime()
+      .describe('When the last calibration in the file was made (ISO 8601, UTC)'),
+    measurements: z
+      .object({
+        straightSteps: z.number().int().describe('Steps per wheel of the straight run'),
+        measuredDistanceCm: z.number().positive().describe('Distance the user measured, cm'),
+        turnSteps: z.number().int().describe('Steps per wheel of the turn in place'),
+        measuredTurnDeg: z.number().positive().describe('Angle the user measured, degrees'),
+      })
+      .optional()
+      .describe('What the values were computed from'),
+    camera: z
+      .object({
+        model: CameraModelSchema.describe('The camera model, its tilt (and height) fitted'),
+        calibratedAt: z.iso.datetime().describe('When the camera was calibrated (ISO 8601, UTC)'),
+        residualM: z
+          .number()
+          .min(0)
+          .describe('Largest distance error of the fitted model over the sightings, m'),
+        measurements: z.array(CameraMeasurementSchema).min(1).describe('The sightings'),
+      })
+      .optional()
+      .describe('The camera (`hal calibrate camera`)'),
+  })
+  .refine((file) => (file.wheelDiameterCm === undefined) === (file.wheelBaseCm === undefined), {
+    message: 'must be given with "wheelBaseCm" (both wheel values or neither)',
+    path: ['wheelDiameterCm'],
+  })
+  .refine((file) => file.wheelDiameterCm !== undefined || file.camera !== undefined, {
+    message: 'is missing: a calibration holds the wheels, the camera or both',
+    path: ['wheelDiameterCm'],
+  });
 export type CalibrationFile = z.infer<typeof CalibrationFileSchema>;
 
 /**
@@ -137,13 +176,18 @@ export async function writeCalibrationFile(path: string, file: CalibrationFile):
   await rename(temporary, path);
 }
 
-/** The wheel geometry a file holds, as PhysicalHAL and the simulator take it. */
-export function calibrationOf(file: CalibrationFile): WheelCalibration {
-  return {
-    wheelDiameterCm: file.wheelDiameterCm,
-    wheelBaseCm: file.wheelBaseCm,
-    ...(file.stepsPerRevolution === undefined
-      ? {}
-      : { stepsPerRevolution: file.stepsPerRevolution }),
-  };
+/** The wheel geometry and camera model a file holds, as PhysicalHAL takes them. */
+export function calibrationOf(file: CalibrationFile): RobotCalibration {
+  const calibration: RobotCalibration = {};
+  if (file.wheelDiameterCm !== undefined && file.wheelBaseCm !== undefined) {
+    calibration.wheels = {
+      wheelDiameterCm: file.wheelDiameterCm,
+      wheelBaseCm: file.wheelBaseCm,
+      ...(file.stepsPerRevolution === undefined
+        ? {}
+        : { stepsPerRevolution: file.stepsPerRevolution }),
+    };
+  }
+  if (file.camera !== undefined) calibration.camera = file.camera.model;
+  return calibration;
 }

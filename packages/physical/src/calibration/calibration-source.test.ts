@@ -35,7 +35,7 @@ describe('calibrationSource', () => {
   it("finds the robot's own file in the calibration directory, and nothing for another robot", async () => {
     await writeCalibrationFile(join(dir, 'cube-7.json'), FILE);
     const source = calibrationSource(undefined, { HAL_CALIBRATION_DIR: dir });
-    expect(await source('cube-7')).toEqual({ wheelDiameterCm: 6.6, wheelBaseCm: 10.4 });
+    expect(await source('cube-7')).toEqual({ wheels: { wheelDiameterCm: 6.6, wheelBaseCm: 10.4 } });
     expect(await source('cube-8')).toBeUndefined();
     expect(await calibrationSource(undefined, {})('cube-7')).toBeUndefined();
     // an id that cannot name a file has none (rather than failing every command)

@@ -2,7 +2,7 @@
 // the robot's own file in the calibration directory (looked up by the device id its hello reports).
 import { HalError } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
-import type { CalibrationSource, WheelCalibration } from '../hal/calibration.js';
+import type { CalibrationSource, RobotCalibration } from '../hal/calibration.js';
 import {
   calibrationDir,
   calibrationOf,
@@ -14,7 +14,7 @@ import {
 type Env = Readonly<Record<string, string | undefined>>;
 
 /** The calibration in the file at `path`; INVALID_PARAMETER when there is none or it is corrupt. */
-async function namedFile(path: string): Promise<{ deviceId: string; values: WheelCalibration }> {
+async function namedFile(path: string): Promise<{ deviceId: string; values: RobotCalibration }> {
   const file = await readCalibrationFile(path);
   if (file === undefined) {
     throw new HalError('INVALID_PARAMETER', `calibration file ${path} does not exist`, {
@@ -68,5 +68,5 @@ export function calibrationSource(named: string | undefined, env: Env): Calibrat
 
 /** The wheel geometry in the file `named` names, for a simulated robot (`--sim --calibration`). */
 export async function calibratedGeometry(named: string, env: Env): Promise<Partial<RobotConfig>> {
-  return (await namedFile(calibrationFileOf(named, env))).values;
+  return (await namedFile(calibrationFileOf(named, env))).values.wheels ?? {};
 }

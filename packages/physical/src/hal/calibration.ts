@@ -2,6 +2,7 @@
 // the firmware keeps its geometry in RAM only, so each new session (and each reconnect after a
 // robot restart) must give it again. Checked against the firmware's ranges before it is sent.
 import { HalError, isHalError } from '@hal/types';
+import type { CameraModel } from '@hal/types';
 import { DEVICE_SETTING_RANGES } from '../protocol/device-config.js';
 import type { DeviceSettings } from '../protocol/device-config.js';
 import type { DeviceConfig, RequestParams, SetConfigReply } from '../protocol/schemas.js';
@@ -16,13 +17,32 @@ export interface WheelCalibration {
   stepsPerRevolution?: number;
 }
 
+/** A robot's calibration: its wheel geometry (`hal calibrate`), its camera (`hal calibrate camera`), or both. */
+export interface RobotCalibration {
+  wheels?: WheelCalibration;
+  camera?: CameraModel;
+}
+
 /**
  * Where PhysicalHAL finds a robot's calibration once its `hello` names the robot: undefined when
- * there is none (the robot's own geometry is used). A failure fails `initialize()`.
+ * there is none (the robot's own geometry is used), a wheel geometry alone, or a
+ * {@link RobotCalibration}. A failure fails `initialize()`.
  */
 export type CalibrationSource = (
   deviceId: string,
-) => WheelCalibration | undefined | Promise<WheelCalibration | undefined>;
+) =>
+  | WheelCalibration
+  | RobotCalibration
+  | undefined
+  | Promise<WheelCalibration | RobotCalibration | undefined>;
+
+/** What a {@link CalibrationSource} answered, as a {@link RobotCalibration}. */
+export function robotCalibration(
+  found: WheelCalibration | RobotCalibration | undefined,
+): RobotCalibration {
+  if (found === undefined) return {};
+  return 'wheelDiameterCm' in found ? { wheels: found } : found;
+}
 
 type CalibrationParams = RequestParams['set_config'];
 

@@ -1,5 +1,6 @@
-import { CAPABILITIES, HalBoundary, HalError } from '@hal/types';
+import { CAPABILITIES, cameraModel, HalBoundary, HalError } from '@hal/types';
 import type {
+  CameraModel,
   CommunicationInterface,
   DeviceInfo,
   HALConfig,
@@ -34,7 +35,7 @@ import type {
   Transport,
   TransportStats,
 } from '../transport/transport.js';
-import { sendCalibration } from './calibration.js';
+import { robotCalibration, sendCalibration } from './calibration.js';
 import type { WheelCalibration } from './calibration.js';
 import { createCommunication } from './communication.js';
 import type { HalContext } from './context.js';
@@ -78,6 +79,8 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
   #initializing: Promise<void> | undefined;
   /** A calibration applied in this HAL's life ({@link applyCalibration}): wins over the source. */
   #calibration: WheelCalibration | undefined;
+  /** The camera model from the robot's calibration (`hal calibrate camera`), once hello named it. */
+  #calibratedCamera: CameraModel | undefined;
 
   constructor(config: HALConfig, options: PhysicalHALOptions = {}) {
     const parsed = parsePhysicalConfig(config);
@@ -233,8 +236,24 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
 
   getDeviceInfo(): DeviceInfo {
     const capabilities = [...(this.#identity?.capabilities ?? [])];
-    if (this.#camera !== undefined) capabilities.push(CAPABILITIES.camera);
-    return { id: this.#config.deviceId, type: 'v1-stepper-cube', mode: this.mode, capabilities };
+    const info: DeviceInfo = {
+      id: this.#config.deviceId,
+      type: 'v1-stepper-cube',
+      mode: this.mode,
+      capabilities,
+    };
+    if (this.#camera === undefined) return info;
+    capabilities.push(CAPABILITIES.camera);
+    // the calibrated model, else the configured one (V1's where the config says nothing)
+    return { ...info, camera: this.#calibratedCamera ?? this.#configuredCamera() };
+  }
+
+  /** The camera model of the config: its `camera` settings over V1's. */
+  #configuredCamera(): CameraModel {
+    const settings = Object.fromEntries(
+      Object.entries(this.#config.camera ?? {}).filter(([, value]) => value !== undefined),
+    ) as Partial<CameraModel>;
+    return cameraModel(settings);
   }
 
   /** What the robot reported in `hello` (undefined before `initialize()`). */
@@ -357,7 +376,12 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
 
   /** Sends the robot's calibration, if there is one, once a hello opened the session. */
   async #calibrate(hello: HelloReply): Promise<void> {
-    const calibration = this.#calibration ?? (await this.#options.calibration?.(hello.device_id));
+    let calibration = this.#calibration;
+    if (calibration === undefined) {
+      const found = robotCalibration(await this.#options.calibration?.(hello.device_id));
+      if (found.camera !== undefined) this.#calibratedCamera = cameraModel(found.camera);
+      calibration = found.wheels;
+    }
     if (calibration === undefined) return;
     const session = this.#session;
     if (session === undefined) throw new HalError('NOT_READY', 'the HAL is not initialised');

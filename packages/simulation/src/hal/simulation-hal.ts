@@ -10,6 +10,7 @@ import type {
   TypedEmitter,
   VisionInterface,
 } from '@hal/types';
+import { cameraModelOf } from '../camera.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import { listenerSafeEmitter, World } from '../world.js';
 import { createCommunication } from './communication.js';
@@ -152,6 +153,8 @@ export class SimulationHAL implements HardwareAbstractionLayer {
       type: 'v1-stepper-cube',
       mode: this.mode,
       capabilities: caps,
+      // the model the camera renders with, so perception projects with the same one
+      ...(this.#features.camera ? { camera: cameraModelOf(this.#options.camera) } : {}),
     };
   }
 
