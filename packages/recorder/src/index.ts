@@ -38,6 +38,16 @@ export { robotNamespace } from './namespace.js';
 export type { RobotNamespace, RobotTopics } from './namespace.js';
 export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
+export { GRID, SCENE_UPDATE } from './foxglove-scene-schemas.js';
+export { PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
+export type {
+  PerceivedLook,
+  PerceptionRecording,
+  RecordablePerception,
+  RecordPerceptionOptions,
+} from './record-perception.js';
+export { OCCUPANCY, PERCEPTION_FRAME } from './perception-messages.js';
+export type { PerceivedGrid, PerceivedObject, PerceivedSighting } from './perception-messages.js';
 export { summarizeRecording } from './summary.js';
 export type { RecordingSummary, RobotSummary } from './summary.js';
 export { replayRecording } from './replay.js';
