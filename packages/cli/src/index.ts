@@ -1,6 +1,7 @@
 // @hal/cli: the `hal` command. As a library: run it in a process of your own (runHal, with the
 // streams of CliIO), read its errors (ErrorDocument, CliError), and build fleet devices the way
-// `hal fleet` does (deviceFactories, for @hal/fleet/node's DeviceManager).
+// `hal fleet` does (deviceFactories, for @hal/fleet/node's DeviceManager), and check what
+// `hal look --json` prints (LookDocumentSchema).
 export { buildProgram, runHal } from './program.js';
 export type { ErrorDocument } from './program.js';
 export { CliError, CLI_ERROR_CODES } from './cli-error.js';
@@ -8,3 +9,5 @@ export type { CliErrorCode } from './cli-error.js';
 export type { CliIO, GlobalOptions } from './io.js';
 export { deviceFactories } from './fleet/device-factories.js';
 export type { FleetDeviceFactories } from './fleet/device-factories.js';
+export { LookDocumentSchema } from './look/look-document.js';
+export type { LookDocument } from './look/look-document.js';

@@ -4,6 +4,7 @@ import type { RegisterCommand } from './context.js';
 import { registerDrive } from './drive.js';
 import { registerServe } from './serve.js';
 import { registerStatus } from './status.js';
+import { registerLook } from './look.js';
 import { registerTeleop } from './teleop.js';
 import { registerDiscover } from './discover.js';
 import { registerEmulate } from './emulate.js';
@@ -22,6 +23,7 @@ import { registerMcp } from './mcp.js';
 /** The subcommands, in the order `hal --help` lists them. */
 export const COMMANDS: readonly RegisterCommand[] = [
   registerStatus,
+  registerLook,
   registerDrive,
   registerTeleop,
   registerCalibrate,
