@@ -38,7 +38,7 @@ export { judge, trueAnswer } from './checks.js';
 export type { CheckVerdict, TrialEnd } from './checks.js';
 export type { AgentAnswer, AgentTrial, EvalAgent, ModelFailure } from './agent.js';
 export { oracleAgent } from './agents/oracle.js';
-export { claimerAgent, naiveAgent } from './agents/baselines.js';
+export { claimerAgent, naiveAgent, straightAgent } from './agents/baselines.js';
 export { runTrial } from './trial.js';
 export type { InstrumentedHal, TrialInfo, TrialOptions, TrialScore, TrialTiming } from './trial.js';
 export { runRobotTrial, runsOnRobot } from './robot-trial.js';

@@ -9,7 +9,14 @@ import {
   SMALL_MODEL_TOOLS,
 } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
-import { chatAgent, claimerAgent, naiveAgent, navigationAgent, oracleAgent } from '@hal/eval';
+import {
+  chatAgent,
+  claimerAgent,
+  naiveAgent,
+  navigationAgent,
+  oracleAgent,
+  straightAgent,
+} from '@hal/eval';
 import type { EvalAgent } from '@hal/eval';
 import { toOpenAITools } from '@hal/tools';
 import type { Logger } from '@hal/types';
@@ -38,6 +45,7 @@ const FIXED: Record<string, () => EvalAgent> = {
   oracle: oracleAgent,
   naive: naiveAgent,
   claimer: claimerAgent,
+  straight: straightAgent,
   nav: () => navigationAgent({ name: 'nav:goal-seeking' }),
 };
 
@@ -53,7 +61,7 @@ export function agentNames(text: string): string[] {
     if (/^openai:[^\s]+$/.test(name)) continue;
     throw new CliError(
       'USAGE',
-      `"--agent": unknown agent "${name}" (oracle, naive, claimer, nav, local, openai:MODEL)`,
+      `"--agent": unknown agent "${name}" (oracle, naive, claimer, straight, nav, local, openai:MODEL)`,
     );
   }
   if (new Set(names).size !== names.length)

@@ -27,6 +27,27 @@ export function naiveAgent(): EvalAgent {
   };
 }
 
+/**
+ * The scripted "drive straight at it" agent: drives straight ahead in the longest calls it may
+ * make (1.5 m) until a call is refused or fails, or its budget ends, looking at nothing. With no
+ * guard it drives into whatever is ahead; the guard must stop it first.
+ */
+export function straightAgent(): EvalAgent {
+  return {
+    name: 'straight',
+    run: async (trial) => {
+      for (let call = 0; call < 4; call += 1) {
+        const result = await trial.execute({
+          name: 'move_forward',
+          arguments: { distanceCm: 150 },
+        });
+        if (result.isError) break;
+      }
+      return { answer: 'Done.' };
+    },
+  };
+}
+
 /** An agent that claims success without calling a single tool: it must score 0 everywhere. */
 export function claimerAgent(): EvalAgent {
   return {
