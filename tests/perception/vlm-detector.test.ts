@@ -12,7 +12,7 @@ import { FramePerceiver, VisionModelDetector } from '@hal/perception';
 import type { VisionModelDetectorOptions } from '@hal/perception';
 import { encodeJpeg, renderRobotView, World } from '@hal/simulation';
 import type { SimRobot, WorldMapInput } from '@hal/simulation';
-import { isHalError, V1_CAMERA } from '@hal/types';
+import { HalError, isHalError, V1_CAMERA } from '@hal/types';
 import { afterEach, describe, expect, it } from 'vitest';
 
 // ---- a fake OpenAI-compatible vision server ----
@@ -418,14 +418,14 @@ describe('VisionModelDetector when the model fails', () => {
 
   it('refuses bad options, quoting them', () => {
     expect(() => new VisionModelDetector({ baseUrl: 'not a url', model: 'm' })).toThrow(
-      /"baseUrl" must be a URL/,
+      /"baseUrl": must be an http\(s\) URL, got "not a url"/,
     );
     expect(() => new VisionModelDetector({ baseUrl: 'http://127.0.0.1:1/v1', model: '' })).toThrow(
-      /"model"/,
+      /"model": must name the vision model/,
     );
     expect(
       () => new VisionModelDetector({ baseUrl: 'http://127.0.0.1:1/v1', model: 'm', timeoutMs: 0 }),
-    ).toThrow(/"timeoutMs" must be a whole number of 1 or more, got 0/);
+    ).toThrow(/"timeoutMs": too small: expected number to be >=1, got 0/);
     expect(
       () =>
         new VisionModelDetector({
@@ -433,7 +433,18 @@ describe('VisionModelDetector when the model fails', () => {
           model: 'm',
           colours: ['pink' as 'red'],
         }),
-    ).toThrow(/"colours" must be among red, orange/);
+    ).toThrow(/"colours": invalid option: expected one of "red"\|"orange"/);
+    expect(
+      () =>
+        new VisionModelDetector({
+          baseUrl: 'http://127.0.0.1:1/v1',
+          model: 'm',
+          boxUnits: 'pixel' as 'pixels',
+        }),
+    ).toThrow(/"boxUnits": invalid option: expected one of "pixels"\|"per-mille", got "pixel"/);
+    expect(() => new VisionModelDetector({ baseUrl: 'ftp://127.0.0.1/v1', model: 'm' })).toThrow(
+      HalError,
+    );
   });
 
   it("refuses a detection without the frame's JPEG rather than asking about nothing", async () => {

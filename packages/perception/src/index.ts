@@ -33,6 +33,7 @@ export { Perception } from './perception.js';
 export type { Look, PerceptionOptions } from './perception.js';
 export { VisionModelDetector } from './vlm-detector.js';
 export type { VisionModelDetectorOptions, VlmDetectionReport } from './vlm-detector.js';
+export { VisionModelDetectorOptionsSchema } from './vlm-options.js';
 export type { VlmFailure } from './vlm-errors.js';
 export { readLabel, VLM_KINDS } from './vlm-labels.js';
 export type { VlmKind } from './vlm-labels.js';

@@ -2,54 +2,16 @@ import { AgentError, postChatCompletion } from '@hal/agent';
 import type { ChatEndpoint } from '@hal/agent';
 import { HalError } from '@hal/types';
 import type { Detector, DetectorInput } from './detector.js';
-import { COLOUR_NAMES } from './palette.js';
-import type { ColourName } from './palette.js';
 import type { Detection } from './project-object.js';
-import { VLM_KINDS } from './vlm-labels.js';
-import type { VlmKind } from './vlm-labels.js';
 import { vlmMessages, vlmRequestBody } from './vlm-prompt.js';
 import type { VlmPromptOptions, VlmResponseFormat } from './vlm-prompt.js';
 import { readEntries, replyEntries, replyText } from './vlm-reply.js';
-import type { VlmBoxUnits, VlmReplyCounts } from './vlm-reply.js';
+import type { VlmReplyCounts } from './vlm-reply.js';
 import { vlmFailure } from './vlm-errors.js';
+import { visionModelSettings } from './vlm-options.js';
+import type { VisionModelDetectorOptions } from './vlm-options.js';
 
-/** Options of a {@link VisionModelDetector}. */
-export interface VisionModelDetectorOptions {
-  /** The OpenAI-compatible API's base URL, e.g. `http://localhost:11434/v1` (requests go to `{baseUrl}/chat/completions`). */
-  baseUrl: string;
-  /** The vision model, e.g. `gpt-4o-mini`, `qwen2.5vl:7b`. */
-  model: string;
-  /** The API key, sent as `Authorization: Bearer ...` when given. */
-  apiKey?: string;
-  /** Time allowed for one detection, all attempts included, ms. Default 20000. */
-  timeoutMs?: number;
-  /** Attempts after the first on HTTP 408/429/5xx, a network error or an unreadable reply. Default 1. */
-  retries?: number;
-  /** Most objects asked for and kept (the most confident). Default 10. */
-  maxObjects?: number;
-  /** The colours asked for and kept. Default all six of the palette's. */
-  colours?: readonly ColourName[];
-  /** The kinds asked for. Default box and pillar. */
-  kinds?: readonly VlmKind[];
-  /**
-   * The box convention the prompt asks for: `pixels` of the frame (default) or `per-mille`
-   * (0..1000 across the width and height, as Qwen2-VL and Gemini are trained to give). Only the
-   * one asked for is read: a box in the other convention is not guessed at.
-   */
-  boxUnits?: VlmBoxUnits;
-  /**
-   * How the JSON reply is asked for: `json_schema` (default; structured output), `json_object`,
-   * or `none` (only in the prompt). A server that refuses one with HTTP 400 is asked with the
-   * next, and remembered.
-   */
-  responseFormat?: VlmResponseFormat;
-  /** Sampling temperature. Default 0. */
-  temperature?: number;
-  /** Most tokens of the reply. Default 1000. */
-  maxTokens?: number;
-  /** The fetch used (a test seam). Default the global fetch. */
-  fetch?: typeof fetch;
-}
+export type { VisionModelDetectorOptions };
 
 /** What the last detection received and kept. */
 export interface VlmDetectionReport extends VlmReplyCounts {
@@ -62,19 +24,6 @@ const FALLBACK: Readonly<Record<VlmResponseFormat, VlmResponseFormat | undefined
   json_object: 'none',
   none: undefined,
 };
-
-function wholeNumber(name: string, value: number, least: number): number {
-  if (!(Number.isInteger(value) && value >= least)) {
-    throw new HalError(
-      'INVALID_PARAMETER',
-      `"${name}" must be a whole number of ${least} or more, got ${value}`,
-      {
-        details: { parameter: name, value },
-      },
-    );
-  }
-  return value;
-}
 
 /** A frame as a data URL: bare base64 is taken for a JPEG. */
 function frameUrl(frame: string): string {
@@ -108,78 +57,25 @@ export class VisionModelDetector implements Detector {
   readonly #sampling: { temperature: number; maxTokens: number };
 
   constructor(options: VisionModelDetectorOptions) {
-    if (typeof options.model !== 'string' || options.model.trim() === '') {
-      throw new HalError('INVALID_PARAMETER', '"model" must name the vision model', {
-        details: { parameter: 'model' },
-      });
-    }
-    let base: URL;
-    try {
-      base = new URL(options.baseUrl);
-    } catch (cause) {
-      throw new HalError(
-        'INVALID_PARAMETER',
-        `"baseUrl" must be a URL, got ${JSON.stringify(options.baseUrl)}`,
-        {
-          details: { parameter: 'baseUrl', value: options.baseUrl },
-          cause,
-        },
-      );
-    }
-    this.#model = options.model;
-    this.name = `vlm:${options.model}`;
-    this.url = `${base.href.replace(/\/+$/, '')}/chat/completions`;
-    this.#timeoutMs = wholeNumber('timeoutMs', options.timeoutMs ?? 20_000, 1);
-    const colours = options.colours ?? COLOUR_NAMES;
-    const kinds = options.kinds ?? VLM_KINDS;
-    for (const colour of colours) {
-      if (!(COLOUR_NAMES as readonly string[]).includes(colour)) {
-        throw new HalError(
-          'INVALID_PARAMETER',
-          `"colours" must be among ${COLOUR_NAMES.join(', ')}, got ${JSON.stringify(colour)}`,
-          {
-            details: { parameter: 'colours', value: colour },
-          },
-        );
-      }
-    }
-    if (colours.length === 0) {
-      throw new HalError('INVALID_PARAMETER', '"colours" must name at least one colour', {
-        details: { parameter: 'colours' },
-      });
-    }
-    for (const kind of kinds) {
-      if (!(VLM_KINDS as readonly string[]).includes(kind)) {
-        throw new HalError(
-          'INVALID_PARAMETER',
-          `"kinds" must be among ${VLM_KINDS.join(', ')}, got ${JSON.stringify(kind)}`,
-          {
-            details: { parameter: 'kinds', value: kind },
-          },
-        );
-      }
-    }
+    const settings = visionModelSettings(options);
+    this.#model = settings.model;
+    this.name = `vlm:${settings.model}`;
+    this.url = `${settings.baseUrl.replace(/\/+$/, '')}/chat/completions`;
+    this.#timeoutMs = settings.timeoutMs;
     this.#vocabulary = {
-      units: options.boxUnits ?? 'pixels',
-      colours: [...colours],
-      kinds: [...kinds],
-      maxObjects: wholeNumber('maxObjects', options.maxObjects ?? 10, 1),
+      units: settings.boxUnits,
+      colours: settings.colours,
+      kinds: settings.kinds,
+      maxObjects: settings.maxObjects,
     };
-    this.#format = options.responseFormat ?? 'json_schema';
-    this.#sampling = {
-      temperature: options.temperature ?? 0,
-      maxTokens: wholeNumber('maxTokens', options.maxTokens ?? 1000, 1),
-    };
+    this.#format = settings.responseFormat;
+    this.#sampling = { temperature: settings.temperature, maxTokens: settings.maxTokens };
     this.#endpoint = {
       url: this.url,
-      apiKey: options.apiKey,
-      requestTimeoutMs: this.#timeoutMs,
-      retry: {
-        maxRetries: wholeNumber('retries', options.retries ?? 1, 0),
-        baseDelayMs: 250,
-        maxDelayMs: this.#timeoutMs,
-      },
-      fetch: options.fetch ?? globalThis.fetch,
+      apiKey: settings.apiKey,
+      requestTimeoutMs: settings.timeoutMs,
+      retry: { maxRetries: settings.retries, baseDelayMs: 250, maxDelayMs: settings.timeoutMs },
+      fetch: settings.fetch ?? globalThis.fetch,
     };
   }
 
