@@ -16,6 +16,18 @@ import { defaultColourTable } from './palette.js';
 import { projectDetection } from './project-object.js';
 import type { SeenObject } from './seen-object.js';
 
+/** A `data:image/jpeg;base64,...` URL of JPEG bytes (a detector that sends the frame needs it). */
+function jpegDataUrl(bytes: Uint8Array): string {
+  const B = (globalThis as { Buffer?: { from(b: Uint8Array): { toString(e: 'base64'): string } } })
+    .Buffer;
+  if (B !== undefined) return `data:image/jpeg;base64,${B.from(bytes).toString('base64')}`;
+  let text = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) {
+    text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  }
+  return `data:image/jpeg;base64,${btoa(text)}`;
+}
+
 /** What one frame showed. Robot frame REP-103 and the world (odometry) frame, metres. */
 export interface Percept {
   /** When the frame was taken, ms since the epoch (the host's clock). */
@@ -91,7 +103,7 @@ export class FramePerceiver {
     const percept = await this.perceiveImage(
       image,
       pose,
-      typeof frame === 'string' ? frame : '',
+      typeof frame === 'string' ? frame : jpegDataUrl(frame),
       capturedAt,
     );
     percept.timings.decodeMs = decodeMs;
