@@ -57,6 +57,8 @@ export interface TaskSummary {
   tokensIn: number;
   tokensOut: number;
   safetyEvents: number;
+  /** Motions the guard refused or stopped before an obstacle (OBSTACLE_AHEAD), over the trials. */
+  guardStops: number;
 }
 
 function mean(values: number[]): number | null {
@@ -96,6 +98,7 @@ export function summariseTasks(trials: readonly TrialScore[]): TaskSummary[] {
       tokensIn: sum(list, (t) => t.tokensIn),
       tokensOut: sum(list, (t) => t.tokensOut),
       safetyEvents: sum(list, (t) => t.safetyEvents.length),
+      guardStops: sum(list, (t) => t.guard?.stops ?? 0),
     };
   });
 }
