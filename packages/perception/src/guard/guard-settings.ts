@@ -57,6 +57,16 @@ export const GuardSettingsSchema = z.object({
     .max(0.9)
     .default(0.1)
     .describe('A leg stops short of the stand-off by this fraction of the distance seen'),
+  settleMs: z
+    .number()
+    .min(0)
+    .max(10_000)
+    .optional()
+    .describe(
+      'After a motion ends, wait this long before looking, ms, so the frame shows the robot where ' +
+        'it stopped (a camera streams its latest frame). Default 0 in the simulator (it renders ' +
+        'on demand), else two frame periods',
+    ),
   reverse: z
     .enum(['pass', 'refuse'])
     .default('pass')

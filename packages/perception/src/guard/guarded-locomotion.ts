@@ -51,6 +51,8 @@ export class GuardedLocomotion implements LocomotionInterface {
   #epoch = 0;
   #watcher: Watcher | undefined;
   #reverseSaid = false;
+  /** When the last motion through the guard ended (ms, `Date.now()`). */
+  #motionEndedAt = 0;
 
   constructor(ctx: GuardContext) {
     this.#ctx = ctx;
@@ -77,7 +79,7 @@ export class GuardedLocomotion implements LocomotionInterface {
   }
 
   stop(): Promise<HALToolResult> {
-    const stopping = this.#hal.stop();
+    const stopping = this.#ended(this.#hal.stop());
     this.cancel();
     return stopping;
   }
@@ -89,18 +91,34 @@ export class GuardedLocomotion implements LocomotionInterface {
   rotate(direction: 'left' | 'right', degrees: number): Promise<HALToolResult> {
     // a turn in place sweeps only the body's own footprint (a disc); nothing ahead is reached
     this.cancel();
-    return this.#hal.rotate(direction, degrees);
+    return this.#ended(this.#hal.rotate(direction, degrees));
+  }
+
+  /** `motion`, noting when it ended (a look after it waits for a frame that shows it done). */
+  #ended(motion: Promise<HALToolResult>): Promise<HALToolResult> {
+    return motion.finally(() => {
+      this.#motionEndedAt = Date.now();
+    });
+  }
+
+  /** A look ahead, once a frame taken after the last motion can have come. */
+  async #look(sight: Sight): Promise<Sighting> {
+    const { settleMs, framePeriodMs } = this.#ctx.settings;
+    const settle = settleMs ?? (this.#ctx.hal.mode === 'simulation' ? 0 : 2 * framePeriodMs);
+    const wait = this.#motionEndedAt + settle - Date.now();
+    if (wait > 0) await new Promise((resolve) => setTimeout(resolve, wait));
+    return sight.look();
   }
 
   moveBackward(distanceCm: number): Promise<HALToolResult> {
     this.cancel();
     if (!this.#valid('moveBackward', { distanceCm })) return this.#hal.moveBackward(distanceCm);
-    return this.#reverse('moveBackward', () => this.#hal.moveBackward(distanceCm));
+    return this.#reverse('moveBackward', () => this.#ended(this.#hal.moveBackward(distanceCm)));
   }
 
   async moveForward(distanceCm: number): Promise<HALToolResult> {
     this.cancel();
-    const whole = () => this.#hal.moveForward(distanceCm);
+    const whole = () => this.#ended(this.#hal.moveForward(distanceCm));
     if (!this.#valid('moveForward', { distanceCm })) return whole();
     const epoch = this.#epoch;
     const sight = await this.#sight('moveForward');
@@ -111,7 +129,7 @@ export class GuardedLocomotion implements LocomotionInterface {
       run: (legM, final) => {
         const cm = final ? remainingCm : legM * 100;
         remainingCm -= cm;
-        return this.#hal.moveForward(cm);
+        return this.#ended(this.#hal.moveForward(cm));
       },
     });
   }
@@ -119,7 +137,9 @@ export class GuardedLocomotion implements LocomotionInterface {
   async moveTo(x: number, y: number, z: number, speed?: number): Promise<HALToolResult> {
     this.cancel();
     const go = (px: number, py: number) =>
-      speed === undefined ? this.#hal.moveTo(px, py, z) : this.#hal.moveTo(px, py, z, speed);
+      this.#ended(
+        speed === undefined ? this.#hal.moveTo(px, py, z) : this.#hal.moveTo(px, py, z, speed),
+      );
     if (!this.#valid('moveTo', { x, y, z, speed })) return go(x, y);
     const epoch = this.#epoch;
     const sight = await this.#sight('moveTo');
@@ -136,7 +156,9 @@ export class GuardedLocomotion implements LocomotionInterface {
     // face the point first (a turn in place), so the camera looks along the way
     const turnDeg = (normalizeAngle(Math.atan2(dy, dx) - pose.rotation.yaw) * 180) / Math.PI;
     if (Math.abs(turnDeg) > 1) {
-      const turned = await this.#hal.rotate(turnDeg > 0 ? 'left' : 'right', Math.abs(turnDeg));
+      const turned = await this.#ended(
+        this.#hal.rotate(turnDeg > 0 ? 'left' : 'right', Math.abs(turnDeg)),
+      );
       if (!turned.success) return turned;
       if (epoch !== this.#epoch) return this.#cancelled('moveTo');
     }
@@ -159,9 +181,11 @@ export class GuardedLocomotion implements LocomotionInterface {
   async drive(left: number, right: number, durationMs?: number): Promise<HALToolResult> {
     this.cancel();
     const whole = () =>
-      durationMs === undefined
-        ? this.#hal.drive(left, right)
-        : this.#hal.drive(left, right, durationMs);
+      this.#ended(
+        durationMs === undefined
+          ? this.#hal.drive(left, right)
+          : this.#hal.drive(left, right, durationMs),
+      );
     if (!this.#valid('drive', { left, right, durationMs })) return whole();
     const power = (left + right) / 2;
     // a turn in place passes; a reverse is watched by nothing
@@ -178,7 +202,7 @@ export class GuardedLocomotion implements LocomotionInterface {
       run: (legM, final) => {
         const ms = final ? remainingMs : Math.max(1, Math.floor((legM / speed) * 1000));
         remainingMs -= ms;
-        return this.#hal.drive(left, right, ms);
+        return this.#ended(this.#hal.drive(left, right, ms));
       },
     });
   }
@@ -215,7 +239,7 @@ export class GuardedLocomotion implements LocomotionInterface {
       let seen: Sighting;
       try {
         remaining = await plan.remainingM();
-        seen = await sight.look();
+        seen = await this.#look(sight);
       } catch (error) {
         if (epoch !== this.#epoch) return combineLegs(results) ?? this.#cancelled(motion);
         return this.#blind(motion, results, error);
@@ -268,7 +292,7 @@ export class GuardedLocomotion implements LocomotionInterface {
   ): Promise<HALToolResult> {
     let seen: Sighting;
     try {
-      seen = await sight.look();
+      seen = await this.#look(sight);
     } catch (error) {
       if (epoch !== this.#epoch) return this.#cancelled('drive');
       return this.#blind('drive', [], error);
