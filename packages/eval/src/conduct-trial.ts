@@ -1,3 +1,4 @@
+import type { GuardedHAL } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { AgentAnswer, EvalAgent } from './agent.js';
 import type { TrialBody } from './bodies/trial-body.js';
@@ -27,6 +28,8 @@ export interface TrialSetup {
   collisions: () => number;
   /** performance.now() when the trial began. */
   started: number;
+  /** The guard under `hal`, when it is on (its status goes into the score). */
+  guard?: GuardedHAL | undefined;
 }
 
 /** Runs the agent on a ready robot, under the task's tools, leash, faults and budget, and scores it. */
@@ -87,6 +90,7 @@ export async function conductTrial(
     estopLatched: body.emergencyStopped(),
     simSeconds: body.nowUs() / 1e6,
     answer,
+    ...(s.guard === undefined ? {} : { guard: s.guard.status() }),
   });
   return {
     score,

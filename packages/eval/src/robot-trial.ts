@@ -1,3 +1,4 @@
+import { guardHal } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { EvalAgent } from './agent.js';
 import { reportedBody } from './bodies/reported-body.js';
@@ -78,7 +79,9 @@ export async function runRobotTrial(
   let body: TrialBody | undefined;
   /** Whether a latch at the end is this trial's own (an injected or the agent's e-stop). */
   let latchedByTrial = false;
-  const instrumented = await options.instrument?.(raw, {
+  // the guard sits under the agent's tools (and under a recorder: what is recorded is the agent's)
+  const guard = options.guard === false ? undefined : guardHal(raw, options.guard ?? {});
+  const instrumented = await options.instrument?.(guard ?? raw, {
     task,
     variant,
     seed,
@@ -87,7 +90,7 @@ export async function runRobotTrial(
     on: robot.name,
     nowUs: () => body?.nowUs() ?? 0,
   });
-  const hal = instrumented?.hal ?? raw;
+  const hal = instrumented?.hal ?? guard ?? raw;
   try {
     try {
       await hal.initialize();
@@ -113,6 +116,7 @@ export async function runRobotTrial(
       options,
       collisions: () => 0,
       started,
+      guard,
     });
   } finally {
     if (latchedByTrial && raw.isReady() && raw.safety.isEmergencyStopped())

@@ -1,3 +1,4 @@
+import type { GuardOptions, GuardStatus, GuardStop } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { Leash } from '@hal/tools';
 import type { AgentAnswer, ModelFailure } from './agent.js';
@@ -48,6 +49,11 @@ export interface TrialScore {
   /** The robot's time the trial took, seconds: simulated, or on a robot its clock. */
   simSeconds: number;
   safetyEvents: string[];
+  /**
+   * What the guard did (motions it refused or stopped before an obstacle, whether it could see);
+   * absent when the guard was off.
+   */
+  guard?: TrialGuard;
   /** The agent's final words (cut to 300 characters). */
   answer: string;
 }
@@ -98,6 +104,11 @@ export interface TrialOptions {
   instrument?: (hal: HardwareAbstractionLayer, info: TrialInfo) => Promise<InstrumentedHal>;
   /** Which of the task's k trials this is, from 0 (told to `instrument`). Default 0. */
   trial?: number;
+  /**
+   * The guard between the tools and the robot, on by default: it stops a forward motion before
+   * an obstacle it sees ahead (OBSTACLE_AHEAD). Its settings, or false to turn it off.
+   */
+  guard?: false | GuardOptions;
 }
 
 const round = (v: number, digits = 4) => {
@@ -116,6 +127,21 @@ export interface TrialOutcome {
   estopLatched: boolean;
   simSeconds: number;
   answer: AgentAnswer;
+  /** What the guard did, when it was on. */
+  guard?: GuardStatus;
+}
+
+/** What the guard did in a trial: its status without wall-clock times (a score is deterministic). */
+export interface TrialGuard extends Omit<GuardStatus, 'lastStop'> {
+  lastStop?: Omit<GuardStop, 'at'>;
+}
+
+/** The guard's status as a score keeps it. */
+export function trialGuard(status: GuardStatus): TrialGuard {
+  const { lastStop, ...rest } = status;
+  if (lastStop === undefined) return rest;
+  const { at: _at, ...stop } = lastStop;
+  return { ...rest, lastStop: stop };
 }
 
 /** Judges a trial's checks and the rules every task has, and scores it. */
@@ -182,6 +208,7 @@ export function scoreTrial(o: TrialOutcome): TrialScore {
     tokensOut: answer.tokensOut ?? 0,
     simSeconds: round(simSeconds, 3),
     safetyEvents,
+    ...(o.guard === undefined ? {} : { guard: trialGuard(o.guard) }),
     answer: answer.answer.slice(0, 300),
   };
 }

@@ -1,3 +1,4 @@
+import { guardHal } from '@hal/perception';
 import { SimulationHAL, World } from '@hal/simulation';
 import type { EvalAgent } from './agent.js';
 import { simulatedBody } from './bodies/simulated-body.js';
@@ -39,7 +40,9 @@ export async function runTrial(
   world.events.on('collision', (e) => {
     if (e.robotId === sim.robot.id) collisions += 1;
   });
-  const instrumented = await options.instrument?.(sim, {
+  // the guard sits under the agent's tools (and under a recorder: what is recorded is the agent's)
+  const guard = options.guard === false ? undefined : guardHal(sim, options.guard ?? {});
+  const instrumented = await options.instrument?.(guard ?? sim, {
     task,
     variant,
     seed,
@@ -48,7 +51,7 @@ export async function runTrial(
     on: 'simulator',
     nowUs: () => world.nowUs,
   });
-  const hal = instrumented?.hal ?? sim;
+  const hal = instrumented?.hal ?? guard ?? sim;
   try {
     await hal.initialize();
     return await conductTrial({
@@ -62,6 +65,7 @@ export async function runTrial(
       options,
       collisions: () => collisions,
       started,
+      guard,
     });
   } finally {
     await hal.cleanup();

@@ -48,3 +48,4 @@ export { GuardSettingsSchema, guardSettings } from './guard/guard-settings.js';
 export type { GuardOptions, GuardSettings } from './guard/guard-settings.js';
 export type { GuardEvent, GuardListener, GuardStatus, GuardStop } from './guard/guard-status.js';
 export type { GuardSource, Sighting } from './guard/sighting.js';
+export { GuardEventSchema, GuardStopSchema } from './guard/guard-event-schema.js';

@@ -7,6 +7,8 @@ import { runAgent } from '@hal/agent';
 import type { AgentOutcome, ChatProvider, RunAgentOptions } from '@hal/agent';
 import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
+import { addGuardOptions, guardFromOptions, guardReport, recordGuard } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
 import { AGENT_EVENT, recordHal, TOPICS } from '@hal/recorder';
@@ -26,7 +28,8 @@ import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
 import type { RegisterCommand } from './context.js';
 
-interface AgentCliOptions extends TargetCliOptions, ModelCliOptions, LeashCliOptions {
+interface AgentCliOptions
+  extends TargetCliOptions, ModelCliOptions, LeashCliOptions, GuardCliOptions {
   maxTime?: number;
   record?: string;
   overwrite?: boolean;
@@ -118,6 +121,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     );
   addOverwriteOption(command, 'the --record file');
   addLeashOptions(command);
+  addGuardOptions(command);
   addTargetOptions(command).action(async (words: string[], options: AgentCliOptions) => {
     const json = global().json;
     const goal = words.join(' ').trim();
@@ -161,11 +165,14 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     try {
       const connect =
         options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-      const { outcome, pose } = await withTarget(
+      const { outcome, pose, guard } = await withTarget(
         target,
         io,
         { ...connect, json, role: 'control' },
-        async ({ hal: opened, deviceId }) => {
+        async ({ hal: robot, deviceId }) => {
+          // the guard sits between the leash (the executor) and the robot
+          const { hal: opened, guard } = guardFromOptions(robot, options, io, json);
+          recordGuard(guard, recorder);
           const hal = recorder
             ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
             : opened;
@@ -219,7 +226,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
           } catch {
             pose = undefined;
           }
-          return { outcome: run, pose };
+          return { outcome: run, pose, guard: guardReport(guard) };
         },
       );
       sampling.abort();
@@ -231,6 +238,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         elapsedMs: outcome.elapsedMs,
         text: outcome.text,
         ...(pose === undefined ? {} : { pose }),
+        guard,
         ...(recorded === undefined ? {} : { recording: { file: options.record, ...recorded } }),
         ...(outcome.error === undefined
           ? {}

@@ -6,6 +6,8 @@ import { actionText, checkAction } from '../drive/actions.js';
 import type { DriveAction } from '../drive/actions.js';
 import { runDrive } from '../drive/run-drive.js';
 import type { DriveOutcome } from '../drive/run-drive.js';
+import { addGuardOptions, guardFromOptions } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { emit } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
@@ -49,7 +51,7 @@ async function drive(
   global: GlobalOptions,
 ): Promise<void> {
   checkAction(action);
-  const options = command.optsWithGlobals<TargetCliOptions>();
+  const options = command.optsWithGlobals<TargetCliOptions & GuardCliOptions>();
   const target = resolveTarget(options, io.env);
   const connect =
     options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
@@ -57,7 +59,7 @@ async function drive(
     target,
     io,
     { ...connect, json: global.json, role: SAFETY_ONLY.has(action.kind) ? 'safety' : 'control' },
-    ({ hal }) => runDrive(hal, action, io, global),
+    ({ hal }) => runDrive(guardFromOptions(hal, options, io, global.json).hal, action, io, global),
   ).catch((error: unknown) => {
     if (isHalError(error) && error.code === 'EMERGENCY_STOPPED') {
       throw latchedError(error, action, target);
@@ -72,6 +74,7 @@ export const registerDrive: RegisterCommand = (program, { io, global }) => {
     'move a robot, stop it, or latch and reset its emergency stop',
   );
   addTargetOptions(parent);
+  addGuardOptions(parent);
   const sub = (name: string, description: string) =>
     parent.command(name).description(description).allowExcessArguments(false);
   const run = (command: Command, action: DriveAction) => drive(command, action, io, global());

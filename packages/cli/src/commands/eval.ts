@@ -11,6 +11,8 @@ import {
   TASK_GROUPS,
 } from '@hal/eval';
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
+import { addGuardOptions, guardSettingsFromOptions } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
 import { distanceArg, hexKeyArg, integerArg, numberArg, positiveArg, urlArg } from '../values.js';
@@ -25,7 +27,7 @@ import { modelFailureError, trialVerdict } from '../eval/model-failures.js';
 import { checkOutputPlace } from '../output-place.js';
 import type { RegisterCommand } from './context.js';
 
-interface EvalCliOptions extends LeashCliOptions {
+interface EvalCliOptions extends LeashCliOptions, GuardCliOptions {
   on: string;
   record?: string;
   timeScale?: number;
@@ -114,7 +116,7 @@ function bar(done: number, total: number, width = 20): string {
 
 export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
-    addLeashOptions(new Command('eval'))
+    addGuardOptions(addLeashOptions(new Command('eval')))
       .description(
         'score agents on seeded tasks in the simulator, from its ground truth, and on a robot from its reports (oracle, naive, claimer, nav, the local model, openai:MODEL)',
       )
@@ -284,6 +286,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         const tasks = await chooseTasks(options);
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);
+        const guard = guardSettingsFromOptions(options) ?? false;
         const reality = {
           ...(options.latency === undefined ? {} : { latencyMs: options.latency }),
           ...(options.loss === undefined ? {} : { lossRate: options.loss }),
@@ -343,6 +346,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
             ...(sensors === undefined ? {} : { sensors }),
             ...(Object.keys(leash).length === 0 ? {} : { leash }),
+            guard,
             ...(Object.keys(reality).length === 0 ? {} : { reality }),
             onTrial: ({ agent, score, done, total }) =>
               progress(

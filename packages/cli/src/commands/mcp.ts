@@ -14,6 +14,8 @@ import { createToolExecutor, halTools } from '@hal/tools';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { listenError } from '../listen-error.js';
+import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { cliLogger } from '../logger.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
@@ -50,7 +52,8 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
       '(the robot the target options name; the embedded simulator when none is named)',
   );
   addMcpOptions(command);
-  command.action(async (raw: McpCliOptions) => {
+  addGuardOptions(command);
+  command.action(async (raw: McpCliOptions & GuardCliOptions) => {
     const options = mcpOptions(raw, io.env);
     const { target } = options;
     const stdin = io.stdin as Readable | undefined;
@@ -81,10 +84,13 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     const robot = opened.hal;
     // the map is known of the embedded simulator only
     const world: RobotWorld = robot instanceof SimulationHAL ? { map: () => robot.world.map } : {};
+    // the guard sits between the leash (the executor) and the robot
+    const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false);
+    recordGuard(guard, recorder);
     const hal =
       recorder === undefined
-        ? robot
-        : recordHal(robot, recorder, {
+        ? guarded
+        : recordHal(guarded, recorder, {
             signal: sampling.signal,
             deviceId: opened.deviceId,
             ...(target.kind === 'sim' ? { map: { name: target.map } } : {}),

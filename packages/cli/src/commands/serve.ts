@@ -5,6 +5,7 @@ import { Command, Option } from 'commander';
 import { TAFY_NODE_TYPE } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
 import { openConnection, refuseServedTwice, serveHalOnNats } from '@hal/nats';
+import { GuardedHAL } from '@hal/perception';
 import { recordHal } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
@@ -23,6 +24,8 @@ import type { ServeCliOptions, ServePlan } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
 import { listenError } from '../listen-error.js';
+import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { cliLogger } from '../logger.js';
 import { addOverwriteOption, openRecordingFile } from '../output-place.js';
 import { openTarget } from '../target-hal.js';
@@ -99,8 +102,9 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
   );
   addOverwriteOption(command, 'the --record file');
   addNatsOptions(command);
+  addGuardOptions(command);
   addTargetOptions(command, SERVED_KINDS);
-  command.action(async (options: ServeCliOptions & TargetCliOptions) => {
+  command.action(async (options: ServeCliOptions & TargetCliOptions & GuardCliOptions) => {
     const plan = servePlan(options, io.env);
     // the robot options only (--device here names the served id, not a NATS robot to reach)
     const target = resolveTarget(options, io.env, SERVED_KINDS);
@@ -126,7 +130,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
 /** Opens the robot, serves it until Ctrl-C, then stops serving and lets it go. */
 async function serveTarget(
   { io, global }: CommandContext,
-  options: ServeCliOptions & TargetCliOptions,
+  options: ServeCliOptions & TargetCliOptions & GuardCliOptions,
   plan: ServePlan,
   target: Target,
   nc: NatsConnection | undefined,
@@ -144,7 +148,9 @@ async function serveTarget(
     await recording?.close();
     throw error;
   });
-  const hal = recording?.wrap(opened.hal, options.device ?? opened.deviceId) ?? opened.hal;
+  // the guard stops what the network drives before an obstacle ahead
+  const { hal: guarded } = guardFromOptions(opened.hal, options, io, global().json);
+  const hal = recording?.wrap(guarded, options.device ?? opened.deviceId) ?? guarded;
   let gateway: HalGateway | undefined;
   let server: HalServer | undefined;
   let announcer: TafyNodeAnnouncer | undefined;
@@ -261,7 +267,11 @@ async function startRecording(
   );
   const sampling = new AbortController();
   return {
-    wrap: (served, deviceId) => recordHal(served, recorder, { signal: sampling.signal, deviceId }),
+    wrap: (served, deviceId) => {
+      // the guard's stops beside the calls
+      if (served instanceof GuardedHAL) recordGuard(served, recorder);
+      return recordHal(served, recorder, { signal: sampling.signal, deviceId });
+    },
     close: async () => {
       sampling.abort();
       return { file, ...(await recorder.close()) };

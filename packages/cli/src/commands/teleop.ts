@@ -3,6 +3,8 @@
 import { Command, Option } from 'commander';
 import { integerArg } from '../values.js';
 import { HalError } from '@hal/types';
+import { addGuardOptions, guardFromOptions } from '../guard-options.js';
+import type { GuardCliOptions } from '../guard-options.js';
 import { emit, progress } from '../io.js';
 import { poseText } from '../pose-text.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
@@ -14,7 +16,7 @@ import { withStatusLine } from '../teleop/status-line.js';
 import { requireTerminal, withRawMode } from '../teleop/terminal.js';
 import type { RegisterCommand } from './context.js';
 
-interface TeleopCliOptions extends TargetCliOptions {
+interface TeleopCliOptions extends TargetCliOptions, GuardCliOptions {
   power: number;
   turnPower: number;
 }
@@ -32,6 +34,7 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
         .argParser(integerArg('--turn-power', 1, 255))
         .default(120),
     );
+  addGuardOptions(command);
   addTargetOptions(command).action(async (options: TeleopCliOptions) => {
     // refuse before connecting: no robot is touched without a keyboard to stop it
     const stdin = requireTerminal(io);
@@ -47,10 +50,16 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
       ({ hal, deviceId }) => {
         progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
         return withRawMode(stdin, () =>
-          runTeleop(hal, stdin, lineIO, global(), {
-            power: options.power,
-            turnPower: options.turnPower,
-          }),
+          runTeleop(
+            guardFromOptions(hal, options, lineIO, global().json).hal,
+            stdin,
+            lineIO,
+            global(),
+            {
+              power: options.power,
+              turnPower: options.turnPower,
+            },
+          ),
         );
       },
     );

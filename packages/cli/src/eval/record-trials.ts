@@ -5,8 +5,10 @@
 import { mkdir } from 'node:fs/promises';
 import { join } from 'node:path';
 import type { InstrumentedHal, TrialInfo } from '@hal/eval';
+import { GuardedHAL } from '@hal/perception';
 import { recordHal } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { recordGuard } from '../guard-options.js';
 import { openRecordingFile } from '../output-place.js';
 
 /** A name safe as a folder: `local:SmolLM2` becomes `local-SmolLM2`. */
@@ -52,6 +54,8 @@ export function recordTrials(dir: string): {
     // no periodic sampling: the simulator runs faster than any timer; the pose is recorded after
     // every motion
     const wrapped = recordHal(hal, recorder, { posePeriodMs: 0, map: info.variant.map });
+    // the trial's guard (it is the HAL given, when on): its stops beside the calls
+    if (hal instanceof GuardedHAL) recordGuard(hal, recorder);
     return {
       hal: wrapped,
       close: async () => {
