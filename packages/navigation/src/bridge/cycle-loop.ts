@@ -9,6 +9,7 @@ import type { NavigationEvents } from './navigation-events.js';
 import { failed, stopRequested } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';
 import { recoverFromStuck } from './recovery.js';
+import { poseFromResult } from './result-pose.js';
 import { captureFrame, readPose, readRanges } from './sensing.js';
 import { DEG } from './turning.js';
 import { observeWorld } from './world-observer.js';
@@ -76,13 +77,17 @@ export async function runCycles(
     ctx.events.emit('decision', { cycle: state.cycle, provider: ctx.provider.name, decision });
 
     // Act.
+    const resultBefore = state.lastHalResult;
     const acted = await executeAction(ctx, state, decision, pose);
     if (acted.terminal !== undefined) {
       if (acted.moved) await refreshPose(ctx, state);
       return acted.terminal;
     }
     lastResult = acted.report;
-    const after = await readPose(ctx);
+    // the motion's result, when this action called one
+    const called = state.lastHalResult === resultBefore ? undefined : state.lastHalResult;
+    const reported = settings.poseFromResults ? poseFromResult(called, pose) : undefined;
+    const after = reported === undefined ? await readPose(ctx) : { pose: reported };
     if ('terminal' in after) return after.terminal;
     const still = isStill(pose, after.pose);
     pose = after.pose;

@@ -13,6 +13,7 @@ import type { BridgeSettings } from './bridge-options.js';
 import { checkMotionResult } from './result-check.js';
 import { stopWheels } from './sensing.js';
 import { TIMED_OUT, withTimeout } from './timeouts.js';
+import { markGuardedObstacle } from './world-updates.js';
 
 const DEG = Math.PI / 180;
 
@@ -64,6 +65,7 @@ export async function runMotion(
   }
   ctx.events.emit('result', { cycle: state.cycle, call, args, result });
   state.lastHalResult = result;
+  if (result.code === 'OBSTACLE_AHEAD') markGuardedObstacle(ctx, state, motion, args, result);
   return checkMotionResult(ctx, state, action, call, result);
 }
 

@@ -1,3 +1,4 @@
+import type { CallMotion, HALToolResult } from '@hal/types';
 import { distance, forEachCellInDisc, worldToCell } from '../grid/geometry.js';
 import type { Point, Pose2D } from '../grid/geometry.js';
 import type { OccupancyGrid } from '../grid/occupancy-grid.js';
@@ -47,4 +48,34 @@ export function entersUnknown(grid: OccupancyGrid, from: Point, to: Point): bool
     });
   }
   return unknown;
+}
+
+/**
+ * A guard between the bridge and the wheels refused or stopped a forward motion (OBSTACLE_AHEAD)
+ * because it saw something ahead, `details.distanceM` metres beyond the body's front: records
+ * it there (two hits' worth) along the direction of travel (toward a `point`'s target, else the
+ * heading), so the planner routes round what the guard saw and the bridge's own sensors missed.
+ */
+export function markGuardedObstacle(
+  ctx: BridgeContext,
+  state: RunState,
+  motion: CallMotion,
+  args: Record<string, number | string>,
+  result: HALToolResult,
+): void {
+  const pose = state.trajectory.at(-1);
+  const aheadM = result.details?.['distanceM'];
+  if (pose === undefined || typeof aheadM !== 'number' || !(aheadM >= 0)) return;
+  let heading = pose.yaw;
+  if (motion === 'point') {
+    const x = Number(args['x']);
+    const y = Number(args['y']);
+    if (!Number.isFinite(x) || !Number.isFinite(y) || distance(pose, { x, y }) < 0.01) return;
+    heading = Math.atan2(y - pose.y, x - pose.x);
+  } else if (motion !== 'forward') {
+    return;
+  }
+  const { grid } = ctx;
+  const reach = grid.robotRadiusM + aheadM + grid.spec.resolutionM / 2;
+  markObstacleAhead(grid, { x: pose.x, y: pose.y, yaw: heading }, reach);
 }
