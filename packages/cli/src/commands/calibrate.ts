@@ -1,26 +1,19 @@
 // `hal calibrate`: measures a physical robot's wheel diameter and wheel base (a measured straight
 // line, a measured full turn), sends them to the robot and saves them in the robot's calibration
 // file, which every later command sends again after each hello. Scripts give the measurements as
-// options; a person is asked for them.
+// options; a person is asked for them. `hal calibrate camera` (calibrate/camera-command.ts) fits
+// the camera model and saves it in the same file.
 import { Command, Option } from 'commander';
-import {
-  calibrationDir,
-  calibrationOf,
-  calibrationPath,
-  canNameFile,
-  PhysicalHAL,
-  readCalibrationFile,
-  writeCalibrationFile,
-} from '@hal/physical';
-import type { CalibrationSource } from '@hal/physical';
+import { calibrationDir, calibrationPath, PhysicalHAL } from '@hal/physical';
 import { positiveArg } from '../values.js';
 import { HalError } from '@hal/types';
+import { cameraCalibrateCommand } from '../calibrate/camera-command.js';
+import { tolerantSource, updateCalibrationFile } from '../calibrate/calibration-store.js';
 import { canPrompt, prompter } from '../calibrate/prompt.js';
 import { runCalibration, TURN_DEG } from '../calibrate/run-calibration.js';
 import type { CalibrationRun } from '../calibrate/run-calibration.js';
 import { CliError } from '../cli-error.js';
 import { emit, progress } from '../io.js';
-import type { CliIO } from '../io.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
@@ -73,32 +66,10 @@ function calibrateText(doc: CalibrateDocument): string {
   ].join('\n');
 }
 
-/**
- * The robot's own calibration file, if readable. A corrupt one is reported and left out, so the
- * calibration that replaces it can still run.
- */
-function tolerantSource(dir: string, io: CliIO, json: boolean): CalibrationSource {
-  return async (deviceId) => {
-    if (!canNameFile(deviceId)) return undefined;
-    const path = calibrationPath(dir, deviceId);
-    try {
-      const found = await readCalibrationFile(path);
-      return found === undefined ? undefined : calibrationOf(found);
-    } catch (error) {
-      progress(
-        io,
-        { json },
-        `warning: ${(error as Error).message}; calibrating from the robot's own values`,
-      );
-      return undefined;
-    }
-  };
-}
-
 export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
-  const command = new Command('calibrate')
+  const command = new Command('wheels')
     .description(
-      "measure a physical robot's wheel diameter and wheel base: it drives a straight line and a full turn, you measure them",
+      "measure a physical robot's wheel diameter and wheel base: it drives a straight line and a full turn, you measure them (the default)",
     )
     .addOption(
       new Option('--distance-cm <cm>', 'the straight line to drive')
@@ -174,9 +145,11 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
               { json },
             );
             if (path === undefined) return { deviceId, ...run };
-            await writeCalibrationFile(path, {
+            // the camera's calibration, if the file has one, is kept
+            await updateCalibrationFile(path, deviceId, io, json, (old) => ({
               version: 1,
               deviceId,
+              ...(old.camera === undefined ? {} : { camera: old.camera }),
               wheelDiameterCm: run.after.wheelDiameterCm,
               wheelBaseCm: run.after.wheelBaseCm,
               calibratedAt: new Date().toISOString(),
@@ -188,7 +161,7 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
                 ),
                 measuredTurnDeg: run.turn.measuredDeg,
               },
-            });
+            }));
             return { deviceId, ...run, file: path };
           },
         );
@@ -198,5 +171,12 @@ export const registerCalibrate: RegisterCommand = (program, { io, global }) => {
       }
     },
   );
-  program.addCommand(command);
+  // `hal calibrate` is `hal calibrate wheels`; `hal calibrate camera` the camera's
+  const calibrate = new Command('calibrate')
+    .description(
+      'measure a physical robot: its wheels (the default: `hal calibrate wheels`) or its camera (`hal calibrate camera`)',
+    )
+    .addCommand(command, { isDefault: true })
+    .addCommand(cameraCalibrateCommand(io, global));
+  program.addCommand(calibrate);
 };
