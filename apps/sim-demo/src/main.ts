@@ -11,6 +11,7 @@ import { GoalDriver } from './goal-driver.js';
 import { KeyboardTeleop } from './keyboard-teleop.js';
 import { TrajectoryPlot } from './plot.js';
 import { AgentPanel } from './panels/agent-panel.js';
+import { PerceptionView } from './perception/perception-view.js';
 import { noteHalEvents, ResultsLog } from './results-log.js';
 import { RobotLabels } from './robots/robot-labels.js';
 import { RobotsCard } from './robots/robots-card.js';
@@ -81,7 +82,16 @@ const goals = new GoalDriver({
   log,
   status,
   planAroundObstacles: () => planToggle.checked,
-  showGrid: () => gridToggle.checked,
+  // while Perception runs, the floor shows the grid it perceives instead
+  showGrid: () => gridToggle.checked && !perception.enabled,
+});
+const perception = new PerceptionView({
+  hal,
+  scene,
+  toggle: element('perception-toggle'),
+  overlay: element('camera-overlay'),
+  list: element('perception-list'),
+  onOff: () => goals.showGrid(),
 });
 
 /** Sends the robot to a clicked point when it is inside the arena. */
@@ -250,6 +260,8 @@ const hooks = {
       running: robot.running,
       emergencyStopped: robot.emergencyStopped,
     })),
+  /** The Perception toggle: looks taken, the objects of the last one, the perceived grid's cells. */
+  perception: () => perception.state,
   /** The Fleet card's mode, last per-robot results, formation and fleet e-stop. */
   fleet: () => fleet.state,
   /** While a formation runs: each follower's distance to its slot, metres. */
