@@ -44,9 +44,11 @@ export function createThreeFrameSource(
   renderer.shadowMap.enabled = options.shadows ?? true;
   renderer.setSize(width, height, false);
   const camera = new THREE.PerspectiveCamera();
+  // only the camera's own options: the model is strict, and refuses the renderer's
+  const { quality: _q, canvas: _c, antialias: _a, shadows: _s, ...cameraOptions } = options;
   const render = (robotId: string) => {
     const robot = view.world.robot(robotId);
-    view.robotCamera(robot, { ...options, width, height }, camera);
+    view.robotCamera(robot, { ...cameraOptions, width, height }, camera);
     const overlays = view.overlaysVisible;
     view.overlaysVisible = false;
     renderer.render(view.scene, camera);
