@@ -21,12 +21,11 @@ export interface LookResult {
 }
 
 /**
- * The camera model the HAL reports for its robot (`getDeviceInfo().camera`: a calibrated cube's,
- * the simulator's), else V1's.
+ * The camera model the HAL reports for its robot (`getDeviceInfo().camera`: the simulator's, a
+ * calibrated cube's, a served robot's), else V1's (a HAL that predates the field).
  */
 export function cameraOfHal(hal: HardwareAbstractionLayer): CameraModel {
-  const reported = (hal.getDeviceInfo() as { camera?: unknown }).camera;
-  const parsed = CameraModelSchema.safeParse(reported);
+  const parsed = CameraModelSchema.safeParse(hal.getDeviceInfo().camera);
   return parsed.success ? parsed.data : { ...V1_CAMERA };
 }
 
