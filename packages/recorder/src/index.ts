@@ -39,7 +39,7 @@ export type { RobotNamespace, RobotTopics } from './namespace.js';
 export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
 export { GRID, SCENE_UPDATE } from './foxglove-scene-schemas.js';
-export { PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
+export { MAX_PENDING_LOOKS, PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
 export type {
   PerceivedLook,
   PerceptionRecording,

@@ -52,9 +52,17 @@ export const PERCEPTION_TOPICS = Object.freeze({
 export interface PerceptionRecording {
   /** Looks seen so far. */
   readonly looks: number;
+  /**
+   * Looks left out because {@link MAX_PENDING_LOOKS} were already waiting for the recording's
+   * background work (a recording that cannot keep up loses looks, never delays them).
+   */
+  readonly skipped: number;
   /** Stops recording (the topics already written stay). */
   stop(): void;
 }
+
+/** Looks waiting to be written, at most; more are skipped and counted. */
+export const MAX_PENDING_LOOKS = 16;
 
 /** How far (m) a sighting may lie from the object it became for its height to count as that object's. */
 const SAME_OBJECT_M = 0.5;
@@ -89,6 +97,8 @@ export function recordPerception(
   let gridVersion = -1;
   let gridWrittenAt = Number.NEGATIVE_INFINITY;
   let looks = 0;
+  let skipped = 0;
+  let pending = 0;
 
   function learnHeights(look: PerceivedLook): void {
     for (const object of look.remembered) {
@@ -117,6 +127,10 @@ export function recordPerception(
 
   const unsubscribe = perception.onLook((look) => {
     looks += 1;
+    if (pending >= MAX_PENDING_LOOKS) {
+      skipped += 1;
+      return;
+    }
     // what the look handed over and the memory as it is now; the messages are made later
     const at = recorder.clock();
     let objects: PerceivedObject[];
@@ -125,11 +139,18 @@ export function recordPerception(
     } catch {
       return;
     }
-    recorder.defer(() => write(look, objects, at));
+    pending += 1;
+    recorder.defer(() => {
+      pending -= 1;
+      write(look, objects, at);
+    });
   });
   return {
     get looks() {
       return looks;
+    },
+    get skipped() {
+      return skipped;
     },
     stop: unsubscribe,
   };
