@@ -13,6 +13,7 @@ import {
   guardFromOptions,
   guardReport,
   guardSettingsFromOptions,
+  guardText,
   recordGuard,
 } from './guard-options.js';
 import { openRecordingFile } from './output-place.js';
@@ -67,5 +68,9 @@ describe('guard options', () => {
     });
     expect(guardReport(guard)).toMatchObject({ stops: 1, sees: 'camera' });
     expect(guardReport(undefined)).toEqual({ off: true });
+    expect(guardText(guardReport(guard))).toMatch(
+      /^guard: 1 motion\(s\) stopped or refused before an obstacle; the last 0\.\d+ m ahead \(camera\)$/,
+    );
+    expect(guardText({ off: true })).toBeUndefined();
   });
 });

@@ -60,6 +60,16 @@ export function guardReport(guard: GuardedHAL | undefined): GuardStatus | { off:
   return guard === undefined ? { off: true } : guard.status();
 }
 
+/** A line for people of what the guard did, when it did anything worth saying. */
+export function guardText(report: GuardStatus | { off: true }): string | undefined {
+  if ('off' in report) return undefined;
+  if (report.warning !== undefined) return `guard: ${report.warning}`;
+  const last = report.lastStop;
+  if (report.stops === 0 || last === undefined) return undefined;
+  const ahead = `${last.atEdge ? 'at most ' : ''}${last.distanceM} m ahead (${last.source})`;
+  return `guard: ${report.stops} motion(s) stopped or refused before an obstacle; the last ${ahead}`;
+}
+
 /** The topic of a recording the guard's events go to. */
 export const GUARD_TOPIC = '/hal/guard';
 

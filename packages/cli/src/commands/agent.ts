@@ -7,7 +7,13 @@ import { runAgent } from '@hal/agent';
 import type { AgentOutcome, ChatProvider, RunAgentOptions } from '@hal/agent';
 import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
-import { addGuardOptions, guardFromOptions, guardReport, recordGuard } from '../guard-options.js';
+import {
+  addGuardOptions,
+  guardFromOptions,
+  guardReport,
+  guardText,
+  recordGuard,
+} from '../guard-options.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
@@ -248,6 +254,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         [
           ...(pose === undefined ? [] : [`pose ${poseText(pose)}`]),
           ...(outcome.text === '' ? [] : [`model: ${outcome.text}`]),
+          ...[guardText(guard)].filter((line) => line !== undefined),
         ].join('\n'),
       );
       if (outcome.reason === 'error' && outcome.error !== undefined) {
