@@ -51,6 +51,14 @@ describe('the camera model in the device info', () => {
     expect(sim.getDeviceInfo().camera).toEqual(TILTED);
     expect(DeviceInfoSchema.parse(sim.getDeviceInfo()).camera).toEqual(TILTED);
     expect(own(new SimulationHAL()).getDeviceInfo().camera).toEqual(V1_CAMERA);
+    const configured = own(
+      SimulationHAL.fromConfig({
+        mode: 'simulation',
+        deviceId: 'sim-cam',
+        camera: { tiltDeg: 15, heightM: 0.12 },
+      }),
+    );
+    expect(configured.getDeviceInfo().camera).toEqual(TILTED);
     const blind = own(new SimulationHAL({ features: { camera: false } }));
     expect(blind.getDeviceInfo().camera).toBeUndefined();
   });

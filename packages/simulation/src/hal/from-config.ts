@@ -6,8 +6,8 @@ import type { SimulatedFeatures, SimulationHALOptions } from './options.js';
 /**
  * The SimulationHAL options a shared {@link HALConfig} asks for, over `options`: `mode` must be
  * 'simulation'; `simulator` may be the {@link World} to join; `robot` overrides the V1 geometry
- * and limits; `deviceId` names the device; and `capabilities`, when given, chooses the simulated
- * features by their capability strings. Throws INVALID_PARAMETER on a bad configuration.
+ * and limits; `camera` the camera model it renders with; `deviceId` names the device; and
+ * `capabilities`, when given, chooses the simulated features by their capability strings. Throws INVALID_PARAMETER on a bad configuration.
  */
 export function optionsFromConfig(
   config: HALConfig,
@@ -53,6 +53,15 @@ export function optionsFromConfig(
           robot: Object.fromEntries(
             Object.entries(c.robot).filter(([, v]) => v !== undefined),
           ) as Partial<RobotConfig>,
+        }),
+    // the camera renders with the config's model (over the options' and V1's)
+    ...(c.camera === undefined
+      ? {}
+      : {
+          camera: {
+            ...options.camera,
+            ...Object.fromEntries(Object.entries(c.camera).filter(([, v]) => v !== undefined)),
+          },
         }),
     deviceId: c.deviceId,
     features,
