@@ -82,7 +82,10 @@ export type GuardSettings = z.output<typeof GuardSettingsSchema>;
 
 /** Options of {@link guardHal}: its settings, and what it sees with and writes to. */
 export interface GuardOptions extends Partial<GuardSettings> {
-  /** The camera (V1's where a field is left out), for a camera-watching guard. */
+  /**
+   * The camera (V1's where a field is left out), for a camera-watching guard. Default the one the
+   * robot reports (`getDeviceInfo().camera`), else V1's.
+   */
   camera?: Partial<CameraModel>;
   /** Builds the frame perceiver (default one on `camera` that detects no objects). */
   perceiver?: () => FramePerceiver;

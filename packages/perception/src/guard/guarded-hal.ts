@@ -198,8 +198,10 @@ export class GuardedHAL implements HardwareAbstractionLayer {
 
   #perceiver(): FramePerceiver {
     if (this.#options.perceiver !== undefined) return this.#options.perceiver();
+    // the camera the robot reports (its configuration or calibration) unless one is given
+    const camera = this.#options.camera ?? this.#hal.getDeviceInfo().camera;
     return new FramePerceiver({
-      ...(this.#options.camera === undefined ? {} : { camera: this.#options.camera }),
+      ...(camera === undefined ? {} : { camera }),
       detector: NO_OBJECTS,
     });
   }
