@@ -14,6 +14,7 @@ import {
 } from '@hal/recorder';
 import type { Recording } from '@hal/recorder';
 import { SimulationHAL, World } from '@hal/simulation';
+import { V1_CAMERA } from '@hal/types';
 import { describe, expect, it } from 'vitest';
 import { expectWellFormed } from './well-formed.js';
 
@@ -89,6 +90,9 @@ describe('recordPerception', () => {
       'foxglove.SceneUpdate',
     );
     expect(recording.channels.get(PERCEPTION_TOPICS.grid)?.schemaName).toBe('foxglove.Grid');
+
+    // the camera model perception projected with is in the robot's metadata
+    expect(JSON.parse(recording.metadata.get('hal.robot')!['camera']!)).toEqual(V1_CAMERA);
 
     const scenes = on(recording, PERCEPTION_TOPICS.objects) as SceneUpdate[];
     expect(scenes).toHaveLength(3);

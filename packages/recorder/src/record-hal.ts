@@ -171,6 +171,8 @@ export function recordHal<T extends HardwareAbstractionLayer>(
       mode: String(hal.mode),
       capabilities: JSON.stringify(info?.capabilities ?? []),
       robot_config: JSON.stringify(jsonSafe(hal.robotConfig) ?? null),
+      // the camera model its frames were taken with (perception projected with it), or null
+      camera: JSON.stringify(jsonSafe(info?.camera) ?? null),
       version: options.version ?? RECORDER_VERSION,
       map: JSON.stringify(jsonSafe(options.map) ?? null),
     });
