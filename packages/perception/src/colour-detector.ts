@@ -1,7 +1,7 @@
 import { findRegions } from './components.js';
 import type { Detector, DetectorInput } from './detector.js';
 import { kindFromShading } from './object-kind.js';
-import { COLOUR_NAMES } from './palette.js';
+import { COLOUR_NAMES, OFF_PALETTE } from './palette.js';
 import type { Detection } from './project-object.js';
 
 /**
@@ -31,6 +31,21 @@ function dropOutliers(rows: Int16Array): number {
   return dropped;
 }
 
+/** The off-palette pixels within a region's bounding box. */
+function offPaletteIn(
+  labels: Uint8Array,
+  width: number,
+  box: { minX: number; maxX: number; minY: number; maxY: number },
+): number {
+  let count = 0;
+  for (let y = box.minY; y <= box.maxY; y += 1) {
+    for (let x = box.minX; x <= box.maxX; x += 1) {
+      if (labels[y * width + x] === OFF_PALETTE) count += 1;
+    }
+  }
+  return count;
+}
+
 /** Options of {@link ColourDetector}. */
 export interface ColourDetectorOptions {
   /** Smallest region reported, pixels. Default 30. */
@@ -58,11 +73,14 @@ export class ColourDetector implements Detector {
 
   detect({ image, labels, floor }: DetectorInput): Detection[] {
     const { width, height, data } = image;
-    const regions = findRegions(labels, width, height, data, this.#minPixels);
+    const regions = findRegions(labels, width, height, data, this.#minPixels, COLOUR_NAMES.length);
     const detections: Detection[] = [];
     for (const region of regions) {
       const colour = COLOUR_NAMES[region.label - 1];
       if (colour === undefined) continue;
+      // Palette-coloured pixels amid more of a colour the palette lacks are the edge of such a
+      // thing (a terracotta box's reddest shading), not an object of their own.
+      if (offPaletteIn(labels, width, region) >= region.count) continue;
       const baseRows = new Int16Array(region.bottom.length).fill(-1);
       let visible = 0;
       for (let c = 0; c < region.bottom.length; c += 1) {

@@ -36,8 +36,8 @@ function find(parent: Int32Array, i: number): number {
 }
 
 /**
- * The regions of `labels` (one byte a pixel, 0 = background) of at least `minPixels` pixels;
- * `rgba` gives the brightness.
+ * The regions of `labels` (one byte a pixel, 0 = background, labels above `maxLabel` too) of at
+ * least `minPixels` pixels; `rgba` gives the brightness.
  */
 export function findRegions(
   labels: Uint8Array,
@@ -45,6 +45,7 @@ export function findRegions(
   height: number,
   rgba: Uint8Array,
   minPixels: number,
+  maxLabel = 255,
 ): Region[] {
   const ids = new Int32Array(width * height);
   const parent = new Int32Array(width * height + 1);
@@ -53,7 +54,7 @@ export function findRegions(
     for (let x = 0; x < width; x += 1) {
       const i = y * width + x;
       const label = labels[i] ?? 0;
-      if (label === 0) continue;
+      if (label === 0 || label > maxLabel) continue;
       const left = x > 0 && labels[i - 1] === label ? (ids[i - 1] ?? 0) : 0;
       const up = y > 0 && labels[i - width] === label ? (ids[i - width] ?? 0) : 0;
       if (left === 0 && up === 0) {

@@ -11,7 +11,7 @@ export interface DetectorInput {
   projection: CameraProjection;
   /** The floor's learnt appearance (for telling where an object's base meets the floor). */
   floor: FloorModel;
-  /** One byte a pixel: the palette label (0 none, 1..6), filled by the colour pass. */
+  /** One byte a pixel: the palette label (0 none, 1..6 a palette colour, 7 off-palette). */
   labels: Uint8Array;
 }
 

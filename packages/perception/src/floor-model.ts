@@ -88,8 +88,8 @@ export class FloorModel {
   }
 
   /**
-   * Learns from the reference region of `image`, skipping pixels whose `labels` entry is not 0
-   * (coloured objects are never floor). Returns the fraction of the region's pixels learnt.
+   * Learns from the reference region of `image`, skipping pixels whose `labels` entry is a
+   * palette colour (1..6: the objects perception names are never floor). Returns the fraction of the region's pixels learnt.
    */
   learn(image: RgbaImage, labels?: Uint8Array): number {
     const { width, height, data } = image;
@@ -106,7 +106,8 @@ export class FloorModel {
       for (let x = x0; x < x0 + cols; x += 1) {
         total += 1;
         const p = y * width + x;
-        if (labels !== undefined && labels[p] !== 0) continue;
+        const label = labels?.[p] ?? 0;
+        if (label >= 1 && label <= 6) continue;
         const o = p * 4;
         const cell =
           table[

@@ -18,6 +18,7 @@ export {
   colourOf,
   DEFAULT_COLOUR_THRESHOLDS,
   DEFAULT_PALETTE,
+  OFF_PALETTE,
 } from './palette.js';
 export type { ColourName, ColourThresholds, PaletteColour } from './palette.js';
 export { projectDetection, toWorld } from './project-object.js';

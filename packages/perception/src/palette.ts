@@ -5,6 +5,13 @@
  * its hue is within the colour's band. Grey walls, the floor and pale colours are none.
  */
 
+/**
+ * The label of a pixel saturated and bright enough to be coloured, but of no palette colour's hue
+ * (a terracotta box, a teal wall): not an object of the palette, and a sign that palette-coloured
+ * pixels next to it are the edge of such a thing.
+ */
+export const OFF_PALETTE = 7;
+
 /** The colours perception names, in the order of their labels (label = index + 1). */
 export const COLOUR_NAMES = ['red', 'orange', 'yellow', 'green', 'blue', 'purple'] as const;
 export type ColourName = (typeof COLOUR_NAMES)[number];
@@ -40,8 +47,9 @@ export const DEFAULT_COLOUR_THRESHOLDS: Readonly<ColourThresholds> = Object.free
 });
 
 /**
- * The label (1..6, the index in {@link COLOUR_NAMES} + 1) of an RGB colour (0..255 each), or 0
- * when it is none of the palette's.
+ * The label (1..6, the index in {@link COLOUR_NAMES} + 1) of an RGB colour (0..255 each), 0 when
+ * it is not coloured (grey, dark, pale), or {@link OFF_PALETTE} when it is coloured but of no
+ * palette colour's hue.
  */
 export function colourLabel(
   r: number,
@@ -61,7 +69,7 @@ export function colourLabel(
   else if (max === g) hue = 60 * (2 + (b - r) / chroma);
   else hue = 60 * (4 + (r - g) / chroma);
   if (hue < 0) hue += 360;
-  let best = 0;
+  let best = OFF_PALETTE;
   let bestDistance = Number.POSITIVE_INFINITY;
   for (const colour of palette) {
     const d = Math.abs(((hue - colour.hueDeg + 540) % 360) - 180);
@@ -82,7 +90,7 @@ export function colourOf(
   thresholds: ColourThresholds = DEFAULT_COLOUR_THRESHOLDS,
 ): ColourName | undefined {
   const label = colourLabel(r, g, b, palette, thresholds);
-  return label === 0 ? undefined : COLOUR_NAMES[label - 1];
+  return COLOUR_NAMES[label - 1];
 }
 
 /**
@@ -113,7 +121,7 @@ export class ColourTable {
     }
   }
 
-  /** The label (0 none, 1..6) of an RGB colour. */
+  /** The label (0 none, 1..6 a palette colour, {@link OFF_PALETTE}) of an RGB colour. */
   label(r: number, g: number, b: number): number {
     return this.#labels[((r >> 2) << 12) | ((g >> 2) << 6) | (b >> 2)] ?? 0;
   }
