@@ -3,7 +3,6 @@ import jpeg from 'jpeg-js';
 import type { JpegDecoder, RgbaImage } from './image.js';
 import { loadSharpDecoder } from './sharp-decoder.js';
 
-
 const DATA_URL = /^data:image\/jpeg;base64,/;
 
 /** The bytes of a frame: a `data:image/jpeg;base64,...` URL, bare base64, or bytes. */

@@ -5,9 +5,7 @@ interface SharpLike {
   (input: Uint8Array): {
     ensureAlpha(): {
       raw(): {
-        toBuffer(options: {
-          resolveWithObject: true;
-        }): Promise<{
+        toBuffer(options: { resolveWithObject: true }): Promise<{
           data: Uint8Array;
           info: { width: number; height: number; channels: number };
         }>;
