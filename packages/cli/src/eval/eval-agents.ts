@@ -10,6 +10,7 @@ import {
 } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
 import {
+  cameraNavigationAgent,
   chatAgent,
   claimerAgent,
   naiveAgent,
@@ -47,6 +48,7 @@ const FIXED: Record<string, () => EvalAgent> = {
   claimer: claimerAgent,
   straight: straightAgent,
   nav: () => navigationAgent({ name: 'nav:goal-seeking' }),
+  'nav-camera': () => cameraNavigationAgent(),
 };
 
 /** Parses `--agent oracle,naive,local,openai:gpt-4o-mini` (names checked before anything loads). */
@@ -61,7 +63,7 @@ export function agentNames(text: string): string[] {
     if (/^openai:[^\s]+$/.test(name)) continue;
     throw new CliError(
       'USAGE',
-      `"--agent": unknown agent "${name}" (oracle, naive, claimer, straight, nav, local, openai:MODEL)`,
+      `"--agent": unknown agent "${name}" (oracle, naive, claimer, straight, nav, nav-camera, local, openai:MODEL)`,
     );
   }
   if (new Set(names).size !== names.length)
