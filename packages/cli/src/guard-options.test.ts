@@ -42,6 +42,15 @@ describe('guard options', () => {
     expect(() => parse(['--guard-standoff', '0'])).toThrow(/--guard-standoff/);
   });
 
+  it('leaves a robot reached over the network to the guard where it is served', () => {
+    const sim = new SimulationHAL();
+    const io = captureIO();
+    expect(guardFromOptions(sim, {}, io, false, { kind: 'ws' }).guard).toBeUndefined();
+    expect(guardFromOptions(sim, {}, io, false, { kind: 'nats' }).guard).toBeUndefined();
+    expect(guardFromOptions(sim, {}, io, false, { kind: 'udp' }).guard).toBeDefined();
+    expect(guardFromOptions(sim, { guard: false }, io, false, { kind: 'sim' }).hal).toBe(sim);
+  });
+
   it('records the guard stopping a motion on /hal/guard, beside the calls', async () => {
     dir = await mkdtemp(join(tmpdir(), 'hal-guard-record-'));
     const file = join(dir, 'run.mcap');

@@ -39,18 +39,25 @@ export function guardSettingsFromOptions(
   return options.guardStandoff === undefined ? {} : { standoffM: options.guardStandoff };
 }
 
+/** Targets reached over the network: they are guarded where they are served (`hal serve`). */
+const SERVED_ELSEWHERE: ReadonlySet<string> = new Set(['ws', 'nats']);
+
 /**
  * `hal` guarded as the options ask (unguarded with --no-guard), its warnings (it cannot see, a
- * reverse passes unwatched) written as the HAL's are.
+ * reverse passes unwatched) written as the HAL's are. A robot reached over the network (`--ws`,
+ * `--nats`/`--device`) is guarded where it is served, not here again: each look would cross the
+ * network, and the served robot's own guard is nearer to it.
  */
 export function guardFromOptions(
   hal: HardwareAbstractionLayer,
   options: GuardCliOptions,
   io: CliIO,
   json: boolean,
+  target?: { kind: string },
 ): { hal: HardwareAbstractionLayer; guard: GuardedHAL | undefined } {
   const settings = guardSettingsFromOptions(options);
   if (settings === undefined) return { hal, guard: undefined };
+  if (target !== undefined && SERVED_ELSEWHERE.has(target.kind)) return { hal, guard: undefined };
   const guard = guardHal(hal, { ...settings, logger: cliLogger(io, json) });
   return { hal: guard, guard };
 }

@@ -177,7 +177,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         { ...connect, json, role: 'control' },
         async ({ hal: robot, deviceId }) => {
           // the guard sits between the leash (the executor) and the robot
-          const { hal: opened, guard } = guardFromOptions(robot, options, io, json);
+          const { hal: opened, guard } = guardFromOptions(robot, options, io, json, target);
           recordGuard(guard, recorder);
           const hal = recorder
             ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })

@@ -59,7 +59,8 @@ async function drive(
     target,
     io,
     { ...connect, json: global.json, role: SAFETY_ONLY.has(action.kind) ? 'safety' : 'control' },
-    ({ hal }) => runDrive(guardFromOptions(hal, options, io, global.json).hal, action, io, global),
+    ({ hal }) =>
+      runDrive(guardFromOptions(hal, options, io, global.json, target).hal, action, io, global),
   ).catch((error: unknown) => {
     if (isHalError(error) && error.code === 'EMERGENCY_STOPPED') {
       throw latchedError(error, action, target);

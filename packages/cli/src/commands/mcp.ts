@@ -85,7 +85,7 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     // the map is known of the embedded simulator only
     const world: RobotWorld = robot instanceof SimulationHAL ? { map: () => robot.world.map } : {};
     // the guard sits between the leash (the executor) and the robot
-    const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false);
+    const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false, target);
     recordGuard(guard, recorder);
     const hal =
       recorder === undefined

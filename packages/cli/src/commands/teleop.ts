@@ -51,7 +51,7 @@ export const registerTeleop: RegisterCommand = (program, { io, global }) => {
         progress(io, global(), `${deviceId} (${hal.mode}): ${TELEOP_HELP}`);
         return withRawMode(stdin, () =>
           runTeleop(
-            guardFromOptions(hal, options, lineIO, global().json).hal,
+            guardFromOptions(hal, options, lineIO, global().json, target).hal,
             stdin,
             lineIO,
             global(),
