@@ -27,6 +27,9 @@ describe('guardHal', () => {
       expect(result.success).toBe(false);
       expect(result.code).toBe('OBSTACLE_AHEAD');
       expect(result.details).toMatchObject({ source: 'camera', when: 'during' });
+      expect(result.error).toMatch(
+        /^moveForward: stopped after 0\.\d+ m: an obstacle 0\.\d+ m ahead \(camera\); the guard stops 0\.1 m short of what it sees$/,
+      );
       const seen = result.details?.['distanceM'] as number;
       expect(gap()).toBeGreaterThan(0.05);
       expect(gap()).toBeLessThan(0.15);

@@ -372,7 +372,7 @@ export class GuardedLocomotion implements LocomotionInterface {
     this.#ctx.record.obstacle(stop);
     const ahead = `${seen.atEdge ? 'at most ' : ''}${stop.distanceM} m ahead (${seen.source})`;
     const done = when === 'before' ? 'refused, nothing moved' : `stopped after ${travelledM} m`;
-    const message = `${motion}: ${done}: an obstacle ${ahead}, within the guard's stand-off of ${standoffM} m`;
+    const message = `${motion}: ${done}: an obstacle ${ahead}; the guard stops ${standoffM} m short of what it sees`;
     this.#ctx.log.info(message, { ...stop });
     return failureResult(
       this.#ctx.hal.mode,
