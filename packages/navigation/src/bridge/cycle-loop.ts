@@ -10,9 +10,8 @@ import { failed, stopRequested } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';
 import { recoverFromStuck } from './recovery.js';
 import { poseFromResult } from './result-pose.js';
-import { captureFrame, readPose, readRanges } from './sensing.js';
+import { captureFrame, observeWorld, readPose, readRanges } from './sensing.js';
 import { DEG } from './turning.js';
-import { observeWorld } from './world-observer.js';
 import { refreshPose } from './world-updates.js';
 
 /** Closer than this, metres, and the robot has not moved. */

@@ -6,6 +6,7 @@ import type { BridgeContext } from './bridge-context.js';
 import { failed } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';
 import { TIMED_OUT, withTimeout } from './timeouts.js';
+import type { WorldObservation, WorldObserver } from './world-observer.js';
 
 // The bridge's reads of the robot, each bounded by the sensor timeout.
 
@@ -88,5 +89,25 @@ export async function stopWheels(ctx: BridgeContext): Promise<void> {
     await withTimeout(ctx.hal.locomotion.stop(), ctx.settings.sensorTimeoutMs);
   } catch {
     // Best effort: the run is ending anyway.
+  }
+}
+
+/** Runs the observer for one cycle, bounded by the sensor timeout; never throws. */
+export async function observeWorld(
+  ctx: BridgeContext,
+  observer: WorldObserver,
+  observation: WorldObservation,
+): Promise<void> {
+  const timeoutMs = ctx.settings.sensorTimeoutMs;
+  try {
+    const done = await withTimeout(
+      Promise.resolve().then(() => observer(observation)),
+      timeoutMs,
+    );
+    if (done === TIMED_OUT) {
+      ctx.logger.warn('navigation: the world observer did not finish in time', { timeoutMs });
+    }
+  } catch (error) {
+    ctx.logger.warn('navigation: the world observer failed', { error: errorMessage(error) });
   }
 }

@@ -1,8 +1,5 @@
 import type { Pose2D } from '../grid/geometry.js';
 import type { OccupancyGrid } from '../grid/occupancy-grid.js';
-import { errorMessage } from '../errors.js';
-import type { BridgeContext } from './bridge-context.js';
-import { TIMED_OUT, withTimeout } from './timeouts.js';
 
 /** What the bridge hands a {@link WorldObserver} each cycle. */
 export interface WorldObservation {
@@ -25,23 +22,3 @@ export interface WorldObservation {
  * above navigation and plugs in here.
  */
 export type WorldObserver = (observation: WorldObservation) => Promise<void> | void;
-
-/** Runs the observer for one cycle, bounded by the sensor timeout; never throws. */
-export async function observeWorld(
-  ctx: BridgeContext,
-  observer: WorldObserver,
-  observation: WorldObservation,
-): Promise<void> {
-  const timeoutMs = ctx.settings.sensorTimeoutMs;
-  try {
-    const done = await withTimeout(
-      Promise.resolve().then(() => observer(observation)),
-      timeoutMs,
-    );
-    if (done === TIMED_OUT) {
-      ctx.logger.warn('navigation: the world observer did not finish in time', { timeoutMs });
-    }
-  } catch (error) {
-    ctx.logger.warn('navigation: the world observer failed', { error: errorMessage(error) });
-  }
-}
