@@ -1,4 +1,4 @@
-import { guardHal } from '@hal/perception';
+import { guardHal, Perception, withCameraScan } from '@hal/perception';
 import { SimulationHAL, World } from '@hal/simulation';
 import type { EvalAgent } from './agent.js';
 import { simulatedBody } from './bodies/simulated-body.js';
@@ -42,7 +42,12 @@ export async function runTrial(
   });
   // the guard sits under the agent's tools (and under a recorder: what is recorded is the agent's)
   const guard = options.guard === false ? undefined : guardHal(sim, options.guard ?? {});
-  const instrumented = await options.instrument?.(guard ?? sim, {
+  // scan answers from what the robot can know: its range sensors and its camera's look
+  const seeing =
+    sim.getDeviceInfo().camera === undefined
+      ? (guard ?? sim)
+      : withCameraScan(guard ?? sim, new Perception(sim));
+  const instrumented = await options.instrument?.(seeing, {
     task,
     variant,
     seed,
@@ -51,7 +56,7 @@ export async function runTrial(
     on: 'simulator',
     nowUs: () => world.nowUs,
   });
-  const hal = instrumented?.hal ?? guard ?? sim;
+  const hal = instrumented?.hal ?? seeing;
   try {
     await hal.initialize();
     return await conductTrial({

@@ -14,6 +14,7 @@ import {
   guardText,
   recordGuard,
 } from '../guard-options.js';
+import { seeingFrom } from '../seeing.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
@@ -177,8 +178,10 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         { ...connect, json, role: 'control' },
         async ({ hal: robot, deviceId }) => {
           // the guard sits between the leash (the executor) and the robot
-          const { hal: opened, guard } = guardFromOptions(robot, options, io, json, target);
+          const { hal: guarded, guard } = guardFromOptions(robot, options, io, json, target);
           recordGuard(guard, recorder);
+          // scan answers from the range sensors and the camera, as the robot can know
+          const { hal: opened } = seeingFrom(guarded, robot, recorder, target);
           const hal = recorder
             ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
             : opened;

@@ -15,6 +15,7 @@ import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { listenError } from '../listen-error.js';
 import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options.js';
+import { seeingFrom } from '../seeing.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { cliLogger } from '../logger.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
@@ -87,10 +88,12 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     // the guard sits between the leash (the executor) and the robot
     const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false, target);
     recordGuard(guard, recorder);
+    // scan answers from the range sensors and the camera, as the robot can know
+    const { hal: seeing } = seeingFrom(guarded, robot, recorder, target);
     const hal =
       recorder === undefined
-        ? guarded
-        : recordHal(guarded, recorder, {
+        ? seeing
+        : recordHal(seeing, recorder, {
             signal: sampling.signal,
             deviceId: opened.deviceId,
             ...(target.kind === 'sim' ? { map: { name: target.map } } : {}),
