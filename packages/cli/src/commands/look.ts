@@ -3,7 +3,6 @@
 // is free per 5 degrees of bearing; `--save` writes the frame annotated. `--world FILE` puts the
 // embedded simulator in a world of the eval task format.
 import { Command, Option } from 'commander';
-import { cameraProjection } from '@hal/kinematics';
 import { DEFAULT_FREE_SPACE } from '@hal/perception';
 import { emit } from '../io.js';
 import { annotateFrame } from '../look/annotate.js';
@@ -104,7 +103,7 @@ export const registerLook: RegisterCommand = (program, { io, global }) => {
       const camera = cameraOfHal(hal);
       const look = await lookOnce(hal, camera, options.timeout);
       if (saveTo !== undefined) {
-        const projection = cameraProjection(camera);
+        const { projection } = look.perception.perceiver;
         await writeImage(
           saveTo,
           annotateFrame(look.image, look.percept.objects, look.percept.freeSpace, projection),
