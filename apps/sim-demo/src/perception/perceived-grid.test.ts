@@ -11,7 +11,7 @@ describe('the perceived grid', () => {
     expect([grid.spec.originX, grid.spec.originY]).toStrictEqual([-2.5, -2.5]);
     const view = perceivedGridView(grid);
     expect(view.data.length).toBe(100 * 100);
-    expect([...view.data].every((v) => v === -1)).toBe(true);
+    expect(Array.from(view.data).every((v) => v === -1)).toBe(true);
   });
 
   it('shows what the camera saw: free cells below 0.5, occupied above', () => {
