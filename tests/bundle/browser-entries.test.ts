@@ -74,7 +74,9 @@ describe('the browser entries import nothing Node-only statically', () => {
       '@hal/agent',
       '@hal/fleet',
       '@hal/hybrid',
+      '@hal/kinematics',
       '@hal/navigation',
+      '@hal/perception',
       '@hal/remote',
       '@hal/simulation',
       '@hal/simulation/three',
@@ -82,6 +84,15 @@ describe('the browser entries import nothing Node-only statically', () => {
       'three',
       'three/addons/controls/OrbitControls.js',
     ]);
+  });
+
+  it('@hal/perception: sharp is named to no bundler (a variable specifier)', () => {
+    const { files, bare } = reachable('perception/src/index.ts');
+    expect(files.length).toBeGreaterThan(20);
+    expect(bare).toEqual(['@hal/agent', '@hal/kinematics', '@hal/types', 'jpeg-js', 'zod']);
+    for (const href of files) {
+      expect(readFileSync(new URL(href), 'utf8'), href).not.toMatch(/import\(\s*['"]sharp['"]/);
+    }
   });
 
   it('@hal/remote/server keeps ws and the Node built-ins (so the check above can fail)', () => {

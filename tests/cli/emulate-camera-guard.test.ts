@@ -3,23 +3,17 @@
 // emulated body's true pose in a world file; this process drives the cube with a guarded
 // PhysicalHAL over UDP and the guard sees over MJPEG. The cube has no range sensors: the camera
 // alone must stop it before the world's wall (the emulator itself would drive through it).
-import { mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { guardHal } from '@hal/perception';
 import type { GuardedHAL } from '@hal/perception';
-import { PhysicalHAL } from '@hal/physical';
+import type { PhysicalHAL } from '@hal/physical';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
-import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
+import { startEmulatedCube } from '../helpers/emulated-cube.js';
+import type { EmulatedCube } from '../helpers/emulated-cube.js';
 
-type Line = Record<string, unknown> & { event: string };
-
-const TIME_SCALE = 2;
 const BODY_RADIUS_M = 0.07;
 /** The wall's face, metres along x: 0.5 m ahead of the body's front at the start. */
 const WALL_FACE_X = BODY_RADIUS_M + 0.5;
-const WORLD_TEXT = JSON.stringify({
+const WORLD = {
   map: {
     name: 'wall',
     arena: { width: 5, height: 5 },
@@ -27,55 +21,22 @@ const WORLD_TEXT = JSON.stringify({
   },
   start: { x: 0, y: 0, yawDeg: 0 },
   objects: [],
-});
+};
 
-let dir: string;
+let emulated: EmulatedCube;
 let cube: PhysicalHAL;
 let guarded: GuardedHAL;
 
 beforeAll(async () => {
-  requireEmulator();
-  dir = await mkdtemp(join(tmpdir(), 'hal-guard-e2e-'));
-  const file = join(dir, 'world.json');
-  await writeFile(file, WORLD_TEXT);
-  const emulate = startHalProcess<Line>([
-    '--json',
-    'emulate',
-    '--emulator',
-    EMULATOR_PATH,
-    '--udp-port',
-    '0',
-    '--no-pty',
-    '--no-announce',
-    '--time-scale',
-    String(TIME_SCALE),
-    '--camera',
-    '0',
-    '--world',
-    file,
-  ]);
-  const ready = await emulate.waitFor((l) => l.event === 'ready');
-  cube = new PhysicalHAL(
-    {
-      mode: 'physical',
-      deviceId: 'cube',
-      connection: {
-        type: 'wifi',
-        host: '127.0.0.1',
-        udpPort: ready['udpPort'] as number,
-        cameraUrl: (ready['camera'] as { url: string }).url,
-      },
-    },
-    { timeScale: TIME_SCALE },
-  );
+  emulated = await startEmulatedCube({ world: WORLD, timeScale: 2 });
+  cube = emulated.physicalHal();
   guarded = guardHal(cube);
   await guarded.initialize();
 }, 60_000);
 
 afterAll(async () => {
   await guarded?.cleanup();
-  await stopAllHal();
-  if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  await emulated?.dispose();
 });
 
 describe('the guard on hal emulate --camera, over UDP and MJPEG', { timeout: 90_000 }, () => {

@@ -3,19 +3,14 @@
 // drives the robot with a PhysicalHAL over UDP and reads frames over HTTP (MJPEG), as it would a
 // real cube. Each frame must show the world file as the simulator's camera renders it from the
 // robot's true pose: the same red box, the same size, in the same columns.
-import { mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { parseWorldFile, realiseWorld } from '@hal/eval';
-import { PhysicalHAL } from '@hal/physical';
+import type { PhysicalHAL } from '@hal/physical';
 import { renderRobotView, SimRobot, World } from '@hal/simulation';
 import type { RgbaImage } from '@hal/simulation';
 import jpeg from 'jpeg-js';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
-import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
-
-type Line = Record<string, unknown> & { event: string };
+import { startEmulatedCube } from '../helpers/emulated-cube.js';
+import type { EmulatedCube } from '../helpers/emulated-cube.js';
 
 const TOKEN = 'camera-e2e-token';
 const TIME_SCALE = 10;
@@ -57,75 +52,29 @@ function decode(dataUrl: string): RgbaImage {
   return { width: image.width, height: image.height, data: image.data };
 }
 
-let dir: string;
+let cube: EmulatedCube;
 let hal: PhysicalHAL;
 let cameraUrl: string;
 
 beforeAll(async () => {
-  requireEmulator();
-  dir = await mkdtemp(join(tmpdir(), 'hal-camera-e2e-'));
-  const file = join(dir, 'world.json');
-  await writeFile(file, WORLD_TEXT);
-  const emulate = startHalProcess<Line>([
-    '--json',
-    'emulate',
-    '--emulator',
-    EMULATOR_PATH,
-    '--udp-port',
-    '0',
-    '--no-pty',
-    '--no-announce',
-    '--time-scale',
-    String(TIME_SCALE),
-    '--camera',
-    '0',
-    '--camera-token',
-    TOKEN,
-    '--world',
-    file,
-  ]);
-  const ready = await emulate.waitFor((l) => l.event === 'ready');
-  cameraUrl = (ready['camera'] as { url: string }).url;
-  hal = new PhysicalHAL(
-    {
-      mode: 'physical',
-      deviceId: 'cube',
-      connection: {
-        type: 'wifi',
-        host: '127.0.0.1',
-        udpPort: ready['udpPort'] as number,
-        cameraUrl,
-        cameraToken: TOKEN,
-      },
-    },
-    { timeScale: TIME_SCALE },
-  );
+  cube = await startEmulatedCube({
+    world: JSON.parse(WORLD_TEXT),
+    timeScale: TIME_SCALE,
+    token: TOKEN,
+  });
+  cameraUrl = cube.cameraUrl;
+  hal = cube.physicalHal();
   await hal.initialize();
 }, 60_000);
 
 afterAll(async () => {
   await hal?.cleanup();
-  await stopAllHal();
-  if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  await cube?.dispose();
 });
 
-/** The camera's frames sent so far (its GET /status). */
-async function servedFrames(): Promise<number> {
-  const response = await fetch(`${cameraUrl}/status?token=${TOKEN}`);
-  return ((await response.json()) as { frames_served: number }).frames_served;
-}
-
-/**
- * A frame made after the last motion ended: a frame is rendered as it is sent, so once three more
- * have gone out the HAL's latest shows the robot where the motion left it (bounded: 5 s).
- */
+/** A frame made after the last motion ended (three more frames sent: bounded, 5 s). */
 async function frameNow(): Promise<RgbaImage> {
-  const target = (await servedFrames()) + 3;
-  const deadline = Date.now() + 5000;
-  while ((await servedFrames()) < target) {
-    if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
-    await new Promise((resolve) => setTimeout(resolve, 30));
-  }
+  await cube.freshFrames();
   return decode(await hal.vision.captureFrame());
 }
 

@@ -2,15 +2,11 @@
 // process runs the firmware's cube-emulator and serves the ESP32-CAM's interface; `hal look --udp
 // ... --camera-url ...`, another process, reads the pose over UDP and a frame over MJPEG, as it
 // would from a real cube, and finds the world's objects where the file puts them.
-import { mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { LookDocumentSchema } from '@hal/cli';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { runHalProcess, startHalProcess, stopAllHal } from '../helpers/hal-process.js';
-import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
-
-type Line = Record<string, unknown> & { event: string };
+import { startEmulatedCube } from '../helpers/emulated-cube.js';
+import type { EmulatedCube } from '../helpers/emulated-cube.js';
+import { runHalProcess } from '../helpers/hal-process.js';
 
 const TOKEN = 'look-e2e-token';
 /** The robot starts at (-0.5, 0) facing +x: a red box ahead and left, a blue pillar right. */
@@ -23,39 +19,18 @@ const WORLD = {
   ],
 };
 
-let dir: string;
+let cube: EmulatedCube;
 let udp: string;
 let cameraUrl: string;
 
 beforeAll(async () => {
-  requireEmulator();
-  dir = await mkdtemp(join(tmpdir(), 'hal-look-emulated-'));
-  const file = join(dir, 'world.json');
-  await writeFile(file, JSON.stringify(WORLD));
-  const emulate = startHalProcess<Line>([
-    '--json',
-    'emulate',
-    '--emulator',
-    EMULATOR_PATH,
-    '--udp-port',
-    '0',
-    '--no-pty',
-    '--no-announce',
-    '--camera',
-    '0',
-    '--camera-token',
-    TOKEN,
-    '--world',
-    file,
-  ]);
-  const ready = await emulate.waitFor((l) => l.event === 'ready');
-  udp = `127.0.0.1:${String(ready['udpPort'])}`;
-  cameraUrl = (ready['camera'] as { url: string }).url;
+  cube = await startEmulatedCube({ world: WORLD, token: TOKEN });
+  udp = `127.0.0.1:${String(cube.udpPort)}`;
+  cameraUrl = cube.cameraUrl;
 }, 60_000);
 
 afterAll(async () => {
-  await stopAllHal();
-  if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  await cube?.dispose();
 });
 
 describe('hal look --udp --camera-url, on the emulated cube', () => {

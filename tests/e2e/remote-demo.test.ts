@@ -113,7 +113,10 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     expect(state?.pose?.x).toBeCloseTo(0.1, 2);
     expect(state?.divergence).toMatchObject({ exceeded: false });
     expect(state?.divergence?.positionM).toBeLessThan(0.005);
-    await expect(page.locator('#remote-info').textContent()).resolves.toMatch(/Twin divergence\d/);
+    // the card shows it once the refresh that follows the call has drawn it (after a getPose)
+    await eventually('the divergence on the card', () =>
+      /Twin divergence\d/.test(document.querySelector('#remote-info')?.textContent ?? ''),
+    );
     expect(await emulator.waitForCount((e) => e.event === 'move_finished', 1)).toHaveLength(1);
 
     // The e-stop button latches the remote robot; the badge says so.

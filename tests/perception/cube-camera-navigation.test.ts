@@ -3,21 +3,15 @@
 // body's true pose in a world file; the eval's nav-camera agent drives a PhysicalHAL over UDP,
 // mapping what the frames show into the navigation bridge's grid, and stops before the box it was
 // told of. The cube has no range sensors: the camera is all it has.
-import { mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { cameraNavigationAgent } from '@hal/eval';
 import type { NavigationBridge } from '@hal/navigation';
-import { PhysicalHAL } from '@hal/physical';
+import type { PhysicalHAL } from '@hal/physical';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
-import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
+import { startEmulatedCube } from '../helpers/emulated-cube.js';
+import type { EmulatedCube } from '../helpers/emulated-cube.js';
 
-type Line = Record<string, unknown> & { event: string };
-
-const TIME_SCALE = 10;
 /** The robot starts at the origin facing +x: a yellow box ahead-left (0.3 m), a wall 1.2 m ahead. */
-const WORLD_TEXT = JSON.stringify({
+const WORLD = {
   map: {
     name: 'a wall ahead',
     arena: { width: 6, height: 6 },
@@ -25,53 +19,20 @@ const WORLD_TEXT = JSON.stringify({
   },
   start: { x: 0, y: 0, yawDeg: 0 },
   objects: [{ name: 'target', kind: 'box', colour: 'yellow', x: 0.7, y: 0.25 }],
-});
+};
 
-let dir: string;
+let cube: EmulatedCube;
 let hal: PhysicalHAL;
 
 beforeAll(async () => {
-  requireEmulator();
-  dir = await mkdtemp(join(tmpdir(), 'hal-cube-camera-nav-'));
-  const file = join(dir, 'world.json');
-  await writeFile(file, WORLD_TEXT);
-  const emulate = startHalProcess<Line>([
-    '--json',
-    'emulate',
-    '--emulator',
-    EMULATOR_PATH,
-    '--udp-port',
-    '0',
-    '--no-pty',
-    '--no-announce',
-    '--time-scale',
-    String(TIME_SCALE),
-    '--camera',
-    '0',
-    '--world',
-    file,
-  ]);
-  const ready = await emulate.waitFor((l) => l.event === 'ready');
-  hal = new PhysicalHAL(
-    {
-      mode: 'physical',
-      deviceId: 'cube',
-      connection: {
-        type: 'wifi',
-        host: '127.0.0.1',
-        udpPort: ready['udpPort'] as number,
-        cameraUrl: (ready['camera'] as { url: string }).url,
-      },
-    },
-    { timeScale: TIME_SCALE },
-  );
+  cube = await startEmulatedCube({ world: WORLD, timeScale: 10 });
+  hal = cube.physicalHal();
   await hal.initialize();
 }, 60_000);
 
 afterAll(async () => {
   await hal?.cleanup();
-  await stopAllHal();
-  if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  await cube?.dispose();
 });
 
 /** Distance from (x, y) to the 0.3 m box at (0.7, 0.25), metres. */

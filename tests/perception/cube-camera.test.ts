@@ -2,21 +2,15 @@
 // cube-emulator and serves the ESP32-CAM's MJPEG stream rendered from the emulated body's true
 // pose in a world file; a PhysicalHAL drives it over UDP and perception looks through
 // captureFrame and getPose only, as it would on the desk.
-import { mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
 import { OccupancyGrid } from '@hal/navigation';
 import { Perception } from '@hal/perception';
-import { PhysicalHAL } from '@hal/physical';
+import type { PhysicalHAL } from '@hal/physical';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
-import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
+import { startEmulatedCube } from '../helpers/emulated-cube.js';
+import type { EmulatedCube } from '../helpers/emulated-cube.js';
 
-type Line = Record<string, unknown> & { event: string };
-
-const TIME_SCALE = 10;
 /** The robot starts at the origin facing +x: a yellow box ahead-left, a wall 1.2 m ahead. */
-const WORLD_TEXT = JSON.stringify({
+const WORLD = {
   map: {
     name: 'a wall ahead',
     arena: { width: 6, height: 6 },
@@ -24,75 +18,27 @@ const WORLD_TEXT = JSON.stringify({
   },
   start: { x: 0, y: 0, yawDeg: 0 },
   objects: [{ name: 'target', kind: 'box', colour: 'yellow', x: 0.7, y: 0.25 }],
-});
+};
 
-let dir: string;
+let cube: EmulatedCube;
 let hal: PhysicalHAL;
-let cameraUrl: string;
 
 beforeAll(async () => {
-  requireEmulator();
-  dir = await mkdtemp(join(tmpdir(), 'hal-cube-camera-'));
-  const file = join(dir, 'world.json');
-  await writeFile(file, WORLD_TEXT);
-  const emulate = startHalProcess<Line>([
-    '--json',
-    'emulate',
-    '--emulator',
-    EMULATOR_PATH,
-    '--udp-port',
-    '0',
-    '--no-pty',
-    '--no-announce',
-    '--time-scale',
-    String(TIME_SCALE),
-    '--camera',
-    '0',
-    '--world',
-    file,
-  ]);
-  const ready = await emulate.waitFor((l) => l.event === 'ready');
-  cameraUrl = (ready['camera'] as { url: string }).url;
-  hal = new PhysicalHAL(
-    {
-      mode: 'physical',
-      deviceId: 'cube',
-      connection: {
-        type: 'wifi',
-        host: '127.0.0.1',
-        udpPort: ready['udpPort'] as number,
-        cameraUrl,
-      },
-    },
-    { timeScale: TIME_SCALE },
-  );
+  cube = await startEmulatedCube({ world: WORLD, timeScale: 10 });
+  hal = cube.physicalHal();
   await hal.initialize();
 }, 60_000);
 
 afterAll(async () => {
   await hal?.cleanup();
-  await stopAllHal();
-  if (dir !== undefined) await rm(dir, { recursive: true, force: true });
+  await cube?.dispose();
 });
-
-/** Waits until the camera has sent three frames more (each is rendered as it is sent). */
-async function freshFrames(): Promise<void> {
-  const served = async () =>
-    ((await (await fetch(`${cameraUrl}/status`)).json()) as { frames_served: number })
-      .frames_served;
-  const target = (await served()) + 3;
-  const deadline = Date.now() + 5000;
-  while ((await served()) < target) {
-    if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
-    await new Promise((resolve) => setTimeout(resolve, 30));
-  }
-}
 
 describe('the V1 cube sees through its camera', { timeout: 60_000 }, () => {
   it('finds the box and maps the wall, then still after driving towards them', async () => {
     const grid = new OccupancyGrid({ widthM: 6, heightM: 6, resolutionM: 0.05 });
     const perception = new Perception(hal, { grid });
-    await freshFrames();
+    await cube.freshFrames();
     const first = await perception.look();
     expect(first.objects.map((o) => o.label)).toEqual(['yellow box']);
     const box = first.objects[0];
@@ -103,7 +49,7 @@ describe('the V1 cube sees through its camera', { timeout: 60_000 }, () => {
 
     // Drive 30 cm; the odometry moves the believed pose, the camera the view: they agree.
     expect((await hal.locomotion.moveForward(30)).success).toBe(true);
-    await freshFrames();
+    await cube.freshFrames();
     const second = await perception.look();
     expect(second.pose.x).toBeCloseTo(0.3, 2);
     const [remembered] = perception.where('yellow box');

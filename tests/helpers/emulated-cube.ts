@@ -1,0 +1,103 @@
+// The V1 cube with its camera, emulated over the real wire: `hal emulate --camera --world FILE` as
+// a process runs the firmware's cube-emulator (UDP) and serves the ESP32-CAM's interface (MJPEG)
+// with frames rendered from the emulated body's true pose in the world file. One harness for the
+// tests that drive it with a PhysicalHAL or point `hal` at it.
+import { mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { PhysicalHAL } from '@hal/physical';
+import { EMULATOR_PATH, requireEmulator } from '../physical/emulator.js';
+import { startHalProcess, stopAllHal } from './hal-process.js';
+
+type Line = Record<string, unknown> & { event: string };
+
+/** What {@link startEmulatedCube} starts with. */
+export interface EmulatedCubeOptions {
+  /** The world, in the eval task format (`{ map, start, objects }`): written to a file. */
+  world: unknown;
+  /** The robot's clock speed-up (`--time-scale`). Default 1. */
+  timeScale?: number;
+  /** The camera's token (`--camera-token`). Default none. */
+  token?: string;
+}
+
+/** A running emulated cube with its camera. */
+export interface EmulatedCube {
+  /** Its UDP port on 127.0.0.1. */
+  udpPort: number;
+  /** The camera's base URL, as `hal emulate` printed it. */
+  cameraUrl: string;
+  /** A PhysicalHAL for it over UDP with its camera, not yet initialised. */
+  physicalHal(): PhysicalHAL;
+  /**
+   * Waits (at most 5 s) until the camera has sent `frames` more frames: each is rendered as it is
+   * sent, so afterwards the latest shows the robot where it is now.
+   */
+  freshFrames(frames?: number): Promise<void>;
+  /** Stops every `hal` process of the test and removes the world file. */
+  dispose(): Promise<void>;
+}
+
+/** Starts `hal emulate --camera 0 --world FILE` and waits until it is ready. */
+export async function startEmulatedCube(options: EmulatedCubeOptions): Promise<EmulatedCube> {
+  requireEmulator();
+  const timeScale = options.timeScale ?? 1;
+  const dir = await mkdtemp(join(tmpdir(), 'hal-emulated-cube-'));
+  const file = join(dir, 'world.json');
+  await writeFile(file, JSON.stringify(options.world));
+  const emulate = startHalProcess<Line>([
+    '--json',
+    'emulate',
+    '--emulator',
+    EMULATOR_PATH,
+    '--udp-port',
+    '0',
+    '--no-pty',
+    '--no-announce',
+    '--time-scale',
+    String(timeScale),
+    '--camera',
+    '0',
+    ...(options.token === undefined ? [] : ['--camera-token', options.token]),
+    '--world',
+    file,
+  ]);
+  const ready = await emulate.waitFor((l) => l.event === 'ready');
+  const udpPort = ready['udpPort'] as number;
+  const cameraUrl = (ready['camera'] as { url: string }).url;
+  const auth = options.token === undefined ? '' : `?token=${options.token}`;
+  const served = async (): Promise<number> =>
+    ((await (await fetch(`${cameraUrl}/status${auth}`)).json()) as { frames_served: number })
+      .frames_served;
+  return {
+    udpPort,
+    cameraUrl,
+    physicalHal: () =>
+      new PhysicalHAL(
+        {
+          mode: 'physical',
+          deviceId: 'cube',
+          connection: {
+            type: 'wifi',
+            host: '127.0.0.1',
+            udpPort,
+            cameraUrl,
+            ...(options.token === undefined ? {} : { cameraToken: options.token }),
+          },
+        },
+        { timeScale },
+      ),
+    freshFrames: async (frames = 3) => {
+      const target = (await served()) + frames;
+      const deadline = Date.now() + 5000;
+      while ((await served()) < target) {
+        if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
+        await new Promise((resolve) => setTimeout(resolve, 30));
+      }
+    },
+    dispose: async () => {
+      await stopAllHal();
+      await rm(dir, { recursive: true, force: true });
+    },
+  };
+}
