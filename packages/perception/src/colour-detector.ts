@@ -31,15 +31,23 @@ function dropOutliers(rows: Int16Array): number {
   return dropped;
 }
 
-/** The off-palette pixels within a region's bounding box. */
-function offPaletteIn(
+/** The least height of an object, image rows. */
+const MIN_ROWS = 4;
+/** How far around a region's box off-palette pixels are counted, pixels. */
+const AROUND = 3;
+
+/** The off-palette pixels within a region's bounding box grown by {@link AROUND}. */
+function offPaletteAround(
   labels: Uint8Array,
   width: number,
+  height: number,
   box: { minX: number; maxX: number; minY: number; maxY: number },
 ): number {
   let count = 0;
-  for (let y = box.minY; y <= box.maxY; y += 1) {
-    for (let x = box.minX; x <= box.maxX; x += 1) {
+  const y1 = Math.min(height - 1, box.maxY + AROUND);
+  const x1 = Math.min(width - 1, box.maxX + AROUND);
+  for (let y = Math.max(0, box.minY - AROUND); y <= y1; y += 1) {
+    for (let x = Math.max(0, box.minX - AROUND); x <= x1; x += 1) {
       if (labels[y * width + x] === OFF_PALETTE) count += 1;
     }
   }
@@ -78,9 +86,11 @@ export class ColourDetector implements Detector {
     for (const region of regions) {
       const colour = COLOUR_NAMES[region.label - 1];
       if (colour === undefined) continue;
+      // A sliver a row or two tall stands on nothing: the shading along an edge.
+      if (region.maxY - region.minY + 1 < MIN_ROWS) continue;
       // Palette-coloured pixels amid more of a colour the palette lacks are the edge of such a
       // thing (a terracotta box's reddest shading), not an object of their own.
-      if (offPaletteIn(labels, width, region) >= region.count) continue;
+      if (offPaletteAround(labels, width, height, region) >= region.count) continue;
       const baseRows = new Int16Array(region.bottom.length).fill(-1);
       let visible = 0;
       for (let c = 0; c < region.bottom.length; c += 1) {
