@@ -2,8 +2,8 @@
 // (with their seeded jitter), and the robot must not start inside an object, a wall or an
 // obstacle of the map. A task that breaks this would load and then fail for no fault of the
 // agent's (an oracle "failing" 100 m away from a box the simulator never placed).
-import { BUILTIN_MAPS, discContact, solidsOf } from '@hal/simulation';
-import type { WorldMap } from '@hal/simulation';
+import { BUILTIN_MAPS, solidsOf } from '@hal/simulation';
+import type { Solid, WorldMap } from '@hal/simulation';
 import type { Task, TaskObject } from './task-schema.js';
 import { ROBOT_RADIUS_M } from './truth.js';
 
@@ -44,18 +44,65 @@ function outside(
   return undefined;
 }
 
-/** Whether a disc of the robot's radius at (x, y) overlaps the object. */
-function overlaps(o: TaskObject, x: number, y: number): boolean {
-  if (o.kind === 'cylinder') return Math.hypot(x - o.x, y - o.y) < o.radius + ROBOT_RADIUS_M;
-  const cx = Math.min(Math.max(x, o.x - o.width / 2), o.x + o.width / 2);
-  const cy = Math.min(Math.max(y, o.y - o.depth / 2), o.y + o.depth / 2);
-  return Math.hypot(x - cx, y - cy) < ROBOT_RADIUS_M;
+/**
+ * A plan-view footprint as a rectangle rounded by `r`: every point within `r` of the rectangle
+ * [x0, x1] x [y0, y1]. A box is a rectangle with r = 0, a disc a point rectangle with its radius;
+ * jitter of ± j either way grows the rectangle by j, so one footprint covers every seed's place.
+ */
+interface Footprint {
+  x0: number;
+  x1: number;
+  y0: number;
+  y1: number;
+  r: number;
+}
+
+function disc(x: number, y: number, r: number, jitter: number): Footprint {
+  return { x0: x - jitter, x1: x + jitter, y0: y - jitter, y1: y + jitter, r };
+}
+
+function ofObject(o: TaskObject, jitter: number): Footprint {
+  if (o.kind === 'cylinder') return disc(o.x, o.y, o.radius, jitter);
+  const { x, y } = halfSize(o);
+  return {
+    x0: o.x - x - jitter,
+    x1: o.x + x + jitter,
+    y0: o.y - y - jitter,
+    y1: o.y + y + jitter,
+    r: 0,
+  };
+}
+
+function ofSolid(s: Solid): Footprint {
+  return s.kind === 'box'
+    ? { x0: s.minX, x1: s.maxX, y0: s.minY, y1: s.maxY, r: 0 }
+    : disc(s.x, s.y, s.radius, 0);
+}
+
+/** Whether two footprints overlap (touching at one point is no overlap). */
+function overlap(a: Footprint, b: Footprint): boolean {
+  const dx = Math.max(0, a.x0 - b.x1, b.x0 - a.x1);
+  const dy = Math.max(0, a.y0 - b.y1, b.y0 - a.y1);
+  const reach = a.r + b.r;
+  return reach === 0 ? boxesCross(a, b) : Math.hypot(dx, dy) < reach;
+}
+
+/** Two rectangles share more than an edge. */
+function boxesCross(a: Footprint, b: Footprint): boolean {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+/** A solid of the map in words, e.g. "the map's obstacle 2". */
+function solidName(s: Solid): string {
+  return s.role === 'arena' ? "the arena's wall" : `the map's ${s.role} ${s.index}`;
 }
 
 /**
  * The first thing of `task` placed where it cannot be: the start or an object outside the
- * arena (jitter included), a point to reach outside it, or a start that overlaps an object, a
- * wall or an obstacle.
+ * arena (jitter included), a point to reach outside it, a start that some seed puts on an object,
+ * a wall or an obstacle, or an object that some seed puts on a wall or an obstacle of the map
+ * (the start ± its jitter, each object ± its jitter, the robot's radius and the objects' sizes
+ * included: the check is exact for the boxes and discs of plan view, not sampled).
  */
 export function placementProblem(task: Task): PlacementProblem | undefined {
   const map = mapOf(task);
@@ -95,19 +142,30 @@ export function placementProblem(task: Task): PlacementProblem | undefined {
       };
     }
   }
-  const hit = task.world.objects.find((o) => overlaps(o, start.x, start.y));
-  if (hit !== undefined)
-    return {
-      field: 'world.start',
-      why: `puts the robot inside "${hit.name}" at (${m(start.x)}, ${m(start.y)})`,
-    };
-  const solid = solidsOf(map).find(
-    (s) => discContact(start.x, start.y, ROBOT_RADIUS_M, s) !== undefined,
-  );
+  const at = `(${m(start.x)}, ${m(start.y)})${startM > 0 ? ` ± ${m(startM)}` : ''}`;
+  const robotAt = disc(start.x, start.y, ROBOT_RADIUS_M, startM);
+  const solids = solidsOf(map).filter((s) => s.role !== 'arena');
+  const solid = solids.find((s) => overlap(robotAt, ofSolid(s)));
   if (solid !== undefined)
     return {
       field: 'world.start',
-      why: `puts the robot inside ${solid.role === 'arena' ? "the arena's wall" : `the map's ${solid.role} ${solid.index}`} at (${m(start.x)}, ${m(start.y)})`,
+      why: `puts the robot (radius ${m(ROBOT_RADIUS_M)}) at ${at}, where it can lie inside ${solidName(solid)}`,
     };
+  for (const [i, o] of task.world.objects.entries()) {
+    const placed = ofObject(o, objectsM);
+    if (overlap(robotAt, placed))
+      return {
+        field: 'world.start',
+        why:
+          `puts the robot (radius ${m(ROBOT_RADIUS_M)}) at ${at}, where it can lie inside "${o.name}"` +
+          (objectsM > 0 ? ` (placed ± ${m(objectsM)})` : ''),
+      };
+    const under = solids.find((s) => overlap(placed, ofSolid(s)));
+    if (under !== undefined)
+      return {
+        field: `world.objects.${i}`,
+        why: `puts "${o.name}" at (${m(o.x)}, ${m(o.y)})${objectsM > 0 ? ` ± ${m(objectsM)}` : ''}, where it can lie inside ${solidName(under)}`,
+      };
+  }
   return undefined;
 }

@@ -1,4 +1,5 @@
 import { EvalError } from './errors.js';
+import { answerProblem } from './task-answers.js';
 import { placementProblem } from './task-bounds.js';
 import { TaskFileSchema } from './task-schema.js';
 import type { Task } from './task-schema.js';
@@ -62,6 +63,8 @@ function checkReferences(file: string, task: Task, at: string): void {
   });
   const misplaced = placementProblem(task);
   if (misplaced !== undefined) refuse(file, `${at}.${misplaced.field}`, misplaced.why);
+  const unanswerable = answerProblem(task);
+  if (unanswerable !== undefined) refuse(file, `${at}.${unanswerable.field}`, unanswerable.why);
 }
 
 /**
