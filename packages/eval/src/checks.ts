@@ -1,3 +1,4 @@
+import { readAnswer } from './answer-read.js';
 import type { Check } from './task-schema.js';
 import type { TrialLog } from './trial-executor.js';
 import {
@@ -31,44 +32,10 @@ export interface CheckVerdict {
 
 const r3 = (v: number) => Math.round(v * 1000) / 1000;
 const deg = (rad: number) => (rad * 180) / Math.PI;
-const COLOUR_WORDS = ['red', 'green', 'blue', 'yellow', 'purple', 'orange'];
-const NUMBER_WORDS = [
-  'zero',
-  'one',
-  'two',
-  'three',
-  'four',
-  'five',
-  'six',
-  'seven',
-  'eight',
-  'nine',
-  'ten',
-];
-
-/** The words of an answer, lower case. */
-function words(text: string): string[] {
-  return text.toLowerCase().match(/[a-z]+|\d+/g) ?? [];
-}
-
-/** The numbers an answer names, as digits or words. */
-function numbersIn(text: string): Set<number> {
-  const found = new Set<number>();
-  for (const w of words(text)) {
-    if (/^\d+$/.test(w)) found.add(Number(w));
-    const i = NUMBER_WORDS.indexOf(w);
-    if (i >= 0) found.add(i);
-  }
-  return found;
-}
-
-/** The answer names exactly `expected` among `choices` (naming two is no answer). */
-function namesOnly(text: string, choices: readonly string[], expected: string): boolean {
-  const named = new Set(words(text).filter((w) => choices.includes(w)));
-  return named.size === 1 && named.has(expected);
-}
-
-/** The true answer to a perception question, from the world at the start pose. */
+/**
+ * The true answer to a perception question, from the world the seed realised (its colours,
+ * which objects it kept, which way it mirrored), at the start pose.
+ */
 export function trueAnswer(
   variant: TaskVariant,
   question: 'colour-ahead' | 'count-boxes' | 'open-side',
@@ -150,16 +117,13 @@ export function judge(check: Check, end: TrialEnd): CheckVerdict {
     }
     case 'answer': {
       const expected = trueAnswer(variant, check.question);
-      const ok =
-        check.question === 'count-boxes'
-          ? (() => {
-              const n = numbersIn(end.answer);
-              return n.size === 1 && n.has(Number(expected));
-            })()
-          : check.question === 'open-side'
-            ? namesOnly(end.answer, ['left', 'right'], expected)
-            : namesOnly(end.answer, COLOUR_WORDS, expected);
-      return ok ? pass : fail(`the answer does not give "${expected}"`);
+      const given = readAnswer(end.answer, check.question);
+      if (given === expected) return pass;
+      return fail(
+        given === undefined
+          ? `the answer commits to no single answer (true: "${expected}")`
+          : `the answer gives "${given}", not "${expected}"`,
+      );
     }
     case 'stop-before': {
       const start = variant.start;

@@ -81,9 +81,20 @@ export const VariantsSchema = z
     startM: z.number().min(0).max(1).default(0).describe('Start x and y jitter, ± metres'),
     yawDeg: z.number().min(0).max(180).default(0).describe('Start heading jitter, ± degrees'),
     objectsM: z.number().min(0).max(1).default(0).describe('Object placement jitter, ± metres'),
+    colours: z.boolean().default(false).describe("A seed draws each object's colour from the six"),
+    maybeObjects: z
+      .array(z.string())
+      .default([])
+      .describe('Objects (by name) a seed keeps or leaves out, at even odds each'),
+    mirror: z
+      .boolean()
+      .default(false)
+      .describe(
+        'At even odds a seed mirrors the start and the objects across y = 0 (left becomes right); for maps symmetric about y = 0',
+      ),
   })
   .strict()
-  .describe('How far a seed moves the start and the objects');
+  .describe('How far a seed moves the start and the objects, and what else it draws');
 
 export const BudgetSchema = z
   .object({

@@ -1,6 +1,9 @@
 import { SeededRandom } from '@hal/simulation';
 import type { WorldMap } from '@hal/simulation';
-import type { Task, TaskObject } from './task-schema.js';
+import { COLOURS } from './task-schema.js';
+import type { ColourName, Task, TaskObject } from './task-schema.js';
+
+const COLOUR_LIST = Object.keys(COLOURS) as ColourName[];
 import { mapWithObjects } from './world-file.js';
 
 /** One member of a task's family: the world as a seed placed it. */
@@ -47,17 +50,29 @@ export function realiseAtOrigin(task: Task, seed: number): TaskVariant {
 export function realiseTask(task: Task, seed: number): TaskVariant {
   const random = new SeededRandom(variantSeed(task.id, seed));
   const jitter = (range: number) => (range === 0 ? 0 : (random.next() * 2 - 1) * range);
-  const { startM, yawDeg, objectsM } = task.variants;
-  const start = {
+  const { startM, yawDeg, objectsM, colours, maybeObjects, mirror } = task.variants;
+  let start = {
     x: mm(task.world.start.x + jitter(startM)),
     y: mm(task.world.start.y + jitter(startM)),
     yaw: ((task.world.start.yawDeg + jitter(yawDeg)) * Math.PI) / 180,
   };
-  const objects = task.world.objects.map((o) => ({
+  let objects = task.world.objects.map((o) => ({
     ...o,
     x: mm(o.x + jitter(objectsM)),
     y: mm(o.y + jitter(objectsM)),
   }));
+  // The draws below come after the jitter, so a task without them is placed as before.
+  if (colours)
+    objects = objects.map((o) => ({
+      ...o,
+      colour: COLOUR_LIST[Math.floor(random.next() * COLOUR_LIST.length)] ?? o.colour,
+    }));
+  if (maybeObjects.length > 0)
+    objects = objects.filter((o) => !maybeObjects.includes(o.name) || random.next() < 0.5);
+  if (mirror && random.next() < 0.5) {
+    start = { x: start.x, y: mm(-start.y), yaw: -start.yaw };
+    objects = objects.map((o) => ({ ...o, y: mm(-o.y) }));
+  }
   const map = mapWithObjects(task.world.map, objects, start);
   return { task, seed, map, objects, start };
 }

@@ -25,7 +25,7 @@ describe('world files', () => {
 
   it("makes the same map of a task's world as the task's variant with nothing moved", () => {
     const task = builtinTasks().find((t) => t.world.objects.length > 0)!;
-    const still = { ...task, variants: { startM: 0, yawDeg: 0, objectsM: 0 } };
+    const still = { ...task, variants: { ...task.variants, startM: 0, yawDeg: 0, objectsM: 0 } };
     expect(realiseWorld(task.world).map).toEqual(realiseTask(still, 1).map);
   });
 
