@@ -18,6 +18,7 @@ import type { LeashCliOptions } from '../leash-options.js';
 import { distanceArg, hexKeyArg, integerArg, numberArg, positiveArg, urlArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { agentNames, buildAgents } from '../eval/eval-agents.js';
+import { checkTasks, checkTasksText } from '../eval/check-tasks.js';
 import { openPlaces, parsePlaces } from '../eval/eval-robots.js';
 import { recordTrials } from '../eval/record-trials.js';
 import { writeReports } from '../eval/write-reports.js';
@@ -55,6 +56,7 @@ interface EvalCliOptions extends LeashCliOptions, GuardCliOptions {
   temperature?: number;
   maxSteps?: number;
   threads?: number;
+  checkTasks?: boolean;
 }
 
 function groupList(text: string | undefined): TaskGroup[] {
@@ -229,6 +231,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       )
       .addOption(
         new Option(
+          '--check-tasks',
+          'run only the oracle, in the simulator, over --trials seeds of every task, and list the tasks and seeds it cannot solve (exit 1 if any)',
+        ),
+      )
+      .addOption(
+        new Option(
           '--latency <ms>',
           'reality: simulated latency added to every call, ms',
         ).argParser(numberArg('--latency', { min: 0, max: 10_000 }, 'ms')),
@@ -284,6 +292,31 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             overwrite,
           });
         const tasks = await chooseTasks(options);
+        if (options.checkTasks === true) {
+          progress(
+            io,
+            g,
+            `checking ${tasks.length} task(s) with the oracle on ${options.trials} seed(s) each, from seed ${options.seed}`,
+          );
+          const unsolved = await checkTasks(tasks, {
+            trials: options.trials,
+            seed: options.seed,
+            concurrency: options.concurrency,
+            onTrial: (score, done, total) =>
+              progress(
+                io,
+                g,
+                `${bar(done, total)} ${done}/${total} ${score.task} seed ${score.seed}: ${trialVerdict(score)}`,
+              ),
+          });
+          emit(io, g, { unsolved }, () => checkTasksText(unsolved, tasks.length, options.trials));
+          if (unsolved.length > 0)
+            throw new CliError(
+              'FAILED',
+              `the oracle could not solve ${unsolved.length} trial(s): fix those tasks (a task the oracle cannot solve scores every agent 0 for no fault of its own)`,
+            );
+          return;
+        }
         const sensors = options.sensors === undefined ? undefined : sensorSet(options.sensors);
         const leash = leashFromOptions(options);
         const guard = guardSettingsFromOptions(options) ?? false;
