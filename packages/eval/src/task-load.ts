@@ -1,7 +1,7 @@
 import { EvalError } from './errors.js';
 import { answerProblem } from './task-answers.js';
 import { placementProblem } from './task-bounds.js';
-import { TaskFileSchema } from './task-schema.js';
+import { ANY_MOTION, TaskFileSchema } from './task-schema.js';
 import type { Task } from './task-schema.js';
 
 function refuse(file: string, field: string, why: string): never {
@@ -58,7 +58,7 @@ function checkReferences(file: string, task: Task, at: string): void {
     }
   });
   task.faults.forEach((fault, i) => {
-    if (fault.kind !== 'estop' && !TOOL_NAMES.has(fault.tool))
+    if (fault.kind !== 'estop' && fault.tool !== ANY_MOTION && !TOOL_NAMES.has(fault.tool))
       refuse(file, `${at}.faults.${i}.tool`, `names "${fault.tool}", which is no tool`);
   });
   const misplaced = placementProblem(task);

@@ -115,7 +115,14 @@ export const LeashSchema = z
   .strict()
   .describe('The leash the tools run under (see @hal/tools)');
 
-const toolName = z.string().regex(/^[a-z_]+$/, 'a tool name, e.g. "move_forward"');
+/** The fault target that means any motion tool: the nth motion call that asks to move. */
+export const ANY_MOTION = 'motion';
+const toolName = z
+  .string()
+  .regex(/^[a-z_]+$/, 'a tool name, e.g. "move_forward"')
+  .describe(
+    `A tool's name, or "${ANY_MOTION}": the nth call of any motion tool that asks to move (1 cm or 1° or more)`,
+  );
 export const FaultSchema = z
   .discriminatedUnion('kind', [
     z

@@ -5,6 +5,7 @@ import type { HardwareAbstractionLayer } from '@hal/types';
 import type { TrialBody } from './bodies/trial-body.js';
 import type { Reality } from './reality.js';
 import { variantSeed } from './variant.js';
+import { ANY_MOTION } from './task-schema.js';
 import type { Fault, Task } from './task-schema.js';
 
 /** Codes that mean a call was refused before it ran (the leash, validation, the e-stop, budgets). */
@@ -21,6 +22,28 @@ const REFUSAL_CODES = new Set([
   'EMERGENCY_STOPPED',
   'BUDGET_EXCEEDED',
 ]);
+
+/**
+ * Whether a motion call asks to move at all: at least 1 cm or 1° (move_to and wheel speeds always
+ * count). A `motion` fault counts only these, so a throwaway nudge does not use it up.
+ */
+export function asksToMove(call: ToolCall): boolean {
+  let args: unknown = call.arguments;
+  if (typeof args === 'string') {
+    try {
+      args = JSON.parse(args) as unknown;
+    } catch {
+      return true;
+    }
+  }
+  if (typeof args !== 'object' || args === null) return true;
+  const size = (v: unknown) => (typeof v === 'number' ? Math.abs(v) : undefined);
+  const cm = size((args as Record<string, unknown>)['distanceCm']);
+  if (cm !== undefined) return cm >= 1;
+  const degrees = size((args as Record<string, unknown>)['degrees']);
+  if (degrees !== undefined) return degrees >= 1;
+  return true;
+}
 
 /** What the executor saw during one trial (read from the trial's body: see TrialBody). */
 export interface TrialLog {
@@ -90,13 +113,20 @@ export function createTrialExecutor(
     lostCalls: 0,
   };
   const callsOf = new Map<string, number>();
+  let motionCalls = 0;
   const faults: Fault[] = task.faults;
   const budgetUs = task.budget.simSeconds * 1e6;
 
-  function injected(name: string): ToolResult | undefined {
+  /** The fault this call meets, if any (the counts already include the call). */
+  function injected(name: string, countsAsMotion: boolean): ToolResult | undefined {
     const n = callsOf.get(name) ?? 0;
     for (const fault of faults) {
-      if (fault.kind === 'estop' || fault.tool !== name || fault.nth !== n) continue;
+      if (fault.kind === 'estop') continue;
+      const hit =
+        fault.tool === ANY_MOTION
+          ? countsAsMotion && motionCalls === fault.nth
+          : fault.tool === name && n === fault.nth;
+      if (!hit) continue;
       return fault.kind === 'timeout'
         ? refusal('TIMEOUT', `${name}: no answer from the robot in time; nothing moved`)
         : refusal(fault.code, `${name}: the robot reported ${fault.code}; nothing moved`);
@@ -112,7 +142,9 @@ export function createTrialExecutor(
     }
     log.toolCalls += 1;
     callsOf.set(call.name, (callsOf.get(call.name) ?? 0) + 1);
-    const fault = injected(call.name);
+    const countsAsMotion = motionTools.has(call.name) && asksToMove(call);
+    if (countsAsMotion) motionCalls += 1;
+    const fault = injected(call.name, countsAsMotion);
     if (fault !== undefined) return fault;
     const safety = call.name === 'stop' || call.name === 'emergency_stop';
     if (reality !== undefined && !safety) {
