@@ -102,9 +102,32 @@ function solidName(s: Solid): string {
  * arena (jitter included), a point to reach outside it, a start that some seed puts on an object,
  * a wall or an obstacle, or an object that some seed puts on a wall or an obstacle of the map
  * (the start ± its jitter, each object ± its jitter, the robot's radius and the objects' sizes
- * included: the check is exact for the boxes and discs of plan view, not sampled).
+ * included: the check is exact for the boxes and discs of plan view, not sampled); with
+ * `variants.mirror`, of the world mirrored across y = 0 as well.
  */
 export function placementProblem(task: Task): PlacementProblem | undefined {
+  const problem = placementOf(task);
+  if (problem !== undefined || !task.variants.mirror) return problem;
+  // a seed may mirror the start and the objects across y = 0: that world must fit the map too
+  const { world } = task;
+  const mirrored: Task = {
+    ...task,
+    world: {
+      ...world,
+      start: { ...world.start, y: -world.start.y, yawDeg: -world.start.yawDeg },
+      objects: world.objects.map((o) => ({ ...o, y: -o.y })),
+    },
+  };
+  const flipped = placementOf(mirrored);
+  return flipped === undefined
+    ? undefined
+    : {
+        ...flipped,
+        why: `${flipped.why} (in the world mirrored across y = 0, which "variants.mirror" draws)`,
+      };
+}
+
+function placementOf(task: Task): PlacementProblem | undefined {
   const map = mapOf(task);
   const arena = `the ${map.arena.width} x ${map.arena.height} m arena`;
   const { start } = task.world;

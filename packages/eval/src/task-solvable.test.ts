@@ -129,3 +129,15 @@ describe('the loader refuses a task no agent could pass', () => {
     expect(builtinTasks().length).toBeGreaterThanOrEqual(20);
   });
 });
+
+describe('a task whose seed may mirror the world across y = 0', () => {
+  it('is refused when the mirrored start lies on an obstacle the map has on one side only', () => {
+    // the pillar is at (0.5, 0.5); a start at (0.5, -0.5) is clear, its mirror is not
+    const start = { start: { x: 0.5, y: -0.5 } };
+    expect(accepted(file(task(start)))).toHaveLength(1);
+    const error = refusal(file(task(start, { variants: { mirror: true } })));
+    expect(error.field).toBe('tasks.0.world.start');
+    expect(error.message).toContain("can lie inside the map's obstacle 1");
+    expect(error.message).toContain('in the world mirrored across y = 0');
+  });
+});
