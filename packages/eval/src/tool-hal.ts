@@ -32,8 +32,9 @@ function asValue<T>(result: ToolResult): T {
 /**
  * `hal` with its motion and sensor calls sent through the trial's tools, so a controller that
  * drives a HAL (the navigation bridge) meets the same leash, faults and budget as a model and
- * its calls are counted the same way. State that is read synchronously (the e-stop, readiness,
- * device info) comes from `hal` itself.
+ * its calls are counted the same way; so is a reset of the e-stop (the trial's log records it).
+ * State that is read synchronously (the e-stop, readiness, device info) and the e-stop itself
+ * come from `hal` itself.
  */
 export function toolBackedHal(
   hal: HardwareAbstractionLayer,
@@ -63,9 +64,21 @@ export function toolBackedHal(
       return image === undefined ? '' : `data:image/jpeg;base64,${image.data}`;
     },
   };
+  // a reset goes through the tools, so the trial's log records it (the e-stop itself goes to the
+  // robot directly: the budget must never refuse it)
+  const safety = new Proxy(hal.safety, {
+    get(target, key, receiver) {
+      if (key === 'resetEmergencyStop') return () => motion('reset_emergency_stop', {});
+      const value: unknown = Reflect.get(target, key, receiver);
+      return typeof value === 'function'
+        ? (value as (...a: unknown[]) => unknown).bind(target)
+        : value;
+    },
+  });
   return new Proxy(hal, {
     get(target, key, receiver) {
       if (key === 'locomotion') return locomotion;
+      if (key === 'safety') return safety;
       if (key === 'vision') return vision;
       const value: unknown = Reflect.get(target, key, receiver);
       return typeof value === 'function'
