@@ -103,7 +103,9 @@ describe('the loader refuses a task no agent could pass', () => {
     );
     const error = refusal(file(colour));
     expect(error.field).toBe('tasks.0.checks.0.question');
-    expect(error.message).toContain('nothing is ahead of the start (0, 0) facing 90°');
+    expect(error.message).toContain(
+      'is colour-ahead, but nothing is ahead of the start, at (0, 0) facing 90°',
+    );
     // facing the box, it has an answer
     expect(
       accepted(file({ ...colour, world: { ...colour.world, start: { x: 0, y: 0 } } })),
@@ -122,7 +124,31 @@ describe('the loader refuses a task no agent could pass', () => {
     );
     const error = refusal(file(colour));
     expect(error.field).toBe('tasks.0.checks.0.question');
-    expect(error.message).toMatch(/with seed \d+ the jitter .* leaves nothing ahead of the start/);
+    expect(error.message).toMatch(
+      /with seed \d+ \(.*objects ± 0\.5 m\) nothing is ahead of the start$/,
+    );
+  });
+
+  it('refuses a side question whose two sides are about as open', () => {
+    const side = (y: number, variants: Change = {}) => ({
+      id: 'perception/side',
+      group: 'perception',
+      instruction: 'Which side is open?',
+      world: { map: 'empty', start: { x: 0, y } },
+      variants,
+      checks: [{ kind: 'answer', question: 'open-side' }],
+    });
+    const error = refusal(file(side(0)));
+    expect(error.field).toBe('tasks.0.checks.0.question');
+    expect(error.message).toContain(
+      'is open-side, but neither side of the start is the open one (2.5 m free to the left, 2.5 m to the right',
+    );
+    expect(accepted(file(side(1)))).toHaveLength(1);
+    // 0.1 m off the middle is clear as written, but a seed's ± 0.2 m can bring it back
+    expect(accepted(file(side(0.1)))).toHaveLength(1);
+    expect(refusal(file(side(0.1, { startM: 0.2 }))).message).toMatch(
+      /with seed \d+ .* neither side/,
+    );
   });
 
   it('loads every built-in task', () => {
