@@ -39,8 +39,8 @@ export { FrontierExplorationProvider, GoalSeekingProvider } from './decision/det
 export type { FrontierExplorationOptions } from './decision/deterministic.js';
 export { OpenAICompatibleProvider } from './decision/llm-provider.js';
 export type { OpenAICompatibleOptions, ResponseFormatMode } from './decision/llm-options.js';
-export { findFrontier } from './grid/frontier.js';
-export type { Frontier, FrontierOptions } from './grid/frontier.js';
+export { findFrontier, reachableFrontiers } from './grid/frontier.js';
+export type { Frontier, FrontierCell, FrontierOptions } from './grid/frontier.js';
 
 export { NavigationBridge } from './bridge/navigation-bridge.js';
 export type { NavigationBridgeOptions } from './bridge/bridge-options.js';

@@ -1,4 +1,4 @@
-import { cellCentre, worldToCell } from '@hal/navigation';
+import { reachableFrontiers } from '@hal/navigation';
 import type { OccupancyGrid, Point } from '@hal/navigation';
 
 /** A frontier worth driving to: where it is, how far by the grid, and how much it may show. */
@@ -41,66 +41,33 @@ export function mostPromisingFrontier(
   from: Point,
   options: FrontierChoiceOptions = {},
 ): FrontierChoice | undefined {
-  const { spec, obstacles } = grid;
-  const start = worldToCell(spec, from.x, from.y);
-  if (start === undefined) return undefined;
-  const { width: w, height: h, resolutionM: res } = spec;
-  const minSteps = (options.minDistanceM ?? 0.5) / res;
+  const { width: w, height: h, resolutionM: res } = grid.spec;
   const reach = Math.round((options.gainRadiusM ?? 2.5) / res);
-  const exclude = options.exclude ?? [];
-  const excludeR = options.excludeRadiusM ?? 0.4;
   const heading = options.heading;
   const headingWeight = options.headingWeight ?? 0.3;
   const unknown = (x: number, y: number) =>
     x >= 0 && y >= 0 && x < w && y < h && grid.stateOf(x, y) === 'unknown';
-  const dist = new Int32Array(w * h).fill(-1);
-  const queue = new Int32Array(w * h);
-  let head = 0;
-  let tail = 0;
-  dist[start.cy * w + start.cx] = 0;
-  queue[tail++] = start.cy * w + start.cx;
   let best: FrontierChoice | undefined;
   let bestScore = 0;
-  while (head < tail) {
-    const u = queue[head++] as number;
-    const ux = u % w;
-    const uy = (u - ux) / w;
-    const d = dist[u] as number;
-    if (
-      d >= minSteps &&
-      grid.stateOf(ux, uy) === 'free' &&
-      (unknown(ux - 1, uy) || unknown(ux + 1, uy) || unknown(ux, uy - 1) || unknown(ux, uy + 1))
-    ) {
-      const target = cellCentre(spec, ux, uy);
-      if (!exclude.some((p) => Math.hypot(p.x - target.x, p.y - target.y) < excludeR)) {
-        let gain = 0;
-        // every third cell each way: a ninth of the work, much the same ranking
-        for (let dy = -reach; dy <= reach; dy += 3) {
-          for (let dx = -reach; dx <= reach; dx += 3) {
-            if (dx * dx + dy * dy > reach * reach || !unknown(ux + dx, uy + dy)) continue;
-            if (inSight(grid, ux, uy, dx, dy)) gain += 1;
-          }
-        }
-        const distanceM = d * res;
-        const bearing = Math.atan2(target.y - from.y, target.x - from.x);
-        const ahead = heading === undefined ? 1 : 1 + headingWeight * Math.cos(bearing - heading);
-        const score = (ahead * gain) / (1 + distanceM);
-        if (score > bestScore) {
-          bestScore = score;
-          best = { target, distanceM, gain };
-        }
+  for (const { target, distanceM, cx, cy } of reachableFrontiers(grid, from, {
+    minDistanceM: options.minDistanceM ?? 0.5,
+    excludeRadiusM: options.excludeRadiusM ?? 0.4,
+    ...(options.exclude === undefined ? {} : { exclude: options.exclude }),
+  })) {
+    let gain = 0;
+    // every third cell each way: a ninth of the work, much the same ranking
+    for (let dy = -reach; dy <= reach; dy += 3) {
+      for (let dx = -reach; dx <= reach; dx += 3) {
+        if (dx * dx + dy * dy > reach * reach || !unknown(cx + dx, cy + dy)) continue;
+        if (inSight(grid, cx, cy, dx, dy)) gain += 1;
       }
     }
-    const next = [u - 1, u + 1, u - w, u + w];
-    const ok = [ux > 0, ux < w - 1, uy > 0, uy < h - 1];
-    for (let k = 0; k < 4; k += 1) {
-      if (!ok[k]) continue;
-      const v = next[k] as number;
-      if (dist[v] !== -1) continue;
-      const vx = v % w;
-      if (obstacles.isBlocked(vx, (v - vx) / w)) continue;
-      dist[v] = d + 1;
-      queue[tail++] = v;
+    const bearing = Math.atan2(target.y - from.y, target.x - from.x);
+    const ahead = heading === undefined ? 1 : 1 + headingWeight * Math.cos(bearing - heading);
+    const score = (ahead * gain) / (1 + distanceM);
+    if (score > bestScore) {
+      bestScore = score;
+      best = { target, distanceM, gain };
     }
   }
   return best;

@@ -20,19 +20,26 @@ export interface FrontierOptions {
   excludeRadiusM?: number;
 }
 
+/** A reachable frontier cell, as {@link reachableFrontiers} finds it. */
+export interface FrontierCell extends Frontier {
+  /** The cell's column and row. */
+  cx: number;
+  cy: number;
+}
+
 /**
- * The nearest reachable frontier from `from`: a breadth-first search over the cells the robot's
- * centre may enter, returning the first free cell with an unknown neighbour. Undefined when no
- * frontier is reachable (the reachable space is fully explored) or `from` is off the grid.
+ * The reachable frontiers from `from`, nearest first: a breadth-first search over the cells the
+ * robot's centre may enter, yielding each free cell with an unknown neighbour (beyond
+ * `minDistanceM`, away from `exclude`). Nothing when `from` is off the grid.
  */
-export function findFrontier(
+export function* reachableFrontiers(
   grid: OccupancyGrid,
   from: Point,
   options: FrontierOptions = {},
-): Frontier | undefined {
+): Generator<FrontierCell> {
   const { spec, obstacles } = grid;
   const start = worldToCell(spec, from.x, from.y);
-  if (start === undefined) return undefined;
+  if (start === undefined) return;
   const w = spec.width;
   const h = spec.height;
   const minSteps = (options.minDistanceM ?? 0.2) / spec.resolutionM;
@@ -62,7 +69,7 @@ export function findFrontier(
     ) {
       const target = cellCentre(spec, ux, uy);
       if (!exclude.some((p) => Math.hypot(p.x - target.x, p.y - target.y) < excludeR)) {
-        return { target, distanceM: d * spec.resolutionM };
+        yield { target, distanceM: d * spec.resolutionM, cx: ux, cy: uy };
       }
     }
     // Expand through cells the robot may stand on (the start cell always, so a robot that is
@@ -78,6 +85,21 @@ export function findFrontier(
       dist[v] = d + 1;
       queue[tail++] = v;
     }
+  }
+}
+
+/**
+ * The nearest reachable frontier from `from` (the first of {@link reachableFrontiers}): a free
+ * cell with an unknown neighbour. Undefined when no frontier is reachable (the reachable space is
+ * fully explored) or `from` is off the grid.
+ */
+export function findFrontier(
+  grid: OccupancyGrid,
+  from: Point,
+  options: FrontierOptions = {},
+): Frontier | undefined {
+  for (const { target, distanceM } of reachableFrontiers(grid, from, options)) {
+    return { target, distanceM };
   }
   return undefined;
 }
