@@ -1,12 +1,8 @@
-import { EvalError } from './errors.js';
+import { parseJsonText, readTextFile, refuse } from './task-file-io.js';
 import { answerProblem } from './task-answers.js';
 import { placementProblem } from './task-bounds.js';
 import { ANY_MOTION, TaskFileSchema } from './task-schema.js';
 import type { Task } from './task-schema.js';
-
-function refuse(file: string, field: string, why: string): never {
-  throw new EvalError('TASK_INVALID', `${file}: "${field}" ${why}`, { file, field });
-}
 
 const TOOL_NAMES = new Set([
   'move_forward',
@@ -72,15 +68,7 @@ function checkReferences(file: string, task: Task, at: string): void {
  * the first field that breaks the schema or names something the world lacks.
  */
 export function parseTaskFile(text: string, file: string): Task[] {
-  let json: unknown;
-  try {
-    json = JSON.parse(text);
-  } catch (cause) {
-    throw new EvalError('TASK_INVALID', `${file}: not JSON (${(cause as Error).message})`, {
-      file,
-      cause,
-    });
-  }
+  const json = parseJsonText(text, file);
   return checkTaskFile(json, file);
 }
 
@@ -105,15 +93,5 @@ export function checkTaskFile(json: unknown, file: string): Task[] {
 
 /** Reads and checks a task file from disk (Node). */
 export async function loadTaskFile(path: string): Promise<Task[]> {
-  const { readFile } = await import('node:fs/promises');
-  let text: string;
-  try {
-    text = await readFile(path, 'utf8');
-  } catch (cause) {
-    throw new EvalError('TASK_INVALID', `${path}: cannot be read (${(cause as Error).message})`, {
-      file: path,
-      cause,
-    });
-  }
-  return parseTaskFile(text, path);
+  return parseTaskFile(await readTextFile(path), path);
 }

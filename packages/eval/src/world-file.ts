@@ -4,7 +4,7 @@
 import { BUILTIN_MAPS, parseMap } from '@hal/simulation';
 import type { WorldMap } from '@hal/simulation';
 import type { z } from 'zod';
-import { EvalError } from './errors.js';
+import { parseJsonText, readTextFile, refuse } from './task-file-io.js';
 import { COLOURS, WorldSchema } from './task-schema.js';
 import type { TaskObject } from './task-schema.js';
 
@@ -20,10 +20,6 @@ export interface RealisedWorld {
   objects: TaskObject[];
   /** The robot's start pose: metres and radians. */
   start: { x: number; y: number; yaw: number };
-}
-
-function refuse(file: string, field: string, why: string): never {
-  throw new EvalError('TASK_INVALID', `${file}: "${field}" ${why}`, { file, field });
 }
 
 /**
@@ -93,29 +89,11 @@ export function checkWorld(json: unknown, file: string): TaskWorld {
  * `file`; throws TASK_INVALID naming the file and the first field that breaks the schema.
  */
 export function parseWorldFile(text: string, file: string): TaskWorld {
-  let json: unknown;
-  try {
-    json = JSON.parse(text);
-  } catch (cause) {
-    throw new EvalError('TASK_INVALID', `${file}: not JSON (${(cause as Error).message})`, {
-      file,
-      cause,
-    });
-  }
+  const json = parseJsonText(text, file);
   return checkWorld(json, file);
 }
 
 /** Reads and checks a world file from disk (Node); see {@link parseWorldFile}. */
 export async function loadWorldFile(path: string): Promise<TaskWorld> {
-  const { readFile } = await import('node:fs/promises');
-  let text: string;
-  try {
-    text = await readFile(path, 'utf8');
-  } catch (cause) {
-    throw new EvalError('TASK_INVALID', `${path}: cannot be read (${(cause as Error).message})`, {
-      file: path,
-      cause,
-    });
-  }
-  return parseWorldFile(text, path);
+  return parseWorldFile(await readTextFile(path), path);
 }
