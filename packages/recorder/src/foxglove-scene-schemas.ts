@@ -4,50 +4,14 @@
  * Only the primitives we write are spelled out in full; the others are arrays of objects, which
  * a JSON recording may leave empty.
  */
+import { pose, time, vector3 } from './foxglove-schemas.js';
 import type { NamedJsonSchema } from './foxglove-schemas.js';
-
-const time = {
-  type: 'object',
-  title: 'time',
-  properties: {
-    sec: { type: 'integer', minimum: 0 },
-    nsec: { type: 'integer', minimum: 0, maximum: 999_999_999 },
-  },
-  required: ['sec', 'nsec'],
-} as const;
 
 const duration = {
   type: 'object',
   title: 'duration',
   properties: { sec: { type: 'integer' }, nsec: { type: 'integer', minimum: 0 } },
   required: ['sec', 'nsec'],
-} as const;
-
-const vector3 = {
-  type: 'object',
-  title: 'foxglove.Vector3',
-  properties: { x: { type: 'number' }, y: { type: 'number' }, z: { type: 'number' } },
-  required: ['x', 'y', 'z'],
-} as const;
-
-const pose = {
-  type: 'object',
-  title: 'foxglove.Pose',
-  properties: {
-    position: vector3,
-    orientation: {
-      type: 'object',
-      title: 'foxglove.Quaternion',
-      properties: {
-        x: { type: 'number' },
-        y: { type: 'number' },
-        z: { type: 'number' },
-        w: { type: 'number' },
-      },
-      required: ['x', 'y', 'z', 'w'],
-    },
-  },
-  required: ['position', 'orientation'],
 } as const;
 
 const color = {

@@ -5,7 +5,8 @@
  * every encoding for the sake of these four.
  */
 
-const time = {
+/** Foxglove's `time`. */
+export const time = {
   type: 'object',
   title: 'time',
   properties: {
@@ -15,14 +16,16 @@ const time = {
   required: ['sec', 'nsec'],
 } as const;
 
-const vector3 = {
+/** foxglove.Vector3. */
+export const vector3 = {
   type: 'object',
   title: 'foxglove.Vector3',
   properties: { x: { type: 'number' }, y: { type: 'number' }, z: { type: 'number' } },
   required: ['x', 'y', 'z'],
 } as const;
 
-const quaternion = {
+/** foxglove.Quaternion. */
+export const quaternion = {
   type: 'object',
   title: 'foxglove.Quaternion',
   properties: {
@@ -32,6 +35,14 @@ const quaternion = {
     w: { type: 'number' },
   },
   required: ['x', 'y', 'z', 'w'],
+} as const;
+
+/** foxglove.Pose. */
+export const pose = {
+  type: 'object',
+  title: 'foxglove.Pose',
+  properties: { position: vector3, orientation: quaternion },
+  required: ['position', 'orientation'],
 } as const;
 
 /** A JSON Schema under the name a viewer knows it by. */
@@ -49,12 +60,7 @@ export const POSE_IN_FRAME: NamedJsonSchema = {
     properties: {
       timestamp: time,
       frame_id: { type: 'string' },
-      pose: {
-        type: 'object',
-        title: 'foxglove.Pose',
-        properties: { position: vector3, orientation: quaternion },
-        required: ['position', 'orientation'],
-      },
+      pose,
     },
     required: ['timestamp', 'frame_id', 'pose'],
   },
