@@ -8,23 +8,13 @@ import type { PhysicalHAL } from '@hal/physical';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { startEmulatedCube } from '../helpers/emulated-cube.js';
 import type { EmulatedCube } from '../helpers/emulated-cube.js';
-
-/** The robot starts at the origin facing +x: a yellow box ahead-left, a wall 1.2 m ahead. */
-const WORLD = {
-  map: {
-    name: 'a wall ahead',
-    arena: { width: 6, height: 6 },
-    walls: [{ from: [1.2, -1.5], to: [1.2, 1.5], thickness: 0.06 }],
-  },
-  start: { x: 0, y: 0, yawDeg: 0 },
-  objects: [{ name: 'target', kind: 'box', colour: 'yellow', x: 0.7, y: 0.25 }],
-};
+import { WALL_AND_BOX_WORLD } from './wall-and-box.fixture.js';
 
 let cube: EmulatedCube;
 let hal: PhysicalHAL;
 
 beforeAll(async () => {
-  cube = await startEmulatedCube({ world: WORLD, timeScale: 10 });
+  cube = await startEmulatedCube({ world: WALL_AND_BOX_WORLD, timeScale: 10 });
   hal = cube.physicalHal();
   await hal.initialize();
 }, 60_000);
