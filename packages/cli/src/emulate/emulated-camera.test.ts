@@ -17,6 +17,9 @@ const OPTIONS: EmulateCliOptions = {
   deviceId: 'cube-camera-mock',
   insecure: false,
   timeScale: 10,
+  // the camera renders and encodes in this process too: at 10x a 2 s host timeout is 200 ms of
+  // real time, which a loaded machine's event loop can miss (the host timeout has its own tests)
+  hostTimeoutMs: 10_000,
   pty: false,
   announce: false,
 };
