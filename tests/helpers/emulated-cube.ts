@@ -27,8 +27,13 @@ export interface EmulatedCube {
   udpPort: number;
   /** The camera's base URL, as `hal emulate` printed it. */
   cameraUrl: string;
-  /** A PhysicalHAL for it over UDP with its camera, not yet initialised. */
-  physicalHal(): PhysicalHAL;
+  /**
+   * A PhysicalHAL for it over UDP with its camera, not yet initialised. With `freshCaptures`,
+   * each `captureFrame` first waits for two frames rendered after it was called: at a time scale
+   * above 1 the robot's clock outruns the camera's real-time frames (at 10x, the frame in flight
+   * is a second of the robot's motion), which a camera beside a robot at 1x never meets.
+   */
+  physicalHal(options?: { freshCaptures?: boolean }): PhysicalHAL;
   /**
    * Waits (at most 5 s) until the camera has sent `frames` more frames: each is rendered as it is
    * sent, so afterwards the latest shows the robot where it is now.
@@ -69,11 +74,19 @@ export async function startEmulatedCube(options: EmulatedCubeOptions): Promise<E
   const served = async (): Promise<number> =>
     ((await (await fetch(`${cameraUrl}/status${auth}`)).json()) as { frames_served: number })
       .frames_served;
+  const fresh = async (frames: number): Promise<void> => {
+    const target = (await served()) + frames;
+    const deadline = Date.now() + 5000;
+    while ((await served()) < target) {
+      if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
+      await new Promise((resolve) => setTimeout(resolve, 30));
+    }
+  };
   return {
     udpPort,
     cameraUrl,
-    physicalHal: () =>
-      new PhysicalHAL(
+    physicalHal: (halOptions = {}) => {
+      const hal = new PhysicalHAL(
         {
           mode: 'physical',
           deviceId: 'cube',
@@ -86,15 +99,17 @@ export async function startEmulatedCube(options: EmulatedCubeOptions): Promise<E
           },
         },
         { timeScale },
-      ),
-    freshFrames: async (frames = 3) => {
-      const target = (await served()) + frames;
-      const deadline = Date.now() + 5000;
-      while ((await served()) < target) {
-        if (Date.now() > deadline) throw new Error('the camera sent no new frames in 5 s');
-        await new Promise((resolve) => setTimeout(resolve, 30));
+      );
+      if (halOptions.freshCaptures === true) {
+        const capture = hal.vision.captureFrame.bind(hal.vision);
+        hal.vision.captureFrame = async () => {
+          await fresh(2);
+          return await capture();
+        };
       }
+      return hal;
     },
+    freshFrames: (frames = 3) => fresh(frames),
     dispose: async () => {
       await stopAllHal();
       await rm(dir, { recursive: true, force: true });

@@ -16,7 +16,7 @@ let hal: PhysicalHAL;
 
 beforeAll(async () => {
   cube = await startEmulatedCube({ world: WALL_AND_BOX_WORLD, timeScale: 10 });
-  hal = cube.physicalHal();
+  hal = cube.physicalHal({ freshCaptures: true });
   await hal.initialize();
 }, 60_000);
 
