@@ -1,4 +1,4 @@
-import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
+import type { AgentTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { scoped, silentLogger } from '@hal/types';
 import type { Logger, ScopedLogger } from '@hal/types';
@@ -30,7 +30,7 @@ export interface AgentCaps {
 
 /** Runs the tool calls: `createToolExecutor(hal)` from `@hal/tools`, or your own. */
 export interface AgentToolExecutor {
-  tools: HalTool[];
+  tools: AgentTool[];
   /** Runs one call; never throws (errors are results the model reads). */
   execute(call: ToolCall): Promise<ToolResult>;
 }

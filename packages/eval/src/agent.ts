@@ -1,4 +1,4 @@
-import type { HalTool, ToolCall, ToolResult } from '@hal/tools';
+import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { TaskVariant } from './variant.js';
 
@@ -7,7 +7,7 @@ export interface AgentTrial {
   /** What the robot should do, in words (the task's instruction). */
   instruction: string;
   /** The tools it may call, under the task's leash and budget. */
-  tools: HalTool[];
+  tools: AgentTool[];
   execute(call: ToolCall): Promise<ToolResult>;
   /** Fires when the trial's time is up; the agent should answer at once. */
   signal: AbortSignal;

@@ -4,7 +4,7 @@ import type { AgentAnswer, EvalAgent } from './agent.js';
 import type { TrialBody } from './bodies/trial-body.js';
 import type { Reality } from './reality.js';
 import type { Task } from './task-schema.js';
-import { toolBackedHal } from './tool-hal.js';
+import { toolBackedHal } from '@hal/tools';
 import { createTrialExecutor } from './trial-executor.js';
 import { scoreTrial } from './trial-score.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial-score.js';

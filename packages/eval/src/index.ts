@@ -64,6 +64,5 @@ export { ObjectSeekingProvider } from './agents/object-seeker.js';
 export type { ObjectSeekerOptions, SeekPhase } from './agents/object-seeker.js';
 export { namedObject } from './agents/named-object.js';
 export type { NamedObject } from './agents/named-object.js';
-export { toolBackedHal } from './tool-hal.js';
 export { RealitySchema } from './reality.js';
 export type { Reality, RealityInput } from './reality.js';

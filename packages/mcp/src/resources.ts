@@ -1,7 +1,7 @@
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { hasCapability, CAPABILITIES } from '@hal/types';
 import { robotConfigOf } from '@hal/tools';
-import type { HalTool } from '@hal/tools';
+import type { AgentTool } from '@hal/tools';
 
 /** One resource the server lists, and how to read it. */
 export interface RobotResource {
@@ -26,7 +26,7 @@ const json = (value: unknown) => ({ text: JSON.stringify(value, null, 2) });
  */
 export function robotResources(
   hal: HardwareAbstractionLayer,
-  tools: readonly HalTool[],
+  tools: readonly AgentTool[],
   world: RobotWorld = {},
 ): RobotResource[] {
   const resources: RobotResource[] = [

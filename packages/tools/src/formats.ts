@@ -1,5 +1,5 @@
 import type { JsonSchemaObject } from './json-schema.js';
-import type { HalTool } from './tools.js';
+import type { AgentTool } from './tools.js';
 
 /** An OpenAI chat-completions tool. */
 export interface OpenAITool {
@@ -22,7 +22,7 @@ export interface McpTool {
 }
 
 /** The tools in OpenAI chat-completions form (`tools: [...]`). */
-export function toOpenAITools(tools: readonly HalTool[]): OpenAITool[] {
+export function toOpenAITools(tools: readonly AgentTool[]): OpenAITool[] {
   return tools.map((t) => ({
     type: 'function',
     function: { name: t.name, description: t.description, parameters: t.inputSchema },
@@ -30,7 +30,7 @@ export function toOpenAITools(tools: readonly HalTool[]): OpenAITool[] {
 }
 
 /** The tools in Anthropic Messages API form. */
-export function toAnthropicTools(tools: readonly HalTool[]): AnthropicTool[] {
+export function toAnthropicTools(tools: readonly AgentTool[]): AnthropicTool[] {
   return tools.map((t) => ({
     name: t.name,
     description: t.description,
@@ -39,7 +39,7 @@ export function toAnthropicTools(tools: readonly HalTool[]): AnthropicTool[] {
 }
 
 /** The tools in MCP `tools/list` form. */
-export function toMcpTools(tools: readonly HalTool[]): McpTool[] {
+export function toMcpTools(tools: readonly AgentTool[]): McpTool[] {
   return tools.map((t) => ({
     name: t.name,
     description: t.description,
@@ -48,6 +48,6 @@ export function toMcpTools(tools: readonly HalTool[]): McpTool[] {
 }
 
 /** Each tool's parameter schema, by tool name. */
-export function toJsonSchemas(tools: readonly HalTool[]): Record<string, JsonSchemaObject> {
+export function toJsonSchemas(tools: readonly AgentTool[]): Record<string, JsonSchemaObject> {
   return Object.fromEntries(tools.map((t) => [t.name, t.inputSchema]));
 }

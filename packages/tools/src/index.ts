@@ -1,5 +1,6 @@
 export { halTools } from './tools.js';
-export type { HalTool, HalToolsOptions } from './tools.js';
+export type { AgentTool, HalTool, HalToolsOptions } from './tools.js';
+export { toolBackedHal } from './tool-backed-hal.js';
 
 export { TOOL_CATALOG, toolCatalog } from './catalog.js';
 export type { ToolEntry, ToolSafety } from './catalog.js';

@@ -26,20 +26,27 @@ function neverRefused(schema: JsonSchemaObject): JsonSchemaObject {
   return { ...rest, properties };
 }
 
-/** One HAL call as an LLM tool. */
-export interface HalTool {
-  /** Stable, snake_case, e.g. 'move_forward', 'get_pose', 'emergency_stop'. */
+/**
+ * A tool an LLM may be offered: a HAL call ({@link HalTool}) or a skill above them (`go_to`,
+ * `look`: see @hal/skills). What the formats (OpenAI, Anthropic, MCP) and the agent loop need.
+ */
+export interface AgentTool {
+  /** Stable, snake_case, e.g. 'move_forward', 'go_to', 'emergency_stop'. */
   name: string;
-  /** The HAL call it runs. */
-  call: CallName | ReadCallName;
   /** What it does, with units, frame (REP-103) and limits. */
   description: string;
   /** JSON Schema (type 'object'); bounds are the robot's own reported limits. */
   inputSchema: JsonSchemaObject;
   /** Never blocked by the leash, approval or the rate limit. */
   safety?: ToolSafety;
-  /** Whether the call moves the robot (refused while e-stopped; subject to the leash). */
+  /** Whether it moves the robot (refused while e-stopped; its motions are under the leash). */
   motion: boolean;
+}
+
+/** One HAL call as an LLM tool. */
+export interface HalTool extends AgentTool {
+  /** The HAL call it runs. */
+  call: CallName | ReadCallName;
 }
 
 /** Which tools {@link halTools} lists, by name. */

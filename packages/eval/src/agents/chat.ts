@@ -1,6 +1,6 @@
 import { runAgent } from '@hal/agent';
 import type { AgentEndpoint, AgentError, ChatProvider } from '@hal/agent';
-import type { HalTool } from '@hal/tools';
+import type { AgentTool } from '@hal/tools';
 import type { EvalAgent, ModelFailure } from '../agent.js';
 
 /** Options of {@link chatAgent}: a model behind `@hal/agent`'s loop. */
@@ -21,7 +21,7 @@ export interface ChatAgentOptions {
    * Runs before each trial with the tools it offers (a local model builds its grammar here). A
    * rejection is a model failure: the trial is not scored.
    */
-  prepare?: (tools: HalTool[]) => Promise<void>;
+  prepare?: (tools: AgentTool[]) => Promise<void>;
 }
 
 /** A failure's own code: a provider's (a local model's SCHEMA_UNSUPPORTED), else the loop's. */

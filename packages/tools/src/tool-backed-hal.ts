@@ -1,6 +1,7 @@
 import { HAL_ERROR_CODES, HalError } from '@hal/types';
 import type { HALToolResult, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
-import type { ToolCall, ToolResult } from '@hal/tools';
+import type { ToolCall } from './executor.js';
+import type { ToolResult } from './result.js';
 
 const CODES = new Set<string>(HAL_ERROR_CODES);
 
