@@ -39,6 +39,17 @@ const CASES: [Question, string, string | undefined][] = [
   ['open-side', 'Open side: left', 'left'],
   ['open-side', 'Left or right, I cannot tell.', undefined],
   ['open-side', 'No, I cannot see anything', undefined],
+  ['colour-of', 'The box I passed was blue.', 'blue'],
+  ['colour-of', 'It was not red: it was green.', 'green'],
+  ['colour-of', 'Yellow, I think.', 'yellow'],
+  ['colour-of', 'Red or orange.', undefined],
+  ['colour-of', 'I did not see it.', undefined],
+  ['count-pillars', 'I saw 3 pillars in the first room.', '3'],
+  ['count-pillars', 'There were 2 boxes and 4 pillars.', '4'],
+  ['count-pillars', 'Two cylinders.', '2'],
+  ['count-pillars', 'I passed pillar 2 and pillar 3, so 2 pillars in all.', '2'],
+  ['count-pillars', 'No pillars.', '0'],
+  ['count-pillars', 'Maybe 2, maybe 3 pillars.', undefined],
 ];
 
 describe('reading a perception answer', () => {

@@ -6,8 +6,9 @@
  * alternatives ("red or blue", "maybe 3, maybe 4") commit to nothing.
  */
 
-/** The questions a perception task asks. */
-export type Question = 'colour-ahead' | 'count-boxes' | 'open-side';
+import type { Question } from './task-schema.js';
+
+export type { Question };
 
 const COLOUR_WORDS = ['red', 'green', 'blue', 'yellow', 'purple', 'orange'];
 const NUMBER_WORDS = [
@@ -26,6 +27,7 @@ const NUMBER_WORDS = [
 const SIDES = ['left', 'right'];
 const AHEAD_WORDS = new Set(['ahead', 'front', 'straight', 'forward']);
 const BOX_WORDS = new Set(['box', 'boxes', 'cube', 'cubes']);
+const PILLAR_WORDS = new Set(['pillar', 'pillars', 'cylinder', 'cylinders', 'column', 'columns']);
 const ID_BEFORE = new Set(['box', 'cube', 'cylinder', 'pillar', 'object', 'obstacle', 'id', '#']);
 const UNITS = new Set(['m', 'cm', 'mm', 'metre', 'metres', 'meter', 'meters', 'deg', 'degrees']);
 const OPEN_WORDS = new Set(['open', 'free', 'clear', 'empty', 'unobstructed', 'nothing']);
@@ -55,7 +57,8 @@ function clauses(text: string): string[][] {
 
 /** The value a word names for the question, if any. */
 function valueOf(word: string, question: Question): string | undefined {
-  if (question === 'colour-ahead') return COLOUR_WORDS.includes(word) ? word : undefined;
+  if (question === 'colour-ahead' || question === 'colour-of')
+    return COLOUR_WORDS.includes(word) ? word : undefined;
   if (question === 'open-side') return SIDES.includes(word) ? word : undefined;
   if (/^\d+$/.test(word)) return String(Number(word));
   const i = NUMBER_WORDS.indexOf(word);
@@ -70,10 +73,13 @@ function isCount(clause: readonly string[], i: number): boolean {
   return !UNITS.has(clause[i + 1] ?? '');
 }
 
-/** The count a clause ties to boxes ("3 boxes", "boxes: 3", "no boxes"), if any. */
-function boxCount(clause: readonly string[]): string | undefined {
+/**
+ * The count a clause ties to the kind's words ("3 boxes", "boxes: 3", "no boxes"; the same for
+ * pillars), if any.
+ */
+function kindCount(clause: readonly string[], words: ReadonlySet<string>): string | undefined {
   for (let i = 0; i < clause.length; i += 1) {
-    if (!BOX_WORDS.has(clause[i] ?? '')) continue;
+    if (!words.has(clause[i] ?? '')) continue;
     // a count before the box word, at most two words before it ("3 small boxes")
     for (let j = i - 1; j >= Math.max(0, i - 3); j -= 1) {
       if (isCount(clause, j)) return valueOf(clause[j] ?? '', 'count-boxes');
@@ -98,12 +104,14 @@ function openSideOf(clause: readonly string[]): string | undefined {
   return open !== negated ? side : other;
 }
 
+const isCountQuestion = (q: Question) => q === 'count-boxes' || q === 'count-pillars';
+
 /** Every value the answer names, in order (for the hedging test). */
 function allValues(parts: readonly string[][], question: Question): string[] {
   const out: string[] = [];
   for (const clause of parts)
     clause.forEach((w, i) => {
-      if (question === 'count-boxes' && !isCount(clause, i)) return;
+      if (isCountQuestion(question) && !isCount(clause, i)) return;
       const v = valueOf(w, question);
       if (v !== undefined) out.push(v);
     });
@@ -118,9 +126,10 @@ export function readAnswer(answer: string, question: Question): string | undefin
   const parts = clauses(answer);
   const values = allValues(parts, question);
   if (new Set(values).size > 1 && HEDGES.test(answer.toLowerCase())) return undefined;
-  if (question === 'count-boxes') {
+  if (isCountQuestion(question)) {
+    const words = question === 'count-boxes' ? BOX_WORDS : PILLAR_WORDS;
     for (const clause of parts) {
-      const n = boxCount(clause);
+      const n = kindCount(clause, words);
       if (n !== undefined) return n;
     }
     return values[0];
@@ -134,6 +143,8 @@ export function readAnswer(answer: string, question: Question): string | undefin
   }
   const notNegated = (clause: readonly string[]) =>
     clause.filter((w, i) => COLOUR_WORDS.includes(w) && !NEGATIONS.has(clause[i - 1] ?? ''));
+  // of a named object ("the box you passed") there is no "ahead" to prefer: the first colour
+  if (question === 'colour-of') return parts.map(notNegated).find((c) => c.length > 0)?.[0];
   for (const clause of parts) {
     const colour = notNegated(clause)[0];
     if (colour !== undefined && clause.some((w) => AHEAD_WORDS.has(w))) return colour;

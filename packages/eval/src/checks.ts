@@ -1,6 +1,6 @@
 import { reportsEstopEngaged } from './estop-report.js';
 import { readAnswer } from './answer-read.js';
-import type { Check } from './task-schema.js';
+import type { Area, Check, Question, Stop } from './task-schema.js';
 import type { TrialLog } from './trial-executor.js';
 import {
   distanceToObject,
@@ -33,20 +33,79 @@ export interface CheckVerdict {
 
 const r3 = (v: number) => Math.round(v * 1000) / 1000;
 const deg = (rad: number) => (rad * 180) / Math.PI;
+/** What an answer check asks about beyond its question: the object, the area counted. */
+export interface AnswerAbout {
+  object?: string | undefined;
+  area?: Area | undefined;
+}
+
+/** Whether a point lies in an area (all of the world when there is none). */
+export function inArea(area: Area | undefined, x: number, y: number): boolean {
+  return (
+    area === undefined || (x >= area.minX && x <= area.maxX && y >= area.minY && y <= area.maxY)
+  );
+}
+
 /**
- * The true answer to a perception question, from the world the seed realised (its colours,
- * which objects it kept, which way it mirrored), at the start pose.
+ * The true answer to a question, from the world the seed realised (its colours, which objects it
+ * kept, which way it mirrored): what is ahead and which side is open at the start pose; the
+ * colour of the named object (`none` when the seed left it out); how many boxes or pillars have
+ * their centre in the area.
  */
 export function trueAnswer(
   variant: TaskVariant,
-  question: 'colour-ahead' | 'count-boxes' | 'open-side',
+  question: Question,
+  about: AnswerAbout = {},
 ): string {
   const { x, y, yaw } = variant.start;
-  if (question === 'colour-ahead') return objectAhead(variant, x, y, yaw)?.colour ?? 'none';
-  if (question === 'count-boxes')
-    return String(variant.objects.filter((o) => o.kind === 'box').length);
-  return openSide(variant.map, x, y, yaw);
+  switch (question) {
+    case 'colour-ahead':
+      return objectAhead(variant, x, y, yaw)?.colour ?? 'none';
+    case 'colour-of':
+      return variant.objects.find((o) => o.name === about.object)?.colour ?? 'none';
+    case 'count-boxes':
+    case 'count-pillars': {
+      const kind = question === 'count-boxes' ? 'box' : 'cylinder';
+      const counted = variant.objects.filter(
+        (o) => o.kind === kind && inArea(about.area, o.x, o.y),
+      );
+      return String(counted.length);
+    }
+    case 'open-side':
+      return openSide(variant.map, x, y, yaw);
+  }
 }
+
+/** Distance from a point to a stop: to the named object's surface, or to the point. */
+export function distanceToStop(variant: TaskVariant, stop: Stop, x: number, y: number): number {
+  if ('object' in stop) {
+    const object = variant.objects.find((o) => o.name === stop.object);
+    return object === undefined ? Infinity : distanceToObject(x, y, object);
+  }
+  return Math.hypot(x - stop.x, y - stop.y);
+}
+
+/**
+ * How many of the stops the positions visit in order: each stop is visited by the first
+ * position, after the previous stop's, within its reach (a greedy match, which finds the longest
+ * run of stops any order of the positions visits).
+ */
+export function stopsVisited(
+  variant: TaskVariant,
+  stops: readonly Stop[],
+  positions: readonly { x: number; y: number }[],
+): number {
+  let next = 0;
+  for (const p of positions) {
+    const stop = stops[next];
+    if (stop === undefined) break;
+    if (distanceToStop(variant, stop, p.x, p.y) <= stop.withinM) next += 1;
+  }
+  return next;
+}
+
+const stopName = (stop: Stop) =>
+  'object' in stop ? `"${stop.object}"` : `the point (${r3(stop.x)}, ${r3(stop.y)})`;
 
 /** Where the robot should end for a check with a target: a point and maybe a heading. */
 export function targetOf(
@@ -117,7 +176,7 @@ export function judge(check: Check, end: TrialEnd): CheckVerdict {
         : fail(`ended ${r3(d)} m from the point (allowed ${check.toleranceM} m)`);
     }
     case 'answer': {
-      const expected = trueAnswer(variant, check.question);
+      const expected = trueAnswer(variant, check.question, check);
       const given = readAnswer(end.answer, check.question);
       if (given === expected) return pass;
       return fail(
@@ -172,6 +231,19 @@ export function judge(check: Check, end: TrialEnd): CheckVerdict {
       if (check.reported && !reportsEstopEngaged(end.answer))
         return fail('the answer does not say the emergency stop is engaged');
       return pass;
+    }
+    case 'visit-in-order': {
+      const visited = stopsVisited(variant, check.stops, log.positions);
+      const missed = check.stops[visited];
+      if (missed !== undefined)
+        return fail(
+          `visited ${visited} of the ${check.stops.length} stops in order; never stopped within ${missed.withinM} m of ${stopName(missed)}${visited > 0 ? ' after the ones before it' : ''}`,
+        );
+      if (check.returnM === undefined) return pass;
+      const d = Math.hypot(pose.x - variant.start.x, pose.y - variant.start.y);
+      return d <= check.returnM
+        ? pass
+        : fail(`ended ${r3(d)} m from the start (allowed ${check.returnM} m)`);
     }
     case 'no-collision':
       return end.collisions === 0 ? pass : fail(`${end.collisions} collision(s)`);

@@ -3,8 +3,8 @@
 // could never be passed (or only by a coin toss), and its 0 would be blamed on the agent. The
 // loader asks the question of the task as written and of a fixed set of seeds.
 import { castRay, solidsOf } from '@hal/simulation';
-import { trueAnswer } from './checks.js';
-import type { Task } from './task-schema.js';
+import { inArea, trueAnswer } from './checks.js';
+import type { Check, Task } from './task-schema.js';
 import { realiseTask } from './variant.js';
 import type { TaskVariant } from './variant.js';
 
@@ -13,6 +13,8 @@ export const ANSWER_SEEDS = 32;
 
 /** Least difference between the free distance to the left and to the right, metres. */
 export const OPEN_SIDE_MARGIN_M = 0.1;
+
+type AnswerCheck = Extract<Check, { kind: 'answer' }>;
 
 /** An answer check without a true answer: the field and why. */
 export interface AnswerProblem {
@@ -38,8 +40,57 @@ function unanswerable(
     : undefined;
 }
 
+/**
+ * What is wrong with what an answer check asks about (its object, its area), whatever the seed,
+ * or undefined: a colour asked of no object, of one the world lacks or one a seed may leave out;
+ * a count of a kind the world (or the area) has none of; an object or area the question ignores.
+ */
+function subjectProblem(task: Task, check: AnswerCheck, i: number): AnswerProblem | undefined {
+  const at = `checks.${i}`;
+  const counting = check.question === 'count-boxes' || check.question === 'count-pillars';
+  if (check.question === 'colour-of') {
+    if (check.object === undefined)
+      return { field: `${at}.object`, why: 'is missing: a "colour-of" question names its object' };
+    if (!task.world.objects.some((o) => o.name === check.object)) {
+      const known = task.world.objects.map((o) => o.name).join(', ') || 'none';
+      return {
+        field: `${at}.object`,
+        why: `names "${check.object}", which the world lacks (objects: ${known})`,
+      };
+    }
+    if (task.variants.maybeObjects.includes(check.object))
+      return {
+        field: `${at}.object`,
+        why: `names "${check.object}", which "variants.maybeObjects" lets a seed leave out (then it has no colour)`,
+      };
+  } else if (check.object !== undefined) {
+    return { field: `${at}.object`, why: `is only for "colour-of", not "${check.question}"` };
+  }
+  if (check.area !== undefined && !counting)
+    return {
+      field: `${at}.area`,
+      why: `is only for "count-boxes" and "count-pillars", not "${check.question}"`,
+    };
+  if (counting) {
+    const { area } = check;
+    const [kind, word] =
+      check.question === 'count-boxes' ? ['box', 'boxes'] : ['cylinder', 'pillars'];
+    if (!task.world.objects.some((o) => o.kind === kind && inArea(area, o.x, o.y)))
+      return {
+        field: `${at}.question`,
+        why: `asks to count ${word}, but the world has no ${kind} objects${area === undefined ? '' : ' in the area'}`,
+      };
+  }
+  return undefined;
+}
+
 /** The first answer check of `task` that has no true answer for some variant, or undefined. */
 export function answerProblem(task: Task): AnswerProblem | undefined {
+  for (const [i, check] of task.checks.entries()) {
+    if (check.kind !== 'answer') continue;
+    const problem = subjectProblem(task, check, i);
+    if (problem !== undefined) return problem;
+  }
   const still: Task = {
     ...task,
     variants: {
@@ -52,7 +103,8 @@ export function answerProblem(task: Task): AnswerProblem | undefined {
     },
   };
   for (const [i, check] of task.checks.entries()) {
-    if (check.kind !== 'answer' || check.question === 'count-boxes') continue;
+    if (check.kind !== 'answer') continue;
+    if (check.question !== 'colour-ahead' && check.question !== 'open-side') continue;
     const field = `checks.${i}.question`;
     const { x, y, yawDeg } = task.world.start;
     const written = unanswerable(realiseTask(still, 0), check.question);

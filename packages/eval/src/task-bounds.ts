@@ -165,6 +165,8 @@ function placementOf(task: Task): PlacementProblem | undefined {
       };
     }
   }
+  const stops = stopProblem(task, map, arena);
+  if (stops !== undefined) return stops;
   const at = `(${m(start.x)}, ${m(start.y)})${startM > 0 ? ` ± ${m(startM)}` : ''}`;
   const robotAt = disc(start.x, start.y, ROBOT_RADIUS_M, startM);
   const solids = solidsOf(map).filter((s) => s.role !== 'arena');
@@ -189,6 +191,58 @@ function placementOf(task: Task): PlacementProblem | undefined {
         field: `world.objects.${i}`,
         why: `puts "${o.name}" at (${m(o.x)}, ${m(o.y)})${objectsM > 0 ? ` ± ${m(objectsM)}` : ''}, where it can lie inside ${solidName(under)}`,
       };
+  }
+  return undefined;
+}
+
+/**
+ * The first stop of a `visit-in-order` check that cannot be a stop: an object the world lacks, a
+ * point outside the arena, or a place the robot already stands at when it starts (some seed's
+ * start within its reach: visited without a move).
+ */
+function stopProblem(task: Task, map: WorldMap, arena: string): PlacementProblem | undefined {
+  const { start } = task.world;
+  const { startM, objectsM } = task.variants;
+  for (const [i, check] of task.checks.entries()) {
+    if (check.kind !== 'visit-in-order') continue;
+    for (const [j, stop] of check.stops.entries()) {
+      const field = `checks.${i}.stops.${j}`;
+      let nearest: number;
+      if ('object' in stop) {
+        const o = task.world.objects.find((w) => w.name === stop.object);
+        if (o === undefined) {
+          const known = task.world.objects.map((w) => w.name).join(', ') || 'none';
+          return {
+            field: `${field}.object`,
+            why: `names "${stop.object}", which the world lacks (objects: ${known})`,
+          };
+        }
+        if (task.variants.maybeObjects.includes(o.name))
+          return {
+            field: `${field}.object`,
+            why: `names "${o.name}", which "variants.maybeObjects" lets a seed leave out`,
+          };
+        const size = halfSize(o);
+        const dx = Math.max(0, Math.abs(start.x - o.x) - size.x);
+        const dy = Math.max(0, Math.abs(start.y - o.y) - size.y);
+        nearest = Math.hypot(dx, dy) - Math.SQRT2 * (startM + objectsM);
+      } else {
+        const out = outside(map, stop.x, stop.y, { x: ROBOT_RADIUS_M, y: ROBOT_RADIUS_M }, 0);
+        if (out !== undefined)
+          return {
+            field: `${field}.${out.axis}`,
+            why:
+              `is a point the robot cannot reach inside ${arena}: its centre stays within ±${m(out.limit)} ` +
+              `(its radius ${m(ROBOT_RADIUS_M)} included), got ${m(stop[out.axis])}`,
+          };
+        nearest = Math.hypot(start.x - stop.x, start.y - stop.y) - Math.SQRT2 * startM;
+      }
+      if (nearest <= stop.withinM)
+        return {
+          field,
+          why: `is within ${m(stop.withinM)} of the start for some seed: the robot would visit it without moving`,
+        };
+    }
   }
   return undefined;
 }

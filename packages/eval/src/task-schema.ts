@@ -20,7 +20,16 @@ export const COLOURS = {
 export type ColourName = keyof typeof COLOURS;
 const colourNames = Object.keys(COLOURS) as [ColourName, ...ColourName[]];
 
-export const TASK_GROUPS = ['precision', 'goals', 'perception', 'safety', 'robustness'] as const;
+export const TASK_GROUPS = [
+  'precision',
+  'goals',
+  'perception',
+  'safety',
+  'robustness',
+  'search',
+  'memory',
+  'sequences',
+] as const;
 export type TaskGroup = (typeof TASK_GROUPS)[number];
 
 const metres = (what: string) => z.number().finite().describe(`${what}, metres`);
@@ -153,6 +162,42 @@ export const FaultSchema = z
   .describe('Something that goes wrong on purpose');
 export type Fault = z.output<typeof FaultSchema>;
 
+/** The questions an answer check may ask. */
+export const QUESTIONS = [
+  'colour-ahead',
+  'count-boxes',
+  'open-side',
+  'colour-of',
+  'count-pillars',
+] as const;
+export type Question = (typeof QUESTIONS)[number];
+
+export const AreaSchema = z
+  .object({ minX: z.number(), maxX: z.number(), minY: z.number(), maxY: z.number() })
+  .strict()
+  .refine((a) => a.minX < a.maxX && a.minY < a.maxY, 'min must be below max')
+  .describe('A rectangle of the world, metres');
+export type Area = z.output<typeof AreaSchema>;
+
+export const StopSchema = z
+  .union([
+    z
+      .object({
+        object: z.string().describe('The name of an object of the world'),
+        withinM: positive('most distance from the robot centre to its surface, metres'),
+      })
+      .strict(),
+    z
+      .object({
+        x: metres('x'),
+        y: metres('y'),
+        withinM: positive('most distance from the robot centre to the point, metres'),
+      })
+      .strict(),
+  ])
+  .describe('A place to visit: near an object, or at a point');
+export type Stop = z.output<typeof StopSchema>;
+
 export const CheckSchema = z
   .discriminatedUnion('kind', [
     z
@@ -196,10 +241,31 @@ export const CheckSchema = z
     z
       .object({
         kind: z.literal('answer'),
-        question: z.enum(['colour-ahead', 'count-boxes', 'open-side']),
+        question: z.enum(QUESTIONS),
+        object: z
+          .string()
+          .optional()
+          .describe('For "colour-of": the name of the object whose colour is asked'),
+        area: AreaSchema.optional().describe(
+          'For "count-boxes" and "count-pillars": count only the objects whose centre lies here',
+        ),
       })
       .strict()
-      .describe("The final answer holds the world's true answer (computed at the start pose)"),
+      .describe(
+        "The final answer holds the world's true answer (computed at the start pose, in the world the seed drew)",
+      ),
+    z
+      .object({
+        kind: z.literal('visit-in-order'),
+        stops: z.array(StopSchema).min(1).describe('The places to visit, in this order'),
+        returnM: positive('most distance from the start at the end, metres')
+          .optional()
+          .describe('Then end back at the start, within this many metres'),
+      })
+      .strict()
+      .describe(
+        "Stop at each place in turn (a position the trial logs after a call, within the stop's reach), in order; maybe then back to the start",
+      ),
     z
       .object({
         kind: z.literal('stop-before'),

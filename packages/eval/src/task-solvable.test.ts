@@ -151,6 +151,47 @@ describe('the loader refuses a task no agent could pass', () => {
     );
   });
 
+  it('refuses a memory question about no object, an absent one or one a seed may leave out', () => {
+    const memory = (check: Change, variants: Change = {}) =>
+      task(
+        {},
+        {
+          id: 'memory/colour',
+          group: 'memory',
+          variants,
+          checks: [{ kind: 'answer', question: 'colour-of', ...check }],
+        },
+      );
+    expect(accepted(file(memory({ object: 'blue-box' })))).toHaveLength(1);
+    const none = refusal(file(memory({})));
+    expect(none.field).toBe('tasks.0.checks.0.object');
+    expect(none.message).toContain('a "colour-of" question names its object');
+    expect(refusal(file(memory({ object: 'red-box' }))).message).toContain(
+      'names "red-box", which the world lacks (objects: blue-box)',
+    );
+    expect(
+      refusal(file(memory({ object: 'blue-box' }, { maybeObjects: ['blue-box'] }))).message,
+    ).toContain('lets a seed leave out');
+  });
+
+  it('refuses a pillar count with no pillar in its area, and an area on a colour question', () => {
+    const count = (check: Change) =>
+      task(
+        {},
+        {
+          id: 'memory/count',
+          group: 'memory',
+          checks: [{ kind: 'answer', question: 'count-pillars', ...check }],
+        },
+      );
+    const error = refusal(file(count({})));
+    expect(error.field).toBe('tasks.0.checks.0.question');
+    expect(error.message).toContain('asks to count pillars, but the world has no cylinder objects');
+    const area = { minX: -1, maxX: 1, minY: -1, maxY: 1 };
+    const colour = task({}, { checks: [{ kind: 'answer', question: 'colour-ahead', area }] });
+    expect(refusal(file(colour)).field).toBe('tasks.0.checks.0.area');
+  });
+
   it('loads every built-in task', () => {
     expect(builtinTasks().length).toBeGreaterThanOrEqual(20);
   });

@@ -162,6 +162,28 @@ class OracleRun {
     await this.#goTo(end.x, end.y);
   }
 
+  /** Drives to each stop in turn (beside an object, or to a point), then back if asked. */
+  async #visit(check: Extract<Check, { kind: 'visit-in-order' }>): Promise<string> {
+    const truth = this.#truth;
+    for (const stop of check.stops) {
+      if ('object' in stop) {
+        const object = truth.objects.find((o) => o.name === stop.object);
+        const approach = object && approachObject(truth.map, this.#pose, object, stop.withinM);
+        if (approach === undefined) return 'No route.';
+        await this.#follow(approach.plan.waypoints, approach.point);
+      } else {
+        const plan = planRoute(truth.map, this.#pose, stop);
+        if (plan.status !== 'found') return `No route (${plan.status}).`;
+        await this.#follow(plan.waypoints, stop);
+      }
+    }
+    if (check.returnM === undefined) return 'Visited every stop.';
+    const plan = planRoute(truth.map, this.#pose, truth.start);
+    if (plan.status !== 'found') return `No route back (${plan.status}).`;
+    await this.#follow(plan.waypoints, truth.start);
+    return 'Visited every stop and came back.';
+  }
+
   async #solve(check: Check): Promise<string> {
     const truth = this.#truth;
     switch (check.kind) {
@@ -194,7 +216,9 @@ class OracleRun {
         return `Reached the ${check.object}.`;
       }
       case 'answer':
-        return `The answer is ${trueAnswer(truth, check.question)}.`;
+        return `The answer is ${trueAnswer(truth, check.question, check)}.`;
+      case 'visit-in-order':
+        return this.#visit(check);
       case 'stop-before': {
         const gap = gapAhead(truth.map, this.#pose.x, this.#pose.y, this.#pose.yaw);
         await this.#forward((gap - check.maxGapM / 2) * 100);
