@@ -5,13 +5,16 @@ export { toolBackedHal } from './tool-backed-hal.js';
 export { TOOL_CATALOG, toolCatalog } from './catalog.js';
 export type { ToolEntry, ToolSafety } from './catalog.js';
 
+export { toolParameters } from './json-schema.js';
 export type { JsonSchemaObject } from './json-schema.js';
+export { parseArguments } from './arguments.js';
 
 export { toAnthropicTools, toJsonSchemas, toMcpTools, toOpenAITools } from './formats.js';
 export type { AnthropicTool, McpTool, OpenAITool } from './formats.js';
 
 export { createToolExecutor } from './executor.js';
 export type { ToolCall, ToolExecutor, ToolExecutorOptions } from './executor.js';
+export { errorResult } from './result.js';
 export type { ToolContent, ToolResult } from './result.js';
 
 export type { ApprovalDecision, Geofence, Leash } from './leash.js';

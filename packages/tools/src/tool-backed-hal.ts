@@ -13,7 +13,9 @@ function asHalResult(result: ToolResult, mode: HardwareAbstractionLayer['mode'])
   return {
     success: false,
     error: typeof s['error'] === 'string' ? s['error'] : code,
-    ...(CODES.has(code) ? { code: code as HalErrorCode } : {}),
+    // the executor's own codes (LEASH_DISTANCE, BUDGET_EXCEEDED...) are no HalErrorCode: they
+    // travel in the details, so a controller can still tell a refusal from a fault
+    ...(CODES.has(code) ? { code: code as HalErrorCode } : { details: { code } }),
     timestamp: 0,
     mode,
   };

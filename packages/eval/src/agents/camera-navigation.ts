@@ -3,8 +3,7 @@ import type { DecisionProvider } from '@hal/navigation';
 import { ObjectMemory, Perception, perceivingObserver } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { EvalAgent } from '../agent.js';
-import { namedObject, namedPoint } from './named-object.js';
-import { ObjectSeekingProvider } from './object-seeker.js';
+import { namedObject, namedPoint, ObjectSeekingProvider } from '@hal/skills';
 
 /** Options of {@link cameraNavigationAgent}. */
 export interface CameraNavigationAgentOptions {
@@ -37,7 +36,6 @@ export function cameraNavigationAgent(options: CameraNavigationAgentOptions = {}
     name: options.name ?? 'nav:camera',
     // the words and the robot only: the harness hands it no task, world or true pose
     usesGroundTruth: false,
-    needsHal: true,
     run: async (trial) => {
       const hal = trial.hal;
       if (hal === undefined) return { answer: 'No robot to drive.', stopped: 'no robot' };

@@ -25,12 +25,9 @@ export function navigationAgent(options: NavigationAgentOptions = {}): EvalAgent
   return {
     name: options.name ?? `nav:${provider().name}`,
     usesGroundTruth: true,
-    needsHal: true,
     run: async (trial) => {
       const truth = trial.truth;
-      const hal = trial.hal;
-      if (truth === undefined || hal === undefined)
-        return { answer: 'no goal given', stopped: 'no goal' };
+      if (truth === undefined) return { answer: 'no goal given', stopped: 'no goal' };
       let goal: { x: number; y: number } | undefined;
       for (const check of truth.task.checks) {
         if (check.kind === 'reach-object') {
@@ -45,7 +42,7 @@ export function navigationAgent(options: NavigationAgentOptions = {}): EvalAgent
       if (goal === undefined)
         return { answer: 'This task has no place to drive to.', stopped: 'no goal point' };
       const bridge = new NavigationBridge({
-        hal,
+        hal: trial.hal,
         provider: provider(),
         ...(options.knownMap === false ? {} : { map: truth.map }),
         goalToleranceM: 0.02,

@@ -3,7 +3,8 @@ import type { ColourName, ObjectKind } from '@hal/perception';
 
 /** The object an instruction names, in words perception's memory understands. */
 export interface NamedObject {
-  colour: ColourName;
+  /** Undefined for a kind alone ("the pillar": see targetOf). */
+  colour: ColourName | undefined;
   /** `unknown` when the instruction names a colour only ("the red thing"). */
   kind: ObjectKind;
   /** The words to ask the memory with, e.g. `red box`. */

@@ -121,7 +121,7 @@ export class ObjectSeekingProvider implements DecisionProvider {
   estimate(): RememberedObject | undefined {
     const rank = (o: RememberedObject) =>
       o.kind === this.#target.kind ? 0 : o.kind === 'unknown' ? 1 : 2;
-    const candidates = this.#memory.find(this.#target.colour);
+    const candidates = this.#memory.find(this.#target.colour ?? this.#target.query);
     return candidates.sort((a, b) => rank(a) - rank(b) || b.timesSeen - a.timesSeen)[0];
   }
 

@@ -1,0 +1,17 @@
+export { createSkills } from './skill-set.js';
+export type { CreateSkillsOptions, SkillSet } from './skill-set.js';
+export { SkillContext, skillPose } from './skill-context.js';
+export type { SkillOptions } from './skill-context.js';
+export { SKILL_NAMES, SKILL_PARAMETERS, SKILL_TOOLS } from './skill-catalog.js';
+export type { SkillName } from './skill-catalog.js';
+export type { SkillOutcome, SkillPose } from './skill-result.js';
+export type { SeenThing } from './seen-thing.js';
+export type { Clear } from './look.js';
+export { isToolProfile, TOOL_PROFILES, toolProfile } from './tool-profile.js';
+export type { ProfileTools, ToolProfile } from './tool-profile.js';
+export { ObjectSeekingProvider } from './object-seeker.js';
+export type { ObjectSeekerOptions, SeekPhase } from './object-seeker.js';
+export { namedObject, namedPoint } from './named-object.js';
+export type { NamedObject, NamedPoint } from './named-object.js';
+export { mostPromisingFrontier } from './frontier-choice.js';
+export type { FrontierChoice, FrontierChoiceOptions } from './frontier-choice.js';
