@@ -1,3 +1,4 @@
+import type { ToolProfile } from '@hal/skills';
 import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { TaskVariant } from './variant.js';
@@ -21,10 +22,11 @@ export interface AgentTrial {
   /** With `truth`: the robot's true pose now (metres, radians), read without a tool call. */
   truePose?: () => { x: number; y: number; yaw: number };
   /**
-   * For agents that declare `needsHal` (the navigation bridge): the robot as a HAL whose motion
-   * and sensor calls go through `execute`, so they are counted, leashed and faulted the same way.
+   * The robot as a HAL for agents that drive one (the navigation bridge): never the robot's own
+   * HAL, but one whose motion and sensor calls and e-stop reset go through `execute`, so they are
+   * counted, leashed, faulted and logged as tool calls are.
    */
-  hal?: HardwareAbstractionLayer;
+  hal: HardwareAbstractionLayer;
 }
 
 /**
@@ -57,9 +59,15 @@ export interface AgentAnswer {
 export interface EvalAgent {
   /** A short name for reports, e.g. `oracle`, `local:SmolLM2`. */
   readonly name: string;
-  /** Gets the ground truth (the oracle). Default false. */
+  /**
+   * Gets the ground truth (`truth`, `truePose`): an oracle, which the report marks as one, not an
+   * agent under test. Default false.
+   */
   readonly usesGroundTruth?: boolean;
-  /** Drives a HAL rather than tools (given `hal`, see {@link AgentTrial.hal}). Default false. */
-  readonly needsHal?: boolean;
+  /**
+   * The tools it is offered unless the run names a profile (`hal eval --tools`): `primitives`
+   * (the HAL's calls, the default), `skills` or `all` (see @hal/skills).
+   */
+  readonly toolProfile?: ToolProfile;
   run(trial: AgentTrial): Promise<AgentAnswer>;
 }

@@ -42,6 +42,7 @@ export async function conductTrial(
     ...(options.leash === undefined ? {} : { leash: options.leash }),
     reality: s.reality,
     seed: s.seed,
+    profile: options.profile ?? agent.toolProfile ?? 'primitives',
   });
   const controller = new AbortController();
   const wallMs = options.wallTimeoutMs ?? 120_000;
@@ -68,9 +69,8 @@ export async function conductTrial(
       execute: (call) => executor.execute(call),
       signal: controller.signal,
       maxToolCalls: task.budget.toolCalls,
-      ...(agent.needsHal === true
-        ? { hal: toolBackedHal(s.hal, (call) => executor.execute(call)) }
-        : {}),
+      // every agent acts through the tools: a HAL it is given is one over them, never `s.hal`
+      hal: toolBackedHal(s.hal, (call) => executor.execute(call)),
       ...(agent.usesGroundTruth === true ? { truth: s.variant, truePose: () => body.pose() } : {}),
     });
     answer = await Promise.race([running, abandoned]);
