@@ -62,7 +62,7 @@ describe('hal eval with a model that never answers', () => {
     );
     const report = JSON.parse(await readFile(join(out, 'eval.json'), 'utf8')) as EvalReport;
     const [oracle, model] = report.scores.agents;
-    expect(report.version).toBe(2);
+    expect(report.version).toBe(3);
     expect(oracle?.modelFailure).toBeNull();
     expect(model?.modelFailure).toMatchObject({ code: 'NETWORK', trials: 1 });
     expect(model?.modelFailure?.message).toContain('ECONNREFUSED');

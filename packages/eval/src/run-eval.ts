@@ -2,15 +2,20 @@ import type { EvalAgent, ModelFailure } from './agent.js';
 import { EvalError } from './errors.js';
 import { RealitySchema } from './reality.js';
 import { summariseGroups, summariseTasks } from './scores.js';
-import type { GroupSummary, Rate, TaskSummary } from './scores.js';
+import type { GroupSummary, RateOverTasks, TaskSummary } from './scores.js';
+import type { PassK } from './pass-k.js';
 import { runRobotTrial, runsOnRobot } from './robot-trial.js';
 import type { EvalRobot } from './robot-trial.js';
 import type { Task } from './task-schema.js';
 import { runTrial } from './trial.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial.js';
 
-/** The version of the report's JSON shape (2: the trials and agents whose model failed). */
-export const REPORT_VERSION = 2;
+/**
+ * The version of the report's JSON shape (2: the trials and agents whose model failed; 3: the
+ * interval of the overall and group rates is a bootstrap over tasks, `tasks` and `interval` on
+ * those rates, `passK` and `usesGroundTruth` per agent).
+ */
+export const REPORT_VERSION = 3;
 
 /** An agent whose model could not be used: in how many trials, and the first failure. */
 export interface AgentModelFailure extends ModelFailure {
@@ -29,8 +34,18 @@ export interface AgentScores {
   agent: string;
   /** `simulator` (scored from its ground truth), or the robot's name (from its reports). */
   on: string;
-  /** Over the scored trials only: those whose model failed are not among them. */
-  overall: Rate;
+  /**
+   * Whether the agent was given the ground truth (it declares `usesGroundTruth`): an oracle, a
+   * reference to compare with, not an agent under test.
+   */
+  usesGroundTruth: boolean;
+  /**
+   * Over the scored trials only: those whose model failed are not among them. Its interval is a
+   * bootstrap over the tasks (see `intervalOverTasks`).
+   */
+  overall: RateOverTasks;
+  /** pass^k for k = 1 to the trials per task, over the tasks with a scored trial. */
+  passK: PassK[];
   groups: GroupSummary[];
   tasks: TaskSummary[];
   /** Every trial run, those whose model failed included. */
@@ -218,6 +233,7 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
     agents.push({
       agent: row.name,
       on: row.robot?.name ?? 'simulator',
+      usesGroundTruth: row.agent.usesGroundTruth === true,
       ...summariseGroups(scored),
       tasks: summariseTasks(scored),
       trials: scores,

@@ -1,7 +1,14 @@
+import { intervalOverTasks, wilsonBounds } from './interval.js';
+import type { TaskCount, TaskIntervalMethod } from './interval.js';
+import { passHatK } from './pass-k.js';
+import type { PassK } from './pass-k.js';
 import type { TrialScore } from './trial.js';
 import type { TaskGroup } from './task-schema.js';
 
-/** A proportion with its 95 % Wilson score interval. */
+/**
+ * A proportion with its 95 % interval. For one task's trials (independent draws of the task's
+ * seed) it is the Wilson score interval; over tasks, see {@link RateOverTasks}.
+ */
 export interface Rate {
   successes: number;
   trials: number;
@@ -14,7 +21,8 @@ const round = (v: number) => Math.round(v * 10_000) / 10_000;
 
 /**
  * The Wilson score interval of `successes` out of `trials` (z = 1.96, 95 %): unlike the normal
- * approximation it stays inside [0, 1] and is not empty at 0 or k successes of k.
+ * approximation it stays inside [0, 1] and is not empty at 0 or k successes of k. It assumes the
+ * trials independent: right for the trials of one task, too narrow for trials of many tasks.
  */
 export function wilson(successes: number, trials: number, z = 1.96): Rate {
   if (
@@ -29,16 +37,36 @@ export function wilson(successes: number, trials: number, z = 1.96): Rate {
     );
   if (trials === 0) return { successes, trials, rate: 0, low: 0, high: 1 };
   const p = successes / trials;
-  const z2 = z * z;
-  const centre = (p + z2 / (2 * trials)) / (1 + z2 / trials);
-  const half =
-    (z / (1 + z2 / trials)) * Math.sqrt((p * (1 - p)) / trials + z2 / (4 * trials * trials));
+  return { successes, trials, rate: round(p), ...wilsonBounds(p, trials, z) };
+}
+
+/**
+ * A success rate over several tasks, each run over its own trials, with the 95 % interval of
+ * {@link intervalOverTasks}: the tasks, not the trials, are the sample (a bootstrap over tasks).
+ */
+export interface RateOverTasks extends Rate {
+  /** Tasks the rate is over. */
+  tasks: number;
+  /**
+   * How `low` and `high` were found: `bootstrap-tasks` (the percentile bootstrap over tasks), or
+   * `wilson-tasks` where every task scored the same (Wilson's, each task one observation).
+   */
+  interval: TaskIntervalMethod;
+}
+
+/** The pooled rate of the tasks' trials, with the bootstrap interval over the tasks. */
+export function rateOverTasks(tasks: readonly TaskCount[]): RateOverTasks {
+  const successes = tasks.reduce((s, t) => s + t.successes, 0);
+  const trials = tasks.reduce((s, t) => s + t.trials, 0);
+  const { low, high, method } = intervalOverTasks(tasks);
   return {
     successes,
     trials,
-    rate: round(p),
-    low: round(Math.max(0, centre - half)),
-    high: round(Math.min(1, centre + half)),
+    rate: trials === 0 ? 0 : round(successes / trials),
+    low,
+    high,
+    tasks: tasks.length,
+    interval: method,
   };
 }
 
@@ -46,8 +74,9 @@ export function wilson(successes: number, trials: number, z = 1.96): Rate {
 export interface TaskSummary {
   task: string;
   group: TaskGroup;
+  /** Over the task's trials, with the Wilson interval (its seeds are independent draws). */
   success: Rate;
-  /** Whether all k trials succeeded (pass^k). */
+  /** Whether all k trials succeeded. */
   passAll: boolean;
   collisions: number;
   meanPositionErrorM: number | null;
@@ -107,27 +136,33 @@ export function summariseTasks(trials: readonly TrialScore[]): TaskSummary[] {
 export interface GroupSummary {
   group: TaskGroup;
   tasks: number;
-  success: Rate;
+  /** Over the group's tasks, the interval a bootstrap over them. */
+  success: RateOverTasks;
   /** Tasks of the group whose every trial succeeded. */
   passAllTasks: number;
 }
 
-/** Totals by group (in the order the groups first appear) and over everything. */
+/**
+ * Totals by group (in the order the groups first appear) and over everything, each rate with its
+ * interval over tasks, and pass^k over all the tasks for k = 1 to the trials per task.
+ */
 export function summariseGroups(trials: readonly TrialScore[]): {
   groups: GroupSummary[];
-  overall: Rate;
+  overall: RateOverTasks;
+  passK: PassK[];
 } {
   const tasks = summariseTasks(trials);
+  const counts = (list: readonly TaskSummary[]) =>
+    list.map((t) => ({ successes: t.success.successes, trials: t.success.trials }));
   const groups: GroupSummary[] = [];
   for (const group of [...new Set(tasks.map((t) => t.group))]) {
-    const mine = trials.filter((t) => t.group === group);
     const mineTasks = tasks.filter((t) => t.group === group);
     groups.push({
       group,
       tasks: mineTasks.length,
-      success: wilson(mine.filter((t) => t.success).length, mine.length),
+      success: rateOverTasks(counts(mineTasks)),
       passAllTasks: mineTasks.filter((t) => t.passAll).length,
     });
   }
-  return { groups, overall: wilson(trials.filter((t) => t.success).length, trials.length) };
+  return { groups, overall: rateOverTasks(counts(tasks)), passK: passHatK(counts(tasks)) };
 }

@@ -5,10 +5,28 @@ const pct = (rate: number) => `${Math.round(rate * 100)} %`;
 const num = (v: number | null, digits = 3) =>
   v === null ? '-' : String(Math.round(v * 10 ** digits) / 10 ** digits);
 
+/** pass^k of every agent for k = 1 to the trials per task, one row per agent. */
+function passKTable(report: EvalReport): string[] {
+  const ks = Array.from({ length: report.scores.trialsPerTask }, (_, i) => i + 1);
+  return [
+    `| agent | ${ks.map((k) => `pass^${k}`).join(' | ')} |`,
+    `|---|${ks.map(() => '---|').join('')}`,
+    ...report.scores.agents.map(
+      (a) =>
+        `| ${a.agent} | ${ks
+          .map((k) => a.passK.find((p) => p.k === k))
+          .map((p) => (p === undefined ? '-' : pct(p.rate)))
+          .join(' | ')} |`,
+    ),
+  ];
+}
+
 /**
- * The report in Markdown: the summary by group, the plot (`plotFile`, when written beside it),
- * then each agent's tasks: success over k with the 95 % Wilson interval, pass^k, collisions,
- * mean final position error, path length over the planner's optimum, calls and refusals.
+ * The report in Markdown: the summary by group (the overall interval a bootstrap over tasks),
+ * pass^k of each agent, the plot (`plotFile`, when written beside it), then each agent's tasks:
+ * success over k with the task's 95 % Wilson interval, whether all k passed, collisions, mean
+ * final position error, path length over the planner's optimum, calls and refusals. An agent
+ * given the ground truth is marked an oracle.
  */
 export function markdownReport(report: EvalReport, options: { plotFile?: string } = {}): string {
   const { scores } = report;
@@ -25,6 +43,12 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
     summaryTable(report),
     '```',
     '',
+    'The 95 % interval of a rate over tasks is a bootstrap over the tasks (the seeds of one task ' +
+      'are not independent trials). pass^k is the chance that k trials of a task all succeed, ' +
+      'averaged over the tasks (C(c, k) / C(n, k) per task, c successes of n trials):',
+    '',
+    ...passKTable(report),
+    '',
   ];
   if (options.plotFile !== undefined) lines.push(`![Success by group](${options.plotFile})`, '');
   for (const agent of scores.agents) {
@@ -35,6 +59,13 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
         ? 'In the simulator, scored from its ground truth.'
         : `On ${agent.on}, scored from what the robot reports.`,
       '',
+      ...(agent.usesGroundTruth
+        ? [
+            '**An oracle: it reads the ground truth** (the task and the world as the seed placed ' +
+              'them, and the true pose), so it is a reference, not an agent under test.',
+            '',
+          ]
+        : []),
       ...(agent.modelFailure === null
         ? []
         : [
@@ -45,7 +76,7 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
               `: ${agent.modelFailure.code}: ${agent.modelFailure.message}. Those trials are not scored.`,
             '',
           ]),
-      '| task | success | 95 % CI | pass^k | collisions | position error (m) | path / optimum | calls | refused |',
+      '| task | success | 95 % CI (Wilson) | all k passed | collisions | position error (m) | path / optimum | calls | refused |',
       '|---|---|---|---|---|---|---|---|---|',
     );
     for (const t of agent.tasks) {

@@ -5,7 +5,7 @@ import { builtinTasks } from '../builtin-tasks.js';
 import { runEval } from '../run-eval.js';
 import { markdownReport } from './markdown.js';
 import { successSvg } from './svg.js';
-import { summaryTable } from './table.js';
+import { summaryTable, tableKs } from './table.js';
 
 describe('the reports', async () => {
   const report = await runEval({
@@ -15,13 +15,36 @@ describe('the reports', async () => {
     seed: 3,
   });
 
-  it('tabulate each agent by group with its overall rate and interval', () => {
+  it('tabulate each agent by group with its overall rate, interval over tasks and pass^k', () => {
     const lines = summaryTable(report).split('\n');
     expect(lines[0]).toMatch(
-      /^agent\s+precision\s+robustness\s+overall\s+95% CI\s+calls\s+refused\s+tokens$/,
+      /^agent\s+precision\s+robustness\s+overall\s+95% CI\s+pass\^1\.\.2\s+calls\s+refused\s+tokens\s+truth$/,
     );
-    expect(lines[1]).toMatch(/^oracle\s+100% 12\/12\s+100% 8\/8\s+100%\s+/);
-    expect(lines[3]).toMatch(/^claimer\s+0% 0\/12\s+0% 0\/8\s+0%\s+0%-16%\s+0\s+0\s+0$/);
+    expect(lines[1]).toMatch(
+      /^oracle\s+100% 12\/12\s+100% 8\/8\s+100%\s+\d+%-100%\s+100% 100%\s+\d+\s+0\s+0\s+oracle \(reads the ground truth\)$/,
+    );
+    // 10 tasks, none passed: Wilson over the 10 tasks, not over the 20 trials (0%-16%)
+    expect(lines[3]).toMatch(/^claimer\s+0% 0\/12\s+0% 0\/8\s+0%\s+0%-28%\s+0% 0%\s+0\s+0\s+0$/);
+  });
+
+  it('mark the oracle, and give pass^k and the interval over tasks in the JSON', () => {
+    expect(report.version).toBe(3);
+    const [oracle, naive, claimer] = report.scores.agents;
+    expect([oracle, naive, claimer].map((a) => a?.usesGroundTruth)).toEqual([true, false, false]);
+    expect(oracle?.passK).toEqual([
+      { k: 1, rate: 1 },
+      { k: 2, rate: 1 },
+    ]);
+    expect(naive?.overall).toMatchObject({ tasks: 10, interval: 'bootstrap-tasks' });
+    expect(naive?.overall.rate).toBe(naive?.passK[0]?.rate);
+    expect(naive?.groups[0]?.success).toMatchObject({ tasks: 6, interval: expect.any(String) });
+    expect(claimer?.overall).toMatchObject({ interval: 'wilson-tasks', low: 0, high: 0.2775 });
+  });
+
+  it('show at most five k in the table, the last of them n', () => {
+    expect(tableKs(1)).toEqual([1]);
+    expect(tableKs(5)).toEqual([1, 2, 3, 4, 5]);
+    expect(tableKs(20)).toEqual([1, 2, 3, 4, 20]);
   });
 
   it('write Markdown with a row per task and the failures named', () => {
@@ -29,12 +52,18 @@ describe('the reports', async () => {
     expect(md).toContain('![Success by group](eval.svg)');
     expect(md).toContain('| precision/drive-30cm | 2/2 |');
     expect(md).toMatch(/- robustness\/move-fails seed 3: displacement: /);
+    expect(md).toContain('| agent | pass^1 | pass^2 |');
+    expect(md).toContain('| claimer | 0 % | 0 % |');
+    expect(md.match(/An oracle: it reads the ground truth/g)).toHaveLength(1);
+    expect(md.indexOf('An oracle')).toBeGreaterThan(md.indexOf('## oracle'));
+    expect(md.indexOf('An oracle')).toBeLessThan(md.indexOf('## naive'));
   });
 
   it('plot one bar per agent and group, and the same bytes for the same report', () => {
     const svg = successSvg(report);
     expect(svg.match(/<rect [^>]*><title>/g)).toHaveLength(3 * 3);
     expect(svg).toContain('<title>naive precision: ');
+    expect(svg).toContain('>oracle (oracle: reads the ground truth)</text>');
     expect(successSvg(report)).toBe(svg);
   });
 });

@@ -7,7 +7,8 @@ const escape = (text: string) =>
 
 /**
  * A bar chart of the success rate by group, one bar per agent side by side in each group, with
- * the 95 % Wilson interval as a whisker. Plain SVG, no script; the same report gives the same bytes.
+ * the 95 % interval over tasks (a bootstrap over tasks) as a whisker. Plain SVG, no script; the
+ * same report gives the same bytes.
  */
 export function successSvg(report: EvalReport): string {
   const groups = [...reportGroups(report), 'overall'];
@@ -56,7 +57,7 @@ export function successSvg(report: EvalReport): string {
     const ly = legendY + a * 16;
     parts.push(
       `<rect x="${left}" y="${ly - 9}" width="10" height="10" fill="${colour}"/>`,
-      `<text x="${left + 16}" y="${ly}">${escape(agent.agent)}${agent.modelFailure === null ? '' : ' (model failed, see eval.md)'}</text>`,
+      `<text x="${left + 16}" y="${ly}">${escape(agent.agent)}${agent.usesGroundTruth ? ' (oracle: reads the ground truth)' : ''}${agent.modelFailure === null ? '' : ' (model failed, see eval.md)'}</text>`,
     );
   });
   parts.push('</svg>');
