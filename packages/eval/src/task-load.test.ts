@@ -190,9 +190,9 @@ describe('loadTaskFile', () => {
 });
 
 describe('builtinTasks', () => {
-  it('has at least 20 tasks, with tasks in every group', () => {
+  it('has at least 60 tasks, with tasks in every group', () => {
     const tasks = builtinTasks();
-    expect(tasks.length).toBeGreaterThanOrEqual(20);
+    expect(tasks.length).toBeGreaterThanOrEqual(60);
     for (const group of TASK_GROUPS) expect(tasks.some((t) => t.group === group)).toBe(true);
     expect(builtinTasks(['safety']).every((t) => t.group === 'safety')).toBe(true);
   });
