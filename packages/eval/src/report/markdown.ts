@@ -21,9 +21,29 @@ function passKTable(report: EvalReport): string[] {
   ];
 }
 
+/** Each agent's rate by group and overall with the interval over tasks, one row each. */
+function groupTable(report: EvalReport): string[] {
+  const rows = report.scores.agents.flatMap((a) =>
+    [
+      ...a.groups.map((g) => ({ name: g.group as string, s: g.success })),
+      { name: 'overall', s: a.overall },
+    ]
+      .filter((r) => r.s.trials > 0)
+      .map(
+        ({ name, s }) =>
+          `| ${a.agent} | ${name} | ${s.successes}/${s.trials} | ${pct(s.low)}–${pct(s.high)} | ${s.tasks} |`,
+      ),
+  );
+  return [
+    '| agent | group | success | 95 % CI (over tasks) | tasks |',
+    '|---|---|---|---|---|',
+    ...rows,
+  ];
+}
+
 /**
  * The report in Markdown: the summary by group (the overall interval a bootstrap over tasks),
- * pass^k of each agent, the plot (`plotFile`, when written beside it), then each agent's tasks:
+ * pass^k of each agent, each agent's rates by group with their intervals over tasks, the plot (`plotFile`, when written beside it), then each agent's tasks:
  * success over k with the task's 95 % Wilson interval, whether all k passed, collisions, mean
  * final position error, path length over the planner's optimum, calls and refusals. An agent
  * given the ground truth is marked an oracle.
@@ -48,6 +68,8 @@ export function markdownReport(report: EvalReport, options: { plotFile?: string 
       'averaged over the tasks (C(c, k) / C(n, k) per task, c successes of n trials):',
     '',
     ...passKTable(report),
+    '',
+    ...groupTable(report),
     '',
   ];
   if (options.plotFile !== undefined) lines.push(`![Success by group](${options.plotFile})`, '');
