@@ -82,7 +82,7 @@ describe('a chat agent whose model never answers', () => {
     const table = summaryTable(report);
     expect(table).toMatch(/\noracle\s.*\sok$/m);
     expect(table).toMatch(
-      /\nopenai:m\s+-\s+-\s+-\s+\d+\s+0\s+0\s+model failed \(NETWORK\) in 1 trial, 5 not run$/,
+      /\nopenai:m\s+-\s+-\s+-\s+-\s+\d+\s+0\s+0\s+model failed \(NETWORK\) in 1 trial, 5 not run$/,
     );
     expect(table.split('\n').at(-1)).not.toContain('%');
     const markdown = markdownReport(report);
