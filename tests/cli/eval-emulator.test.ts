@@ -48,6 +48,9 @@ describe('hal eval on the emulated robot', () => {
       'precision/turn-right-45',
       'precision/come-back',
       'precision/corner',
+      'precision/l-shape',
+      'precision/drive-2m',
+      'precision/back-then-about-turn',
     ]);
     expect(row?.overall.rate).toBe(1);
 
