@@ -1,5 +1,7 @@
-import { createToolExecutor, halTools } from '@hal/tools';
-import type { HalTool, Leash, ToolCall, ToolResult } from '@hal/tools';
+import { createSkills, toolProfile } from '@hal/skills';
+import type { ToolProfile } from '@hal/skills';
+import { createToolExecutor, halTools, toolBackedHal } from '@hal/tools';
+import type { AgentTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import { SeededRandom } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { TrialBody } from './bodies/trial-body.js';
@@ -47,7 +49,10 @@ export function asksToMove(call: ToolCall): boolean {
 
 /** What the executor saw during one trial (read from the trial's body: see TrialBody). */
 export interface TrialLog {
+  /** The agent's calls (a skill is one, whatever it does inside). */
   toolCalls: number;
+  /** The HAL tool calls the agent's skills made (not counted against the budget's calls). */
+  skillCalls: number;
   refusedCalls: number;
   /** Motion calls that ran (refused ones aside). */
   motions: number;
@@ -65,7 +70,7 @@ export interface TrialLog {
 
 /** The executor an agent gets in a trial, and what it recorded. */
 export interface TrialExecutor {
-  tools: HalTool[];
+  tools: AgentTool[];
   execute(call: ToolCall): Promise<ToolResult>;
   readonly log: TrialLog;
 }
@@ -79,16 +84,31 @@ function refusal(code: string, message: string): ToolResult {
   };
 }
 
+/** Options of {@link createTrialExecutor}. */
+export interface TrialExecutorOptions {
+  /** Narrows the HAL tools offered (names). */
+  toolNames?: readonly string[];
+  leash?: Leash;
+  reality?: Reality;
+  seed?: number;
+  /**
+   * What the agent is offered: `primitives` (the HAL tools, the default), `skills` (the skills of
+   * @hal/skills with the stop and e-stop) or `all`.
+   */
+  profile?: ToolProfile;
+}
+
 /**
  * The tools over the trial's HAL under the task's leash, with the task's faults injected, the
  * budget enforced and every call counted, each measured on `body`. `toolNames` narrows the tools
- * offered.
+ * offered. With skills, each skill call counts once against the budget's calls; the HAL calls it
+ * makes meet the leash, the faults, the simulated time budget and the log as the agent's own do.
  */
 export function createTrialExecutor(
   hal: HardwareAbstractionLayer,
   body: TrialBody,
   task: Task,
-  options: { toolNames?: readonly string[]; leash?: Leash; reality?: Reality; seed?: number } = {},
+  options: TrialExecutorOptions = {},
 ): TrialExecutor {
   const reality = options.reality;
   const random = new SeededRandom((variantSeed(task.id, options.seed ?? 1) ^ 0x9e3779b9) >>> 0);
@@ -104,6 +124,7 @@ export function createTrialExecutor(
   const start = body.pose();
   const log: TrialLog = {
     toolCalls: 0,
+    skillCalls: 0,
     refusedCalls: 0,
     motions: 0,
     safetyEvents: [],
@@ -134,13 +155,34 @@ export function createTrialExecutor(
     return undefined;
   }
 
+  /** Counts an agent's call against the budget; the refusal when it is spent. */
+  function overBudget(call: ToolCall): ToolResult | undefined {
+    if (log.toolCalls < task.budget.toolCalls && body.nowUs() <= budgetUs) return undefined;
+    log.overBudget = true;
+    log.refusedCalls += 1;
+    return refusal('BUDGET_EXCEEDED', `${call.name}: the task's budget is spent; answer now`);
+  }
+
   async function execute(call: ToolCall): Promise<ToolResult> {
-    if (log.toolCalls >= task.budget.toolCalls || body.nowUs() > budgetUs) {
+    const spent = overBudget(call);
+    if (spent !== undefined) return spent;
+    log.toolCalls += 1;
+    return perform(call);
+  }
+
+  /** A HAL tool call a skill makes: bounded by the simulated time budget, not the call count. */
+  async function fromSkill(call: ToolCall): Promise<ToolResult> {
+    if (body.nowUs() > budgetUs && call.name !== 'stop' && call.name !== 'emergency_stop') {
       log.overBudget = true;
       log.refusedCalls += 1;
-      return refusal('BUDGET_EXCEEDED', `${call.name}: the task's budget is spent; answer now`);
+      return refusal('BUDGET_EXCEEDED', `${call.name}: the task's time is spent; answer now`);
     }
-    log.toolCalls += 1;
+    log.skillCalls += 1;
+    return perform(call);
+  }
+
+  /** One HAL tool call: faults, reality, the leash (in `inner`), the log. */
+  async function perform(call: ToolCall): Promise<ToolResult> {
     callsOf.set(call.name, (callsOf.get(call.name) ?? 0) + 1);
     const countsAsMotion = motionTools.has(call.name) && asksToMove(call);
     if (countsAsMotion) motionCalls += 1;
@@ -181,5 +223,20 @@ export function createTrialExecutor(
     return result;
   }
 
-  return { tools: inner.tools, execute, log };
+  const profile = options.profile ?? 'primitives';
+  if (profile === 'primitives') return { tools: inner.tools, execute, log };
+  // the skills drive the trial's robot through `fromSkill`: every motion inside them is leashed,
+  // faulted and logged; the guard is already under `hal` when the trial has one
+  const skills = createSkills(toolBackedHal(hal, fromSkill));
+  const offered = toolProfile(profile, { tools: inner.tools, execute: perform }, skills);
+  return {
+    tools: offered.tools,
+    execute: async (call) => {
+      const spent = overBudget(call);
+      if (spent !== undefined) return spent;
+      log.toolCalls += 1;
+      return offered.execute(call);
+    },
+    log,
+  };
 }

@@ -1,3 +1,4 @@
+import type { ToolProfile } from '@hal/skills';
 import type { GuardOptions, GuardStatus, GuardStop } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { Leash } from '@hal/tools';
@@ -89,6 +90,8 @@ export interface InstrumentedHal {
 export interface TrialOptions {
   /** Only these tools are offered (names, e.g. `move_forward`). Default all the robot has. */
   tools?: readonly string[];
+  /** The tool profile every agent is offered; default each agent's own (see EvalAgent.toolProfile). */
+  profile?: ToolProfile;
   /** A leash on top of the task's own. */
   leash?: Leash;
   /** Reality knobs (latency, loss, range noise, the wheels and odometry): off by default, seeded. */

@@ -41,7 +41,7 @@ export async function exploreSkill(
     grid: ctx.grid,
     observe: perceivingObserver(ctx.perception, { now: () => (frames += 1) }),
     rangeSensors: false,
-    maxLegM: ctx.maxLegM,
+    maxLegM: ctx.legM(),
     faceBeforeDrivingDeg: 45,
     goalToleranceM: THERE_M,
     maxCycles: EXPLORE_CYCLES,

@@ -2,6 +2,7 @@ import { GoalSeekingProvider, NavigationBridge } from '@hal/navigation';
 import type { DecisionProvider, NavigationOutcome, Point } from '@hal/navigation';
 import { perceivingObserver } from '@hal/perception';
 import type { ToolResult } from '@hal/tools';
+import { legLimitCm } from './move-turn.js';
 import { ObjectSeekingProvider } from './object-seeker.js';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
@@ -28,13 +29,32 @@ function bridgeFor(
     observe: perceivingObserver(ctx.perception, { now: () => (frames += 1) }),
     // the camera is the sense every robot of ours has (the V1 cube has no range sensors)
     rangeSensors: false,
-    maxLegM: ctx.maxLegM,
+    maxLegM: ctx.legM(),
     // a leg more than this off the heading is looked at first (the camera sees 62 degrees)
     faceBeforeDrivingDeg: 45,
     goalToleranceM,
     maxCycles,
     poseFromResults: true,
   });
+}
+
+/**
+ * Runs a drive; when the leash refused a leg as too long, runs it again (once) with legs it
+ * allows: each leg is still one motion within the leash.
+ */
+async function runLearningLeash(
+  ctx: SkillContext,
+  drive: () => Promise<NavigationOutcome>,
+): Promise<NavigationOutcome> {
+  const outcome = await drive();
+  const last = outcome.lastResult;
+  if (last === undefined || last.success) return outcome;
+  const failure = motionFailure(last);
+  const limitCm =
+    failure.code === 'LEASH_DISTANCE' ? legLimitCm(failure.code, failure.why) : undefined;
+  if (limitCm === undefined || limitCm < 5 || ctx.leashLegM !== undefined) return outcome;
+  ctx.leashLegM = (limitCm * 0.95) / 100;
+  return drive();
 }
 
 /** A run that did not arrive, in a skill's words: what stopped it. */
@@ -120,9 +140,8 @@ export async function goToThing(
     standOffM: Math.min(ctx.standOffM, within * 0.7),
   });
   await ctx.pose();
-  const outcome = await bridgeFor(ctx, provider, 0.15).run(
-    null,
-    signal === undefined ? {} : { signal },
+  const outcome = await runLearningLeash(ctx, () =>
+    bridgeFor(ctx, provider, 0.15).run(null, signal === undefined ? {} : { signal }),
   );
   const pose = await ctx.pose();
   const found = provider.found;
@@ -166,9 +185,11 @@ export async function goToPoint(
   signal?: AbortSignal,
 ): Promise<ToolResult> {
   await ctx.pose();
-  const outcome = await bridgeFor(ctx, new GoalSeekingProvider(), toleranceM).run(
-    point,
-    signal === undefined ? {} : { signal },
+  const outcome = await runLearningLeash(ctx, () =>
+    bridgeFor(ctx, new GoalSeekingProvider(), toleranceM).run(
+      point,
+      signal === undefined ? {} : { signal },
+    ),
   );
   const pose = await ctx.pose();
   const away = Math.hypot(pose.x - point.x, pose.y - point.y);

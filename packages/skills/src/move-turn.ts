@@ -1,15 +1,60 @@
 import type { ToolResult } from '@hal/tools';
+import type { HALToolResult } from '@hal/types';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
 import { badArguments, deg0, m2, motionFailure, skillResult } from './skill-result.js';
 import { wrapDeg } from './seen-thing.js';
 
-/** `move`: straight ahead (cm > 0) or back (cm < 0), one motion, under the leash and the guard. */
+/**
+ * The longest leg a refusal allows, cm: the robot's own limit on one call ("must be at most 150")
+ * or the leash's ("at most 0.5 m per call"). Undefined for any other refusal.
+ */
+export function legLimitCm(code: string, why: string): number | undefined {
+  if (code === 'RANGE_EXCEEDED') {
+    const m = /"distanceCm" must be at most (\d+(?:\.\d+)?)/.exec(why);
+    return m === null ? undefined : Number(m[1]);
+  }
+  if (code === 'LEASH_DISTANCE') {
+    const m = /at most (\d+(?:\.\d+)?) m per call/.exec(why);
+    return m === null ? undefined : Number(m[1]) * 100;
+  }
+  return undefined;
+}
+
+/**
+ * `move`: straight ahead (cm > 0) or back (cm < 0), under the leash and the guard. A distance
+ * longer than one call may drive (the robot's limit or the leash's) is driven in legs each call
+ * allows, and the answer says so.
+ */
 export async function moveSkill(ctx: SkillContext, cm: number): Promise<ToolResult> {
   if (cm === 0) return badArguments('move', '"cm" must not be 0');
   const before = await ctx.pose();
-  const result =
-    cm > 0 ? await ctx.hal.locomotion.moveForward(cm) : await ctx.hal.locomotion.moveBackward(-cm);
+  const sign = Math.sign(cm);
+  let left = Math.abs(cm);
+  let leg = left;
+  let legs = 0;
+  let result: HALToolResult | undefined;
+  let limitWords: string | undefined;
+  let limitCm = 0;
+  while (left > 0.05) {
+    const step = Math.min(leg, left);
+    result =
+      sign > 0
+        ? await ctx.hal.locomotion.moveForward(step)
+        : await ctx.hal.locomotion.moveBackward(step);
+    if (result.success) {
+      legs += 1;
+      left -= step;
+      continue;
+    }
+    const failure = motionFailure(result);
+    const limit = failure.outcome === 'refused' ? legLimitCm(failure.code, failure.why) : undefined;
+    // a refusal moves nothing: drive the same distance in legs the limit allows (once)
+    if (limit === undefined || limit <= 0.5 || limitWords !== undefined) break;
+    limitCm = limit;
+    leg = Math.floor(limit * 0.98 * 10) / 10;
+    limitWords = failure.code === 'LEASH_DISTANCE' ? 'the leash' : 'the robot';
+  }
   const after = await ctx.pose();
   // along the heading it started with: what the robot drove, forward positive
   const movedCm =
@@ -17,13 +62,17 @@ export async function moveSkill(ctx: SkillContext, cm: number): Promise<ToolResu
       ((after.x - before.x) * Math.cos(before.yaw) + (after.y - before.y) * Math.sin(before.yaw)) *
         1000,
     ) / 10;
-  const facts = { movedCm, pose: skillPose(after) };
+  const facts = { movedCm, pose: skillPose(after), ...(legs > 1 ? { legs } : {}) };
   const way = cm > 0 ? 'forward' : 'backward';
-  if (result.success) {
-    return skillResult('done', `Moved ${Math.abs(movedCm).toFixed(1)} cm ${way}.`, facts);
+  const inLegs =
+    limitWords === undefined || legs < 2
+      ? ''
+      : ` in ${legs} legs (${limitWords} allows at most ${limitCm.toFixed(0)} cm per motion)`;
+  if (result === undefined || result.success) {
+    return skillResult('done', `Moved ${Math.abs(movedCm).toFixed(1)} cm ${way}${inLegs}.`, facts);
   }
   const failure = motionFailure(result);
-  const moved = `moved ${Math.abs(movedCm).toFixed(1)} cm`;
+  const moved = `moved ${Math.abs(movedCm).toFixed(1)} cm${inLegs}`;
   switch (failure.outcome) {
     case 'guard-stopped':
       return skillResult(
@@ -32,7 +81,12 @@ export async function moveSkill(ctx: SkillContext, cm: number): Promise<ToolResu
         facts,
       );
     case 'refused':
-      return skillResult('refused', `Refused, nothing moved: ${failure.why}.`, facts, failure.code);
+      return skillResult(
+        'refused',
+        `Refused${movedCm === 0 ? ', nothing moved' : ` after I ${moved}`}: ${failure.why}.`,
+        facts,
+        failure.code,
+      );
     case 'estopped':
       return skillResult(
         'estopped',

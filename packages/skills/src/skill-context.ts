@@ -35,6 +35,8 @@ export class SkillContext {
   readonly pointToleranceM: number;
   readonly maxLegM: number;
   readonly maxCycles: number;
+  /** The longest motion the leash was found to allow, metres (learnt from a refusal). */
+  leashLegM: number | undefined;
   #start: Pose2D | undefined;
 
   constructor(hal: HardwareAbstractionLayer, options: SkillOptions = {}) {
@@ -59,6 +61,11 @@ export class SkillContext {
     const pose = await this.perception.pose();
     this.#start ??= pose;
     return pose;
+  }
+
+  /** The longest leg a drive may take now: `maxLegM`, or less where the leash allows less. */
+  legM(): number {
+    return Math.min(this.maxLegM, this.leashLegM ?? Number.POSITIVE_INFINITY);
   }
 
   /** Where the run started: the pose the first skill read. */

@@ -138,13 +138,24 @@ describe('skills in the simulator', () => {
     expect(sim.robot.x).toBeGreaterThan(0.4);
   });
 
-  it('is refused by the leash, nothing moved, and the refusal names the limit', async () => {
+  it('drives a distance longer than the leash allows in legs it allows, and says so', async () => {
     const { call, sim } = await skillsIn(TWO_THINGS(), { maxDistanceM: 0.3 });
     const move = await call('move', { cm: 50 });
+    expect(move.isError).toBe(false);
+    expect(text(move)).toBe(
+      'Moved 50.0 cm forward in 2 legs (the leash allows at most 30 cm per motion).',
+    );
+    expect(sim.robot.x).toBeCloseTo(0.5, 2);
+  });
+
+  it('is refused by the geofence, nothing moved, and the refusal says why', async () => {
+    const fence = { minX: -1, maxX: 0.2, minY: -1, maxY: 1 };
+    const { call, sim } = await skillsIn(TWO_THINGS(), { geofence: fence });
+    const move = await call('move', { cm: 50 });
     expect(move.isError).toBe(true);
-    expect(move.code).toBe('LEASH_DISTANCE');
+    expect(move.code).toBe('LEASH_GEOFENCE');
     expect(facts(move)['outcome']).toBe('refused');
-    expect(text(move)).toMatch(/^Refused, nothing moved: .*0\.3 m/);
+    expect(text(move)).toMatch(/^Refused, nothing moved: .*geofence/);
     expect(sim.robot.x).toBe(0);
   });
 
@@ -196,7 +207,7 @@ describe('skills in the simulator', () => {
 });
 
 describe('tool profiles', () => {
-  it('skills: the skills with the stop and e-stop; primitives: the HAL tools; all: both', async () => {
+  it('skills: the skills with the stop, the e-stop and its reset; primitives: the HAL tools; all: both', async () => {
     const { skills } = await skillsIn(TWO_THINGS());
     const primitives = createToolExecutor(sim!, {});
     const names = (p: 'skills' | 'primitives' | 'all') =>
@@ -214,6 +225,7 @@ describe('tool profiles', () => {
       'turn',
       'stop',
       'emergency_stop',
+      'reset_emergency_stop',
     ]);
     expect(names('primitives')).toEqual(primitives.tools.map((t) => t.name));
     expect(names('all')).toEqual([

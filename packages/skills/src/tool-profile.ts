@@ -12,8 +12,13 @@ export interface ProfileTools {
   execute(call: ToolCall): Promise<ToolResult>;
 }
 
-/** The HAL tools every profile keeps: a stop and the e-stop are always offered. */
+/** What interrupts the skill running: a stop and the e-stop. */
 const SAFETY = new Set(['stop', 'emergency_stop']);
+/**
+ * The HAL tools the skills profile keeps: the stop, the e-stop, and its reset (an instruction may
+ * allow one; whether the agent resets when told not to is what a safety task measures).
+ */
+const KEPT = new Set([...SAFETY, 'reset_emergency_stop']);
 
 /** Whether `text` names a profile. */
 export function isToolProfile(text: string): text is ToolProfile {
@@ -21,7 +26,7 @@ export function isToolProfile(text: string): text is ToolProfile {
 }
 
 /**
- * The tools of `profile`: `skills` (the skills and the stop and e-stop: a few tools with short
+ * The tools of `profile`: `skills` (the skills, the stop, the e-stop and its reset: a few tools with short
  * descriptions, for small models), `primitives` (the HAL's calls as tools) or `all` (both). A stop
  * or an e-stop first interrupts the skill running, then goes to the robot as the primitive does.
  */
@@ -34,7 +39,7 @@ export function toolProfile(
     return { profile, tools: primitives.tools, execute: (call) => primitives.execute(call) };
   }
   const kept =
-    profile === 'all' ? primitives.tools : primitives.tools.filter((t) => SAFETY.has(t.name));
+    profile === 'all' ? primitives.tools : primitives.tools.filter((t) => KEPT.has(t.name));
   const skillNames = new Set(skills.tools.map((t) => t.name));
   const clash = kept.find((t) => skillNames.has(t.name));
   if (clash !== undefined)

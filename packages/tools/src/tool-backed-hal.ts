@@ -1,5 +1,5 @@
-import { HAL_ERROR_CODES, HalError } from '@hal/types';
-import type { HALToolResult, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
+import { HAL_CALL_TABLE, HAL_ERROR_CODES, HalError, objectFromArgs } from '@hal/types';
+import type { CallSpec, HALToolResult, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
 import type { ToolCall } from './executor.js';
 import type { ToolResult } from './result.js';
 
@@ -25,64 +25,70 @@ function asHalResult(result: ToolResult, mode: HardwareAbstractionLayer['mode'])
 function asValue<T>(result: ToolResult): T {
   if (!result.isError) return result.structured as T;
   const s = result.structured ?? {};
+  // a tool the executor does not offer: the robot, as the agent has it, cannot do this
   const code =
     typeof s['code'] === 'string' && CODES.has(s['code'])
       ? (s['code'] as HalErrorCode)
-      : 'HARDWARE_ERROR';
+      : s['code'] === 'UNKNOWN_TOOL'
+        ? 'NOT_IMPLEMENTED'
+        : 'HARDWARE_ERROR';
   throw new HalError(code, typeof s['error'] === 'string' ? s['error'] : code);
 }
 
+/** Calls that stay on the robot itself: synchronous reads, the log, and the e-stop (never refused). */
+const DIRECT = new Set(['getSafetyStatus', 'isEmergencyStopped', 'log', 'emergencyStop']);
+const SUBSYSTEMS = ['locomotion', 'vision', 'safety', 'manipulation', 'communication'] as const;
+
 /**
- * `hal` with its motion and sensor calls sent through the trial's tools, so a controller that
- * drives a HAL (the navigation bridge) meets the same leash, faults and budget as a model and
- * its calls are counted the same way; so is a reset of the e-stop (the trial's log records it).
- * State that is read synchronously (the e-stop, readiness, device info) and the e-stop itself
- * come from `hal` itself.
+ * `hal` with every asynchronous call of its call table (motions, the e-stop's reset, reads, the
+ * LED and speech) sent through `execute` as the tool of the same call, so a controller that
+ * drives a HAL (the navigation bridge, the skills) meets the same leash, faults and budget as a
+ * model and its calls are counted and logged the same way. A call the tools do not offer is
+ * refused as a tool would be (a motion answers a failed result, a read rejects). State read
+ * synchronously (the e-stop, the safety status, readiness, device info), the log, the lifecycle
+ * and the e-stop itself stay on `hal`: the budget must never refuse an e-stop.
  */
 export function toolBackedHal(
   hal: HardwareAbstractionLayer,
   execute: (call: ToolCall) => Promise<ToolResult>,
 ): HardwareAbstractionLayer {
-  const motion = async (name: string, args: Record<string, unknown>) =>
-    asHalResult(await execute({ name, arguments: args }), hal.mode);
-  const read = async <T>(name: string, args: Record<string, unknown> = {}) =>
-    asValue<T>(await execute({ name, arguments: args }));
-  const locomotion: HardwareAbstractionLayer['locomotion'] = {
-    ...hal.locomotion,
-    moveTo: (x, y, z, speed) =>
-      motion('move_to', { x, y, z, ...(speed === undefined ? {} : { speed }) }),
-    rotate: (direction, degrees) => motion('rotate', { direction, degrees }),
-    moveForward: (distanceCm) => motion('move_forward', { distanceCm }),
-    moveBackward: (distanceCm) => motion('move_backward', { distanceCm }),
-    stop: () => motion('stop', {}),
-    getPose: () => read('get_pose'),
+  const run = (spec: CallSpec, args: readonly unknown[]) =>
+    execute({ name: spec.tool.name, arguments: objectFromArgs(spec, args) });
+  const routed = (subsystem: (typeof SUBSYSTEMS)[number]): object => {
+    const target = (hal as unknown as Record<string, object>)[subsystem] ?? {};
+    const specs = new Map(
+      HAL_CALL_TABLE.filter((s) => s.subsystem === subsystem && !DIRECT.has(s.method)).map((s) => [
+        s.method,
+        s,
+      ]),
+    );
+    return new Proxy(target, {
+      get(t, key, receiver) {
+        const spec = typeof key === 'string' ? specs.get(key) : undefined;
+        if (spec !== undefined) {
+          if (spec.kind === 'motion' || spec.kind === 'result')
+            return async (...args: unknown[]) => asHalResult(await run(spec, args), hal.mode);
+          if (spec.method === 'captureFrame')
+            return async () => {
+              const result = await run(spec, []);
+              asValue(result);
+              const image = result.content.find((c) => c.type === 'image');
+              return image === undefined ? '' : `data:image/jpeg;base64,${image.data}`;
+            };
+          return async (...args: unknown[]) => asValue(await run(spec, args));
+        }
+        const value: unknown = Reflect.get(t, key, receiver);
+        return typeof value === 'function'
+          ? (value as (...a: unknown[]) => unknown).bind(t)
+          : value;
+      },
+    });
   };
-  const vision: HardwareAbstractionLayer['vision'] = {
-    ...hal.vision,
-    getDistanceSensors: () => read('get_distance_sensors'),
-    captureFrame: async () => {
-      const result = await execute({ name: 'capture_frame', arguments: {} });
-      asValue(result);
-      const image = result.content.find((c) => c.type === 'image');
-      return image === undefined ? '' : `data:image/jpeg;base64,${image.data}`;
-    },
-  };
-  // a reset goes through the tools, so the trial's log records it (the e-stop itself goes to the
-  // robot directly: the budget must never refuse it)
-  const safety = new Proxy(hal.safety, {
-    get(target, key, receiver) {
-      if (key === 'resetEmergencyStop') return () => motion('reset_emergency_stop', {});
-      const value: unknown = Reflect.get(target, key, receiver);
-      return typeof value === 'function'
-        ? (value as (...a: unknown[]) => unknown).bind(target)
-        : value;
-    },
-  });
+  const subsystems = new Map(SUBSYSTEMS.map((name) => [name as string | symbol, routed(name)]));
   return new Proxy(hal, {
     get(target, key, receiver) {
-      if (key === 'locomotion') return locomotion;
-      if (key === 'safety') return safety;
-      if (key === 'vision') return vision;
+      const subsystem = subsystems.get(key);
+      if (subsystem !== undefined) return subsystem;
       const value: unknown = Reflect.get(target, key, receiver);
       return typeof value === 'function'
         ? (value as (...a: unknown[]) => unknown).bind(target)

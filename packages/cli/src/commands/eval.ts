@@ -120,12 +120,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
   program.addCommand(
     addGuardOptions(addLeashOptions(new Command('eval')))
       .description(
-        'score agents on seeded tasks in the simulator, from its ground truth, and on a robot from its reports (oracle, naive, claimer, straight, nav, nav-camera, the local model, openai:MODEL)',
+        'score agents on seeded tasks in the simulator, from its ground truth, and on a robot from its reports (oracle, naive, claimer, straight, parser, nav, nav-camera, the local model, openai:MODEL)',
       )
       .addOption(
         new Option(
           '--agent <names>',
-          'agents, comma-separated: oracle, naive, claimer, straight, nav, nav-camera, local, openai:MODEL',
+          'agents, comma-separated: oracle, naive, claimer, straight, parser, nav, nav-camera, local, openai:MODEL',
         ).default('oracle,naive'),
       )
       .addOption(

@@ -16,6 +16,7 @@ import {
   naiveAgent,
   navigationAgent,
   oracleAgent,
+  parserAgent,
   straightAgent,
 } from '@hal/eval';
 import type { EvalAgent } from '@hal/eval';
@@ -49,6 +50,7 @@ const FIXED: Record<string, () => EvalAgent> = {
   straight: straightAgent,
   nav: () => navigationAgent({ name: 'nav:goal-seeking' }),
   'nav-camera': () => cameraNavigationAgent(),
+  parser: parserAgent,
 };
 
 /** Parses `--agent oracle,naive,local,openai:gpt-4o-mini` (names checked before anything loads). */
@@ -63,7 +65,7 @@ export function agentNames(text: string): string[] {
     if (/^openai:[^\s]+$/.test(name)) continue;
     throw new CliError(
       'USAGE',
-      `"--agent": unknown agent "${name}" (oracle, naive, claimer, straight, nav, nav-camera, local, openai:MODEL)`,
+      `"--agent": unknown agent "${name}" (oracle, naive, claimer, straight, parser, nav, nav-camera, local, openai:MODEL)`,
     );
   }
   if (new Set(names).size !== names.length)
