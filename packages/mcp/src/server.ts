@@ -8,7 +8,7 @@ import {
   ReadResourceRequestSchema,
 } from '@modelcontextprotocol/sdk/types.js';
 import { toMcpTools } from '@hal/tools';
-import type { ToolExecutor } from '@hal/tools';
+import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { robotResources } from './resources.js';
 import type { RobotWorld } from './resources.js';
@@ -17,12 +17,23 @@ import type { RobotWorld } from './resources.js';
 export const SERVER_INFO = { name: 'hal-robot', version: '0.1.0' } as const;
 
 /**
- * An MCP server for one HAL: its tools run through `executor` (validation, timeouts, the leash),
- * and its state, capabilities, map and camera are resources. Connect it to a transport.
+ * The tools a server offers and how it runs them: a `ToolExecutor` of @hal/tools (the HAL's calls),
+ * or a tool profile of @hal/skills (the skills, or both). `execute` never throws.
+ */
+export interface OfferedTools {
+  readonly tools: readonly AgentTool[];
+  execute(call: ToolCall): Promise<ToolResult>;
+}
+
+/**
+ * An MCP server for one HAL: its tools run through `offered` (an executor: validation, timeouts,
+ * the leash; or a profile whose skills call such an executor), and its state, capabilities, map
+ * and camera are resources. Each tool result goes back with its content and, as
+ * `structuredContent`, its facts; refusals and failures with `isError`. Connect it to a transport.
  */
 export function createRobotMcpServer(
   hal: HardwareAbstractionLayer,
-  executor: ToolExecutor,
+  offered: OfferedTools,
   world: RobotWorld = {},
 ): Server {
   const server = new Server(SERVER_INFO, {
@@ -32,16 +43,20 @@ export function createRobotMcpServer(
       'positive; metres and radians unless a name says cm or degrees. Call emergency_stop whenever ' +
       'something looks wrong; it is always allowed.',
   });
-  const resources = () => robotResources(hal, executor.tools, world);
+  const resources = () => robotResources(hal, offered.tools, world);
 
-  server.setRequestHandler(ListToolsRequestSchema, () => ({ tools: toMcpTools(executor.tools) }));
+  server.setRequestHandler(ListToolsRequestSchema, () => ({ tools: toMcpTools(offered.tools) }));
 
   server.setRequestHandler(CallToolRequestSchema, async (request) => {
-    const result = await executor.execute({
+    const result = await offered.execute({
       name: request.params.name,
       arguments: request.params.arguments,
     });
-    return { content: result.content, isError: result.isError };
+    return {
+      content: result.content,
+      isError: result.isError,
+      ...(result.structured === undefined ? {} : { structuredContent: result.structured }),
+    };
   });
 
   server.setRequestHandler(ListResourcesRequestSchema, () => ({

@@ -1,7 +1,7 @@
 // `hal mcp`: the MCP server of @hal/mcp for one robot (any the target options name: the embedded
-// simulator unless one is named), over stdio or streamable HTTP, until Ctrl-C (or, on stdio, until stdin
-// ends). Then the robot is cleaned up, which stops its motors. Its messages go to stderr: on
-// stdio, stdout carries the protocol.
+// simulator unless one is named, maybe in a --world), offering the tools of --tools, over stdio or
+// streamable HTTP, until Ctrl-C (or, on stdio, until stdin ends). Then the robot is cleaned up,
+// which stops its motors. Its messages go to stderr: on stdio, stdout carries the protocol.
 import { Writable } from 'node:stream';
 import type { Readable } from 'node:stream';
 import { Command } from 'commander';
@@ -10,7 +10,6 @@ import { createRobotMcpServer, serveHttp } from '@hal/mcp';
 import type { RobotWorld } from '@hal/mcp';
 import { recordHal } from '@hal/recorder';
 import { SimulationHAL } from '@hal/simulation';
-import { createToolExecutor, halTools } from '@hal/tools';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { listenError } from '../listen-error.js';
@@ -18,10 +17,13 @@ import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options
 import { seeingFrom } from '../seeing.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { cliLogger } from '../logger.js';
+import { readLookWorld, openWorldSimulator } from '../look/look-world.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
+import { offeredTools } from '../mcp/offered-tools.js';
 import { openRecordingFile } from '../output-place.js';
 import { openTarget } from '../target-hal.js';
+import type { OpenedHal } from '../target-hal.js';
 import { aborted } from '../wait.js';
 import type { RegisterCommand } from './context.js';
 
@@ -49,8 +51,8 @@ function outStream(io: CliIO): Writable {
 
 export const registerMcp: RegisterCommand = (program, { io }) => {
   const command = new Command('mcp').description(
-    'MCP server for a robot: the HAL tools, its state, capabilities and map as resources ' +
-      '(the robot the target options name; the embedded simulator when none is named)',
+    'MCP server for a robot: the HAL tools or the skills (--tools), its state, capabilities and ' +
+      'map as resources (the robot the target options name; the embedded simulator when none is named)',
   );
   addMcpOptions(command);
   addGuardOptions(command);
@@ -61,7 +63,8 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     if (!options.http && stdin === undefined) {
       throw new CliError('USAGE', 'MCP over stdio needs a standard input: give --http');
     }
-    // a file that cannot be written is refused before the robot is touched
+    // a world or a file that cannot be used is refused before the robot is touched
+    const world = options.world === undefined ? undefined : await readLookWorld(options.world);
     const recorder =
       options.record === undefined
         ? undefined
@@ -70,21 +73,27 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
             { logger: cliLogger(io, false) },
           );
     const sampling = new AbortController();
-    let opened: Awaited<ReturnType<typeof openTarget>>;
+    let opened: OpenedHal;
     try {
-      opened = await openTarget(target, io, {
-        role: 'control',
-        ...(options.connectTimeoutMs === undefined
-          ? {}
-          : { connectTimeoutMs: options.connectTimeoutMs }),
-      });
+      opened =
+        world !== undefined && target.kind === 'sim'
+          ? await openWorldSimulator(world, io, {
+              speed: target.speed,
+              ...(target.calibration === undefined ? {} : { calibration: target.calibration }),
+            })
+          : await openTarget(target, io, {
+              role: 'control',
+              ...(options.connectTimeoutMs === undefined
+                ? {}
+                : { connectTimeoutMs: options.connectTimeoutMs }),
+            });
     } catch (error) {
       await recorder?.close().catch(() => undefined);
       throw error;
     }
     const robot = opened.hal;
     // the map is known of the embedded simulator only
-    const world: RobotWorld = robot instanceof SimulationHAL ? { map: () => robot.world.map } : {};
+    const arena: RobotWorld = robot instanceof SimulationHAL ? { map: () => robot.world.map } : {};
     // the guard sits between the leash (the executor) and the robot
     const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false, target);
     recordGuard(guard, recorder);
@@ -96,16 +105,22 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
         : recordHal(seeing, recorder, {
             signal: sampling.signal,
             deviceId: opened.deviceId,
-            ...(target.kind === 'sim' ? { map: { name: target.map } } : {}),
+            ...(world !== undefined
+              ? { map: { world: world.file } }
+              : target.kind === 'sim'
+                ? { map: { name: target.map } }
+                : {}),
           });
     let close: () => Promise<void> = async () => undefined;
     try {
-      const executor = createToolExecutor(hal, {
-        tools: halTools(hal),
+      // once for the run: over HTTP each request has a server of its own, the skills one memory
+      const offered = offeredTools(hal, {
+        profile: options.profile,
         leash: options.leash,
         ...(options.timeoutMs === undefined ? {} : { timeoutMs: options.timeoutMs }),
       });
-      const create = () => createRobotMcpServer(hal, executor, world);
+      const create = () => createRobotMcpServer(hal, offered, arena);
+      const serving = `${hal.mode} robot, ${options.profile} tools`;
       if (options.http) {
         const endpoint = await serveHttp(create, {
           host: options.host,
@@ -120,13 +135,13 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
           });
         });
         close = endpoint.close;
-        io.err(`hal mcp: ${hal.mode} robot, MCP over HTTP at ${endpoint.url}\n`);
+        io.err(`hal mcp: ${serving}, MCP over HTTP at ${endpoint.url}\n`);
         await aborted(io.signal);
       } else {
         const server = create();
         await server.connect(new StdioServerTransport(stdin, outStream(io)));
         close = () => server.close();
-        io.err(`hal mcp: ${hal.mode} robot, MCP over stdio\n`);
+        io.err(`hal mcp: ${serving}, MCP over stdio\n`);
         await clientGone(stdin!, io.signal);
       }
     } finally {

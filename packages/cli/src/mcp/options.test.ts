@@ -14,9 +14,10 @@ function parseCli(argv: string[], env: Record<string, string | undefined> = {}) 
 const usage = expect.objectContaining({ name: 'CliError', code: 'USAGE', exitCode: 2 });
 
 describe('hal mcp options', () => {
-  it('defaults to the simulator over stdio, HTTP on 127.0.0.1:3333 when asked', () => {
+  it('defaults to the simulator over stdio with the HAL tools, HTTP on 127.0.0.1:3333 when asked', () => {
     expect(parseCli([])).toEqual({
       target: { kind: 'sim', map: 'empty', speed: 1 },
+      profile: 'primitives',
       http: false,
       host: '127.0.0.1',
       port: 3333,
@@ -63,6 +64,17 @@ describe('hal mcp options', () => {
     });
   });
 
+  it('offers the tools of the profile --tools names, and starts the simulator in a --world', () => {
+    expect(parseCli(['--tools', 'skills']).profile).toBe('skills');
+    expect(parseCli(['--tools', 'all']).profile).toBe('all');
+    expect(parseCli(['--tools', 'primitives']).profile).toBe('primitives');
+    expect(parseCli(['--world', 'w.json'])).toMatchObject({
+      target: { kind: 'sim' },
+      world: 'w.json',
+    });
+    expect(parseCli(['--sim', '--world', 'w.json']).world).toBe('w.json');
+  });
+
   it('reads the HTTP token from --http-token or $HAL_MCP_TOKEN', () => {
     expect(parseCli(['--http-token', 't'.repeat(16)]).token).toBe('t'.repeat(16));
     expect(parseCli([], { HAL_MCP_TOKEN: 'e'.repeat(16) }).token).toBe('e'.repeat(16));
@@ -92,6 +104,16 @@ describe('hal mcp options', () => {
       [['--geofence', '1,0,0,1'], /"--geofence" is minX,maxX,minY,maxY/],
       [['--max-distance', 'far'], /"--max-distance" must be a distance/],
       [['--timeout', '5'], '"--timeout" must be an integer in 100..600000, got "5"'],
+      [
+        ['--tools', 'move_forward'],
+        '"--tools" must be one of skills, primitives, all, got "move_forward"',
+      ],
+      [['--tools', ''], '"--tools" must be one of skills, primitives, all, got ""'],
+      [['--world', 'w.json', '--udp', 'x'], '"--world" needs the simulator (--sim)'],
+      [
+        ['--world', 'w.json', '--map', 'maze'],
+        '"--world" and "--map" both name the world: give one',
+      ],
       [
         ['--http', '--host', '0.0.0.0'],
         /"--host" 0.0.0.0 is reachable from other machines: give --http-token/,

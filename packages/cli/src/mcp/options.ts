@@ -1,8 +1,11 @@
 // The options of `hal mcp`: the robot (the target options every command takes, the embedded
-// simulator when none is named), how to serve (stdio, or HTTP at --host/--port with
-// --http-token), the leash, and --record. Parsing only; commands/mcp.ts runs the server.
+// simulator when none is named, maybe in a --world), how to serve (stdio, or HTTP at --host/--port
+// with --http-token), the tools offered (--tools), the leash, and --record. Parsing only;
+// commands/mcp.ts runs the server.
 import { Option } from 'commander';
 import type { Command } from 'commander';
+import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
+import type { ToolProfile } from '@hal/skills';
 import type { Leash } from '@hal/tools';
 import { isLoopback } from '@hal/types';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
@@ -19,6 +22,10 @@ export const DEFAULT_MCP_HTTP_PORT = 3333;
 export interface McpOptions {
   /** The robot served. */
   target: Target;
+  /** The world file the embedded simulator starts in (eval task format). */
+  world?: string;
+  /** The tools offered: the HAL's calls (`primitives`), the skills, or `all`. */
+  profile: ToolProfile;
   /** Give up connecting to the robot after this long, ms. */
   connectTimeoutMs?: number;
   /** Serve streamable HTTP instead of stdio. */
@@ -37,6 +44,8 @@ export interface McpOptions {
 
 /** The options as commander parses them. */
 export interface McpCliOptions extends TargetCliOptions, LeashCliOptions {
+  tools: string;
+  world?: string;
   http: boolean;
   host: string;
   port: number;
@@ -49,6 +58,18 @@ export interface McpCliOptions extends TargetCliOptions, LeashCliOptions {
 /** Adds the options of `hal mcp` to `command`. */
 export function addMcpOptions(command: Command): Command {
   command
+    .addOption(
+      new Option(
+        '--tools <profile>',
+        'the tools offered: primitives (the HAL calls), skills (look, find, go_to, ...: few tools, for small models) or all',
+      ).default('primitives'),
+    )
+    .addOption(
+      new Option(
+        '--world <file>',
+        'with --sim: the world the simulator starts in, in the eval task format ({ map, start, objects })',
+      ),
+    )
     .option('--http', 'serve streamable HTTP instead of stdio', false)
     .option('--host <address>', 'HTTP address; any but loopback needs --http-token', '127.0.0.1')
     .addOption(
@@ -74,16 +95,29 @@ export function addMcpOptions(command: Command): Command {
   return addTargetOptions(command);
 }
 
+/** `--tools`: a profile's name, or USAGE listing the three. */
+export function profileArg(text: string): ToolProfile {
+  if (isToolProfile(text)) return text;
+  throw usageError(`"--tools" must be one of ${TOOL_PROFILES.join(', ')}, got "${text}"`);
+}
+
 /**
  * What the parsed options ask for: the robot they name (the embedded simulator when none),
- * `$HAL_MCP_TOKEN` for the HTTP token. USAGE for a robot named twice, or HTTP beyond loopback
- * without a token of 16 characters or more.
+ * `$HAL_MCP_TOKEN` for the HTTP token. USAGE for a robot named twice, a tool profile that is none,
+ * a --world beside --map or another robot than the simulator, or HTTP beyond loopback without a
+ * token of 16 characters or more.
  */
 export function mcpOptions(
   o: McpCliOptions,
   env: Readonly<Record<string, string | undefined>>,
 ): McpOptions {
   const target = resolveTarget(namesTarget(o) ? o : { ...o, sim: true }, env);
+  const profile = profileArg(o.tools);
+  if (o.world !== undefined) {
+    if (target.kind !== 'sim') throw usageError('"--world" needs the simulator (--sim)');
+    if (o.map !== undefined)
+      throw usageError('"--world" and "--map" both name the world: give one');
+  }
   const token = o.httpToken ?? env['HAL_MCP_TOKEN'];
   const hasToken = token !== undefined && token !== '';
   if (o.http && !isLoopback(o.host) && (!hasToken || token.length < 16)) {
@@ -93,6 +127,8 @@ export function mcpOptions(
   }
   return {
     target,
+    ...(o.world === undefined ? {} : { world: o.world }),
+    profile,
     ...(o.connectTimeout === undefined ? {} : { connectTimeoutMs: o.connectTimeout }),
     http: o.http,
     host: o.host,
