@@ -167,7 +167,45 @@ describe('hal eval', () => {
     expect(await run(knobs)).toEqual(real);
   });
 
+  it('offers every agent the profile --tools names: naive finds no move_forward among the skills', async () => {
+    const run = async (tools: string[]) => {
+      const io = captureIO();
+      const args = ['--agent', 'naive', '--tasks', 'precision', '--trials', '1', ...tools];
+      expect(await runHal(['--json', 'eval', ...args], io), io.stderr()).toBe(0);
+      return (io.jsonLines()[0] as EvalReport).scores.agents[0];
+    };
+    const own = await run([]);
+    const primitives = await run(['--tools', 'primitives']);
+    const skills = await run(['--tools', 'skills']);
+    // naive's own profile is the HAL tools: naming it changes nothing
+    expect(own?.overall.rate).toBeGreaterThan(0);
+    expect(primitives?.trials).toEqual(own?.trials);
+    // its move_forward is no tool of the skills profile (UNKNOWN_TOOL): it never moves
+    expect(skills?.overall.rate).toBe(0);
+    expect(skills?.trials.length).toBe(own?.trials.length);
+    for (const trial of skills?.trials ?? []) {
+      expect(trial.toolCalls).toBeGreaterThan(0);
+      expect(trial.pathLengthM).toBe(0);
+    }
+  }, 120_000);
+
+  it('still narrows the HAL tools to the names --tools lists', async () => {
+    const io = captureIO();
+    const args = ['--agent', 'naive', '--tasks-file', join(dir, 'names.json'), '--trials', '1'];
+    await writeFile(join(dir, 'names.json'), JSON.stringify(oneTask));
+    expect(await runHal(['--json', 'eval', ...args, '--tools', 'get_pose'], io), io.stderr()).toBe(
+      0,
+    );
+    const [trial] = (io.jsonLines()[0] as EvalReport).scores.agents[0]?.trials ?? [];
+    // move_forward is not offered: the drive fails
+    expect(trial).toMatchObject({ success: false, pathLengthM: 0 });
+  }, 60_000);
+
   it.each([
+    [
+      ['--tools', 'skills,move_forward'],
+      /"--tools": "skills" is a profile: give a profile alone \(skills, primitives, all\) or tool names, not both/,
+    ],
     [['--wheel-slip', '60'], /"--wheel-slip" must be a number in 0\.\.50 %, got "60"/],
     [['--time-scale', '10'], /"--time-scale" needs a robot/],
     [['--on', 'sim', '--key', 'abcd'], /"--key" needs a robot --on udp/],

@@ -11,6 +11,8 @@ import {
   TASK_GROUPS,
 } from '@hal/eval';
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
+import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
+import type { ToolProfile } from '@hal/skills';
 import { addGuardOptions, guardSettingsFromOptions } from '../guard-options.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
@@ -70,6 +72,28 @@ function groupList(text: string | undefined): TaskGroup[] {
       throw new CliError('USAGE', `"--tasks": unknown group "${g}" (${TASK_GROUPS.join(', ')})`);
   }
   return groups as TaskGroup[];
+}
+
+/**
+ * `--tools`: the profile every agent is offered (skills, primitives, all), or the names of the
+ * HAL tools offered, comma-separated (what `--tools` took before there were profiles). USAGE for
+ * a profile named among tool names.
+ */
+function toolsChoice(text: string | undefined): { profile?: ToolProfile; names?: string[] } {
+  if (text === undefined) return {};
+  const trimmed = text.trim();
+  if (isToolProfile(trimmed)) return { profile: trimmed };
+  const names = trimmed
+    .split(',')
+    .map((t) => t.trim())
+    .filter((t) => t !== '');
+  const profile = names.find(isToolProfile);
+  if (profile !== undefined)
+    throw new CliError(
+      'USAGE',
+      `"--tools": "${profile}" is a profile: give a profile alone (${TOOL_PROFILES.join(', ')}) or tool names, not both`,
+    );
+  return { names };
 }
 
 const SENSORS = { camera: 'camera', range: 'rangeSensors', imu: 'imu' } as const;
@@ -194,7 +218,12 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
           'exit 1 when an agent succeeds on less than this fraction of trials (0..1)',
         ).argParser(numberArg('--min-success', { min: 0, max: 1 })),
       )
-      .addOption(new Option('--tools <names>', 'offer only these tools, comma-separated'))
+      .addOption(
+        new Option(
+          '--tools <profile|names>',
+          "the tools every agent is offered: a profile, skills, primitives or all (default each agent's own: parser and local skills, the others primitives), or only these HAL tools, comma-separated",
+        ),
+      )
       .addOption(new Option('--system-prompt <text>', "replaces the model agents' system prompt"))
       .addOption(
         new Option(
@@ -275,6 +304,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         const g = global();
         const names = agentNames(options.agent);
         const places = parsePlaces(options.on);
+        const { profile, names: tools } = toolsChoice(options.tools);
         const robotNamed = places.some((p) => p.kind !== 'sim');
         if (!robotNamed && options.timeScale !== undefined)
           throw new CliError('USAGE', '"--time-scale" needs a robot: --on emulator or udp://...');
@@ -332,10 +362,6 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             ? {}
             : { odometryNoisePct: options.odometryNoise }),
         };
-        const tools = options.tools
-          ?.split(',')
-          .map((t) => t.trim())
-          .filter((t) => t !== '');
         if (names.includes('local')) progress(io, g, 'loading the local model...');
         const built = await buildAgents(
           names,
@@ -377,6 +403,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
             ...(recording === undefined ? {} : { instrument: recording.instrument }),
             robots: opened.robots,
             ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
+            ...(profile === undefined ? {} : { profile }),
             ...(sensors === undefined ? {} : { sensors }),
             ...(Object.keys(leash).length === 0 ? {} : { leash }),
             guard,
