@@ -155,7 +155,7 @@ describe('hal mcp', () => {
     });
   }, 120_000);
 
-  it('offers the HAL tools and the skills with --tools all, the HAL tools alone by default', async () => {
+  it('offers both with --tools all, the HAL tools alone by default, and says when the skills cannot see', async () => {
     await withServer(['--tools', 'all'], async (client) => {
       const names = (await client.listTools()).tools.map((tool) => tool.name);
       expect(names).toEqual(expect.arrayContaining(['go_to', 'look', 'move_forward', 'get_pose']));
@@ -164,8 +164,16 @@ describe('hal mcp', () => {
       // a HAL tool's facts are the JSON its text carries
       expect(pose.facts).toEqual(JSON.parse(pose.text));
     });
+    // a robot with no camera: said once on stderr; a skill that looks answers an error
+    const blind = join(dir, 'no-camera.json');
+    await writeFile(blind, JSON.stringify({ ...RED_BOX_AHEAD, sensors: { camera: false } }));
+    await withServer(['--tools', 'skills', '--world', blind], async (client, stderr) => {
+      expect(stderr()).toContain('hal mcp: the robot has no camera: the skills that look');
+      expect(await call(client, 'look')).toMatchObject({ isError: true });
+    });
     await withServer([], async (client, stderr) => {
       expect(stderr()).toContain('primitives tools');
+      expect(stderr()).not.toContain('no camera');
       const names = (await client.listTools()).tools.map((tool) => tool.name);
       expect(names).toContain('move_forward');
       expect(names).not.toContain('go_to');

@@ -10,6 +10,7 @@ import { createRobotMcpServer, serveHttp } from '@hal/mcp';
 import type { RobotWorld } from '@hal/mcp';
 import { recordHal } from '@hal/recorder';
 import { SimulationHAL } from '@hal/simulation';
+import { CAPABILITIES, hasCapability } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { listenError } from '../listen-error.js';
@@ -121,6 +122,14 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
       });
       const create = () => createRobotMcpServer(hal, offered, arena);
       const serving = `${hal.mode} robot, ${options.profile} tools`;
+      if (
+        options.profile !== 'primitives' &&
+        !hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.camera)
+      ) {
+        io.err(
+          'hal mcp: the robot has no camera: the skills that look (look, find, go_to or face a named thing, explore) cannot see\n',
+        );
+      }
       if (options.http) {
         const endpoint = await serveHttp(create, {
           host: options.host,
