@@ -20,6 +20,14 @@ describe('replySchema', () => {
     expect(schema.oneOf.at(-1)).toMatchObject({ required: ['answer'] });
   });
 
+  it('without the answer: a reply that must call a tool, and a refusal when there is none to call', () => {
+    const tools = toOpenAITools(halTools(new SimulationHAL({ world: new World() })));
+    const schema = replySchema(tools, undefined, { answer: false });
+    expect(schema.oneOf).toHaveLength(tools.length);
+    expect(JSON.stringify(schema)).not.toContain('"answer"');
+    expect(() => replySchema([], undefined, { answer: false })).toThrow(LocalModelError);
+  });
+
   it('leaves numeric bounds to the tool (the grammar cannot hold them) and keeps types', () => {
     const schema = replySchema([
       tool('move_forward', {

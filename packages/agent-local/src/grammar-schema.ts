@@ -140,6 +140,7 @@ export const DEFAULT_ANSWER_MAX_LENGTH = 240;
 export function replySchema(
   tools: readonly ChatTool[],
   answerMaxLength = DEFAULT_ANSWER_MAX_LENGTH,
+  shape: { answer: boolean } = { answer: true },
 ): GbnfJsonOneOfSchema {
   const calls = tools.map(({ function: fn }) => {
     let parameters: Json;
@@ -172,5 +173,7 @@ export function replySchema(
     additionalProperties: false,
   };
   // The shapes are checked above; node-llama-cpp's schema type is a deep literal type.
-  return { oneOf: [...calls, answer] } as unknown as GbnfJsonOneOfSchema;
+  if (!shape.answer && calls.length === 0)
+    throw new LocalModelError('CONFIG', 'a reply that must call a tool needs a tool to call');
+  return { oneOf: shape.answer ? [...calls, answer] : calls } as unknown as GbnfJsonOneOfSchema;
 }

@@ -74,3 +74,31 @@ describe('fitHistory', () => {
     expect(text).not.toContain('base64');
   });
 });
+
+describe('fitHistory with worked examples', () => {
+  const example = {
+    goal: 'drive forward 45 cm',
+    calls: [{ tool: 'move', arguments: { cm: 45 }, result: 'Moved 45.0 cm forward.' }],
+    answer: 'I drove 45 cm forward.',
+  };
+
+  it('shows each example as turns of the model before the goal: its call, the result, its answer', () => {
+    const { history } = fitHistory(conversation.slice(0, 2), 'SYSTEM', 1000, words, [example]);
+    expect(history.slice(0, 6)).toEqual([
+      { type: 'system', text: 'SYSTEM' },
+      { type: 'user', text: 'drive forward 45 cm' },
+      { type: 'model', response: ['{"tool":"move","arguments":{"cm":45}}'] },
+      { type: 'user', text: 'Result of move: Moved 45.0 cm forward.' },
+      { type: 'model', response: ['{"answer":"I drove 45 cm forward."}'] },
+      { type: 'user', text: 'drive forward 10 cm' },
+    ]);
+  });
+
+  it('counts the examples in the budget that must fit, and says so when they do not', () => {
+    expect(() => fitHistory(conversation.slice(0, 2), 'SYSTEM', 30, words, [example])).toThrow(
+      /the system prompt, its examples and goal need about \d+ tokens/,
+    );
+    // the same without the example fits
+    expect(fitHistory(conversation.slice(0, 2), 'SYSTEM', 30, words).droppedMessages).toBe(0);
+  });
+});

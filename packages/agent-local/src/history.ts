@@ -58,6 +58,34 @@ function itemOf(
   }
 }
 
+/**
+ * A worked example the model reads before the conversation, as chat turns of its own (a tiny
+ * model copies a pattern from earlier turns far better than it follows a description).
+ */
+export interface ExampleRun {
+  /** What the user asks. */
+  goal: string;
+  /** The model's tool calls, each with the result it got, in order. */
+  calls: ReadonlyArray<{ tool: string; arguments: Record<string, unknown>; result: string }>;
+  /** The model's final answer. */
+  answer: string;
+}
+
+/** An example run as history items: the goal, each call and its result, the answer. */
+function exampleItems(example: ExampleRun): Array<{ type: 'user' | 'model'; text: string }> {
+  return [
+    { type: 'user', text: example.goal },
+    ...example.calls.flatMap((call) => [
+      {
+        type: 'model' as const,
+        text: JSON.stringify({ tool: call.tool, arguments: call.arguments }),
+      },
+      { type: 'user' as const, text: `Result of ${call.tool}: ${call.result}` },
+    ]),
+    { type: 'model', text: JSON.stringify({ answer: example.answer }) },
+  ];
+}
+
 /** The history to generate from, and how many messages were left out to fit. */
 export interface FittedHistory {
   history: ChatHistoryItem[];
@@ -76,6 +104,7 @@ export function fitHistory(
   system: string,
   budgetTokens: number,
   countTokens: (text: string) => number,
+  examples: readonly ExampleRun[] = [],
 ): FittedHistory {
   const toolNames = new Map<string, string>();
   for (const m of messages)
@@ -85,11 +114,15 @@ export function fitHistory(
   const cost = (text: string) => countTokens(text) + TEMPLATE_TOKENS;
   const items = rest.map((m) => itemOf(m, toolNames));
   const costs = items.map((item) => cost(item.text));
-  const fixed = cost(system) + (goal === undefined ? 0 : cost(itemOf(goal, toolNames).text));
+  const shown = examples.flatMap(exampleItems);
+  const fixed =
+    cost(system) +
+    shown.reduce((sum, item) => sum + cost(item.text), 0) +
+    (goal === undefined ? 0 : cost(itemOf(goal, toolNames).text));
   if (fixed > budgetTokens) {
     throw new LocalModelError(
       'CONFIG',
-      `the system prompt and goal need about ${fixed} tokens, more than the ${budgetTokens} the context window leaves for them: give a larger context size`,
+      `the system prompt${examples.length > 0 ? ', its examples' : ''} and goal need about ${fixed} tokens, more than the ${budgetTokens} the context window leaves for them: give a larger context size`,
     );
   }
   let start = 0;
@@ -108,6 +141,7 @@ export function fitHistory(
     else if (type === 'user') history.push({ type: 'user', text });
     else history.push({ type: 'model', response: [text] });
   };
+  for (const item of shown) push(item.type, item.text);
   const goalText = goal === undefined ? '' : itemOf(goal, toolNames).text;
   if (goal !== undefined) push('user', goalText);
   for (const item of items.slice(start)) push(item.type, item.text);

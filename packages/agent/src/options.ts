@@ -30,7 +30,7 @@ export interface AgentCaps {
 
 /** Runs the tool calls: `createToolExecutor(hal)` from `@hal/tools`, or your own. */
 export interface AgentToolExecutor {
-  tools: AgentTool[];
+  tools: readonly AgentTool[];
   /** Runs one call; never throws (errors are results the model reads). */
   execute(call: ToolCall): Promise<ToolResult>;
 }

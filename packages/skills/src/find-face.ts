@@ -4,7 +4,7 @@ import type { ToolResult } from '@hal/tools';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
 import { describeThing, seenFrom, wrapDeg } from './seen-thing.js';
-import { badArguments, m2, motionFailure, skillResult } from './skill-result.js';
+import { badArguments, motionFailure, skillResult } from './skill-result.js';
 import { TARGET_HELP, targetOf } from './target.js';
 
 /** The turn between two looks while searching, degrees (the camera sees 62 across). */
@@ -75,49 +75,38 @@ export async function findSkill(ctx: SkillContext, target: string): Promise<Tool
 }
 
 /**
- * `face`: turns on the spot to face the named thing (the one the memory knows best, else one in
- * view now) or the point (x, y).
+ * `face`: turns on the spot to face the named thing: the one the memory knows best, else one in
+ * view now.
  */
-export async function faceSkill(
-  ctx: SkillContext,
-  to: { target?: string; x?: number; y?: number },
-): Promise<ToolResult> {
+export async function faceSkill(ctx: SkillContext, target: string): Promise<ToolResult> {
+  const named = targetOf(target);
+  if (named === undefined) return badArguments('face', TARGET_HELP);
   let pose = await ctx.pose();
-  let bearing: number;
-  let what: string;
-  if (to.target !== undefined) {
-    const named = targetOf(to.target);
-    if (named === undefined) return badArguments('face', TARGET_HELP);
-    let known = ctx.memory.find(named.query)[0];
-    if (known === undefined) {
-      await ctx.perception.look();
-      known = ctx.memory.find(named.query)[0];
-    }
-    if (known === undefined) {
-      return skillResult(
-        'not-found',
-        `I have not seen a ${named.query}; use find or explore first.`,
-        { pose: skillPose(pose) },
-      );
-    }
-    bearing = seenFrom(known, pose).bearingDeg;
-    what = `the ${known.id}`;
-  } else {
-    const { x, y } = to as { x: number; y: number };
-    bearing = bearingTo(pose, x, y);
-    what = `(${m2(x)}, ${m2(y)})`;
+  let known = ctx.memory.find(named.query)[0];
+  if (known === undefined) {
+    await ctx.perception.look();
+    known = ctx.memory.find(named.query)[0];
   }
-  const failure = await turnBy(ctx, bearing);
+  if (known === undefined) {
+    return skillResult(
+      'not-found',
+      `I have not seen a ${named.query}; use find or explore first.`,
+      {
+        pose: skillPose(pose),
+      },
+    );
+  }
+  const failure = await turnBy(ctx, seenFrom(known, pose).bearingDeg);
   pose = await ctx.pose();
   if (failure !== undefined) {
     return skillResult(
       failure.outcome === 'guard-stopped' ? 'failed' : failure.outcome,
-      `Could not turn to face ${what} (${failure.code}): ${failure.why}.`,
+      `Could not turn to face the ${known.id} (${failure.code}): ${failure.why}.`,
       { pose: skillPose(pose) },
       failure.code,
     );
   }
-  return skillResult('done', `Facing ${what}.`, { pose: skillPose(pose) });
+  return skillResult('done', `Facing the ${known.id}.`, { pose: skillPose(pose) });
 }
 
 /** The bearing of (x, y) from `pose`, degrees, left positive. */

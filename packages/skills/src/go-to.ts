@@ -134,6 +134,8 @@ export async function goToThing(
   const named = targetOf(target);
   if (named === undefined) return badArguments('go_to', TARGET_HELP);
   const within = withinM ?? OBJECT_WITHIN_M;
+  // a first look: it fails at once, and says why, on a robot that cannot see
+  await ctx.perception.look();
   const provider = new ObjectSeekingProvider({
     target: { ...named, withinM: within },
     memory: ctx.memory,

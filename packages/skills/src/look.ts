@@ -46,7 +46,25 @@ function thingsOf(looks: readonly Look[], pose: Pose2D): SeenThing[] {
 
 function clearWords(clear: Clear): string {
   const behind = clear.behindM === undefined ? '' : `, behind ${m2(clear.behindM)} m`;
-  return `Clear floor: ahead ${m2(clear.aheadM)} m, left ${m2(clear.leftM)} m, right ${m2(clear.rightM)} m${behind}.`;
+  // the side with more clear floor, when the two differ by more than the estimate's error
+  const open =
+    Math.abs(clear.leftM - clear.rightM) < 0.2
+      ? ''
+      : ` More open: ${clear.leftM > clear.rightM ? 'left' : 'right'}.`;
+  return `Clear floor: ahead ${m2(clear.aheadM)} m, left ${m2(clear.leftM)} m, right ${m2(clear.rightM)} m${behind}.${open}`;
+}
+
+/** "2 boxes and 1 pillar": how many of each kind, for a count a small model need not make. */
+export function countWords(things: readonly SeenThing[]): string {
+  const n = (kind: SeenThing['kind']) => things.filter((t) => t.kind === kind).length;
+  const parts: string[] = [];
+  const boxes = n('box');
+  const pillars = n('pillar');
+  const other = n('unknown');
+  if (boxes > 0) parts.push(`${boxes} box${boxes === 1 ? '' : 'es'}`);
+  if (pillars > 0) parts.push(`${pillars} pillar${pillars === 1 ? '' : 's'}`);
+  if (other > 0) parts.push(`${other} other thing${other === 1 ? '' : 's'}`);
+  return parts.join(' and ');
 }
 
 /**
@@ -105,7 +123,7 @@ export async function lookSkill(ctx: SkillContext, around: boolean): Promise<Too
   const seen =
     things.length === 0
       ? 'I see no coloured object all round.'
-      : `All round I see ${describeThings(things)}.`;
+      : `All round I see ${countWords(things)}: ${describeThings(things)}.`;
   const turnedBack = back.success
     ? ''
     : ' The last turn back failed: I may not face the way I did.';

@@ -1,6 +1,7 @@
 import type { ToolResult } from '@hal/tools';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
+import { countWords } from './look.js';
 import { describeThings, seenFrom } from './seen-thing.js';
 import { badArguments, skillResult } from './skill-result.js';
 import { TARGET_HELP, targetOf } from './target.js';
@@ -33,6 +34,6 @@ export async function whatHaveYouSeenSkill(ctx: SkillContext): Promise<ToolResul
   const text =
     objects.length === 0
       ? 'I have seen no coloured object yet.'
-      : `I have seen ${objects.length} thing${objects.length === 1 ? '' : 's'}: ${describeThings(objects)}.`;
+      : `I have seen ${countWords(objects)}: ${describeThings(objects)}.`;
   return skillResult('done', text, { objects, pose: skillPose(pose) });
 }

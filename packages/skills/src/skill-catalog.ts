@@ -10,16 +10,12 @@ export const SKILL_PARAMETERS = {
   look: z.object({ around: z.boolean().optional() }).strict(),
   find: z.object({ target: Target }).strict(),
   go_to: z
-    .object({
-      target: Target.optional(),
-      x: Metres.optional(),
-      y: Metres.optional(),
-      withinCm: z.number().finite().min(5).max(200).optional(),
-    })
+    .object({ target: Target, withinCm: z.number().finite().min(5).max(200).optional() })
     .strict(),
-  face: z
-    .object({ target: Target.optional(), x: Metres.optional(), y: Metres.optional() })
+  go_to_point: z
+    .object({ x: Metres, y: Metres, withinCm: z.number().finite().min(1).max(100).optional() })
     .strict(),
+  face: z.object({ target: Target }).strict(),
   explore: z.object({}).strict(),
   where_is: z.object({ target: Target }).strict(),
   what_have_you_seen: z.object({}).strict(),
@@ -34,10 +30,20 @@ export type SkillName = keyof typeof SKILL_PARAMETERS;
 /** Every skill, in the order they are offered. */
 export const SKILL_NAMES = Object.keys(SKILL_PARAMETERS) as SkillName[];
 
-const target = { type: 'string', description: 'a colour and kind, e.g. "red box"', maxLength: 60 };
+const COLOURS = ['red', 'orange', 'yellow', 'green', 'blue', 'purple'] as const;
+/**
+ * A thing's name as the JSON Schema offers it: a colour and a kind, or a colour alone. An enum,
+ * so a model (and a small model's grammar) names only what perception can find; the skills also
+ * read looser words ("the red one") when a client sends them.
+ */
+const target = {
+  type: 'string',
+  description: 'what to look for: a colour and a kind',
+  enum: [...COLOURS.flatMap((c) => [`${c} box`, `${c} pillar`]), ...COLOURS],
+};
 const metres = (axis: string) => ({
   type: 'number',
-  description: `${axis} of the point, metres (odometry frame: where you started is 0, 0)`,
+  description: `${axis}, metres, in the frame the task gives points in (your pose's)`,
   minimum: -50,
   maximum: 50,
 });
@@ -73,24 +79,31 @@ export const SKILL_TOOLS: Readonly<Record<SkillName, AgentTool>> = {
   go_to: {
     name: 'go_to',
     description:
-      'Drive to a named thing (target; stops about 25 cm before it, or withinCm) or to a point (x, y), avoiding what the camera sees. Finds the thing first if needed.',
-    inputSchema: object({
-      target,
-      x: metres('x'),
-      y: metres('y'),
-      withinCm: {
-        type: 'number',
-        description: 'stop this near the thing, cm',
-        minimum: 5,
-        maximum: 200,
+      'Drive to a named thing and stop about 25 cm before it (or withinCm), avoiding what the camera sees. Looks for it first if needed.',
+    inputSchema: object(
+      {
+        target,
+        withinCm: {
+          type: 'number',
+          description: 'stop this near it, cm',
+          minimum: 5,
+          maximum: 200,
+        },
       },
-    }),
+      ['target'],
+    ),
+    motion: true,
+  },
+  go_to_point: {
+    name: 'go_to_point',
+    description: 'Drive to the point (x, y), avoiding what the camera sees.',
+    inputSchema: object({ x: metres('x'), y: metres('y') }, ['x', 'y']),
     motion: true,
   },
   face: {
     name: 'face',
-    description: 'Turn on the spot to face a named thing (target) or a point (x, y).',
-    inputSchema: object({ target, x: metres('x'), y: metres('y') }),
+    description: 'Turn on the spot to face a named thing.',
+    inputSchema: object({ target }, ['target']),
     motion: true,
   },
   explore: {

@@ -81,16 +81,11 @@ export function createSkills(
         return lookSkill(context, a['around'] === true);
       case 'find':
         return findSkill(context, target ?? '');
-      case 'go_to':
-      case 'face': {
-        const point = x !== undefined && y !== undefined;
-        if ((target === undefined) === !point || (x === undefined) !== (y === undefined))
-          return badArguments(name, 'give either "target" (e.g. "red box") or both "x" and "y"');
-        if (name === 'face') return faceSkill(context, point ? { x, y } : { target: target ?? '' });
-        if (target !== undefined) {
-          const within = typeof a['withinCm'] === 'number' ? a['withinCm'] / 100 : undefined;
-          return goToThing(context, target, within, signal);
-        }
+      case 'go_to': {
+        const within = typeof a['withinCm'] === 'number' ? a['withinCm'] / 100 : undefined;
+        return goToThing(context, target ?? '', within, signal);
+      }
+      case 'go_to_point': {
         const tolerance =
           typeof a['withinCm'] === 'number' ? a['withinCm'] / 100 : context.pointToleranceM;
         return goToPoint(
@@ -101,6 +96,8 @@ export function createSkills(
           signal,
         );
       }
+      case 'face':
+        return faceSkill(context, target ?? '');
       case 'explore':
         return exploreSkill(context, tried, signal);
       case 'where_is':

@@ -104,7 +104,7 @@ describe('skills in the simulator', () => {
     // now behind the robot, which faces -x from (0.3, 0)
     expect(Math.abs(Math.abs(red?.['bearingDeg'] ?? 0) - 180)).toBeLessThan(20);
     const seen = await call('what_have_you_seen');
-    expect(text(seen)).toMatch(/^I have seen 1 thing: the red box 1 /);
+    expect(text(seen)).toMatch(/^I have seen 1 box: the red box 1 /);
     const back = await call('go_back');
     expect(facts(back)['outcome'], text(back)).toBe('reached');
     expect(Math.hypot(sim.robot.x, sim.robot.y)).toBeLessThan(0.04);
@@ -166,7 +166,7 @@ describe('skills in the simulator', () => {
     const move = await call('move', { cm: 20 });
     expect(move.code).toBe('EMERGENCY_STOPPED');
     expect(facts(move)['outcome']).toBe('estopped');
-    const go = await call('go_to', { x: 0.5, y: 0 });
+    const go = await call('go_to_point', { x: 0.5, y: 0 });
     expect(facts(go)['outcome']).toBe('estopped');
     expect(sim.robot.x).toBe(0);
   });
@@ -180,7 +180,9 @@ describe('skills in the simulator', () => {
       ['move', { distance: 10 }, 'INVALID_PARAMETER'],
       ['turn', '{"degrees": 90', 'BAD_ARGUMENTS'],
       ['go_to', { target: 'red box', x: 1, y: 0 }, 'INVALID_PARAMETER'],
-      ['go_to', { x: 1 }, 'INVALID_PARAMETER'],
+      ['go_to', { x: 1, y: 0 }, 'INVALID_PARAMETER'],
+      ['go_to_point', { x: 1 }, 'INVALID_PARAMETER'],
+      ['go_to_point', { x: 1, y: 0, withinCm: 500 }, 'INVALID_PARAMETER'],
       ['go_to', { target: 'something nice' }, 'INVALID_PARAMETER'],
       ['find', {}, 'INVALID_PARAMETER'],
       ['move_forward', { distanceCm: 10 }, 'UNKNOWN_TOOL'],
@@ -216,6 +218,7 @@ describe('tool profiles', () => {
       'look',
       'find',
       'go_to',
+      'go_to_point',
       'face',
       'explore',
       'where_is',

@@ -2,6 +2,8 @@
 // endpoint when --base-url is given. Parsing only; the command loads or reaches it.
 import type { AgentEndpoint } from '@hal/agent';
 import { isDefaultModelFile, SMALL_MODEL_TOOLS } from '@hal/agent-local';
+import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
+import type { ToolProfile } from '@hal/skills';
 import { CliError } from '../cli-error.js';
 
 /** The model options as commander parses them. */
@@ -20,31 +22,52 @@ export type ModelChoice =
       kind: 'local';
       /** Undefined: the SmolLM2 file `hal model pull` caches (also when it was given by its path). */
       modelFile?: string;
-      /** The tools the model is offered; undefined: all of them. */
+      /** What the model is offered: the skills (the default model's default) or the HAL's tools. */
+      profile: ToolProfile;
+      /** With the primitives: the HAL tools the model is offered; undefined: all of them. */
       offerTools?: readonly string[];
       threads?: number;
       contextSize?: number;
     }
-  | { kind: 'endpoint'; endpoint: AgentEndpoint; tools?: readonly string[] };
+  | {
+      kind: 'endpoint';
+      endpoint: AgentEndpoint;
+      profile: ToolProfile;
+      /** With the primitives: only these HAL tools. */
+      tools?: readonly string[];
+    };
 
 /**
- * Model requests a run may make when --max-steps is not given. The default SmolLM2-135M does one
- * simple thing right but, measured, never answers that it is done: given more requests it
- * repeats or wanders (a turn after "drive forward 10 cm"). So it gets one; any other model 20.
+ * Model requests a run may make when --max-steps is not given: the default SmolLM2-135M, offered
+ * the skills (each does a whole step), gets 8, as many as the built-in tasks' longest sequence
+ * needs with a retry; any other model 20.
  */
-export const DEFAULT_SMALL_MODEL_STEPS = 1;
+export const DEFAULT_SMALL_MODEL_STEPS = 8;
 export const DEFAULT_STEPS = 20;
 
-function toolList(text: string | undefined): readonly string[] | 'all' | undefined {
+/** `--tools`: a profile (skills, primitives, all) or HAL tool names, which mean the primitives. */
+function toolList(
+  text: string | undefined,
+): { profile: ToolProfile } | { names: readonly string[] } | undefined {
   if (text === undefined) return undefined;
-  if (text.trim() === 'all') return 'all';
-  const names = text
+  const trimmed = text.trim();
+  if (isToolProfile(trimmed)) return { profile: trimmed };
+  const names = trimmed
     .split(',')
     .map((name) => name.trim())
     .filter((name) => name !== '');
   if (names.length === 0)
-    throw new CliError('USAGE', `"--tools" must be "all" or tool names separated by commas`);
-  return names;
+    throw new CliError(
+      'USAGE',
+      `"--tools" must be a profile (${TOOL_PROFILES.join(', ')}) or HAL tool names separated by commas`,
+    );
+  const profile = names.find((n) => isToolProfile(n));
+  if (profile !== undefined)
+    throw new CliError(
+      'USAGE',
+      `"--tools": "${profile}" is a profile: give it alone, not in a list`,
+    );
+  return { names };
 }
 
 /**
@@ -58,6 +81,7 @@ export function modelChoice(
   env: Readonly<Record<string, string | undefined>>,
 ): ModelChoice {
   const tools = toolList(options.tools);
+  const names = tools !== undefined && 'names' in tools ? tools.names : undefined;
   if (options.baseUrl !== undefined) {
     if (options.modelFile !== undefined)
       throw new CliError('USAGE', 'give --model-file (a local model) or --base-url, not both');
@@ -72,7 +96,8 @@ export function modelChoice(
         model,
         ...(apiKey === undefined || apiKey === '' ? {} : { apiKey }),
       },
-      ...(tools === undefined || tools === 'all' ? {} : { tools }),
+      profile: tools !== undefined && 'profile' in tools ? tools.profile : 'primitives',
+      ...(names === undefined ? {} : { tools: names }),
     };
   }
   if (options.model !== undefined)
@@ -82,13 +107,19 @@ export function modelChoice(
     options.modelFile === undefined || isDefaultModelFile(options.modelFile, env)
       ? undefined
       : options.modelFile;
+  // the default small model is offered the skills; asked for the primitives, a few of them
+  const profile: ToolProfile =
+    tools !== undefined && 'profile' in tools
+      ? tools.profile
+      : names !== undefined || modelFile !== undefined
+        ? 'primitives'
+        : 'skills';
   const offer =
-    tools === 'all'
-      ? undefined
-      : (tools ?? (modelFile === undefined ? SMALL_MODEL_TOOLS : undefined));
+    names ?? (profile === 'primitives' && modelFile === undefined ? SMALL_MODEL_TOOLS : undefined);
   return {
     kind: 'local',
     ...(modelFile === undefined ? {} : { modelFile }),
+    profile,
     ...(offer === undefined ? {} : { offerTools: offer }),
     ...(options.threads === undefined ? {} : { threads: options.threads }),
     ...(options.context === undefined ? {} : { contextSize: options.context }),

@@ -5,7 +5,13 @@
 import { Command, Option } from 'commander';
 import { runAgent } from '@hal/agent';
 import type { AgentOutcome, ChatProvider, RunAgentOptions } from '@hal/agent';
-import { createLocalChatProvider, LocalModelError, LOCAL_SYSTEM_PROMPT } from '@hal/agent-local';
+import {
+  createLocalChatProvider,
+  LOCAL_SYSTEM_PROMPT,
+  LocalModelError,
+  SKILL_EXAMPLES,
+  SKILLS_SYSTEM_PROMPT,
+} from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
 import {
   addGuardOptions,
@@ -23,6 +29,7 @@ import { integerArg, positiveArg, urlArg } from '../values.js';
 import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
+import { offeredTools } from '../mcp/offered-tools.js';
 import type { ModelChoice, ModelCliOptions } from '../agent/model-choice.js';
 import { eventPrinter } from '../agent/print.js';
 import { CliError } from '../cli-error.js';
@@ -52,6 +59,10 @@ async function loadLocal(
     return await createLocalChatProvider({
       ...(choice.modelFile === undefined ? {} : { modelFile: choice.modelFile }),
       ...(choice.offerTools === undefined ? {} : { offerTools: choice.offerTools }),
+      // the default model offered the skills: shown worked runs, and made to act before answering
+      ...(choice.profile !== 'primitives' && choice.modelFile === undefined
+        ? { examples: SKILL_EXAMPLES, callFirst: true }
+        : {}),
       ...(choice.threads === undefined ? {} : { threads: choice.threads }),
       ...(choice.contextSize === undefined ? {} : { contextSize: choice.contextSize }),
       logger,
@@ -88,8 +99,8 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     .addOption(new Option('--model <name>', "the endpoint's model (default $OPENAI_MODEL)"))
     .addOption(
       new Option(
-        '--tools <names>',
-        'tools the model is offered, comma-separated, or "all" (default: a few for the default model, else all)',
+        '--tools <profile>',
+        'what the model is offered: skills, primitives (the HAL tools), all, or HAL tool names, comma-separated (default: skills for the default model, else primitives)',
       ),
     )
     .addOption(
@@ -185,18 +196,22 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
           const hal = recorder
             ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
             : opened;
-          const tools =
-            choice.kind === 'endpoint' && choice.tools !== undefined
-              ? // the loop stops the robot with `stop` at the end of a run: always keep it
-                halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
-              : halTools(hal);
-          const executor = createToolExecutor(hal, {
-            tools,
-            leash,
-            ...(options.timeout === undefined ? {} : { timeoutMs: options.timeout }),
-          });
+          const timeout = options.timeout === undefined ? {} : { timeoutMs: options.timeout };
+          const executor =
+            choice.profile === 'primitives'
+              ? createToolExecutor(hal, {
+                  tools:
+                    choice.kind === 'endpoint' && choice.tools !== undefined
+                      ? // the loop stops the robot with `stop` at the end of a run: always keep it
+                        halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
+                      : halTools(hal),
+                  leash,
+                  ...timeout,
+                })
+              : // the skills drive through the same executor: the leash and the guard hold inside them
+                offeredTools(hal, { profile: choice.profile, leash, ...timeout });
           if (local !== undefined)
-            await local.prepare(toOpenAITools(tools)).catch((e) => {
+            await local.prepare(toOpenAITools(executor.tools)).catch((e) => {
               throw asCliError(e);
             });
           const model: Pick<RunAgentOptions, 'provider' | 'endpoint' | 'systemPrompt'> =
@@ -204,7 +219,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
               ? {
                   provider: local satisfies ChatProvider,
                   ...(choice.kind === 'local' && choice.modelFile === undefined
-                    ? { systemPrompt: LOCAL_SYSTEM_PROMPT }
+                    ? {
+                        systemPrompt:
+                          choice.profile === 'primitives'
+                            ? LOCAL_SYSTEM_PROMPT
+                            : SKILLS_SYSTEM_PROMPT,
+                      }
                     : {}),
                 }
               : { endpoint: (choice as Extract<ModelChoice, { kind: 'endpoint' }>).endpoint };

@@ -4,9 +4,9 @@
 import {
   createLocalChatProvider,
   isDefaultModelFile,
-  LOCAL_SYSTEM_PROMPT,
+  SKILL_EXAMPLES,
+  SKILLS_SYSTEM_PROMPT,
   LocalModelError,
-  SMALL_MODEL_TOOLS,
 } from '@hal/agent-local';
 import type { LocalChatProvider } from '@hal/agent-local';
 import {
@@ -99,7 +99,10 @@ export async function buildAgents(
     if (name === 'local') {
       try {
         local = await createLocalChatProvider({
-          ...(modelFile === undefined ? { offerTools: SMALL_MODEL_TOOLS } : { modelFile }),
+          ...(modelFile === undefined ? {} : { modelFile }),
+          // the skills, shown by worked runs; a first reply that calls one (see hal agent)
+          examples: SKILL_EXAMPLES,
+          callFirst: true,
           ...(options.threads === undefined ? {} : { threads: options.threads }),
           ...(options.temperature === undefined ? {} : { temperature: options.temperature }),
           ...(logger === undefined ? {} : { logger }),
@@ -113,14 +116,15 @@ export async function buildAgents(
       const provider = local;
       const modelName = provider.modelFile.split(/[\\/]/).pop() ?? provider.modelFile;
       const systemPrompt =
-        options.systemPrompt ?? (modelFile === undefined ? LOCAL_SYSTEM_PROMPT : undefined);
+        options.systemPrompt ?? (modelFile === undefined ? SKILLS_SYSTEM_PROMPT : undefined);
       agents.push(
         chatAgent({
           name: `local:${modelName.replace(/\.gguf$/i, '')}`,
           provider,
           prepare: (tools) => provider.prepare(toOpenAITools(tools)),
           ...(systemPrompt === undefined ? {} : { systemPrompt }),
-          // the default SmolLM2 does one simple thing, then repeats or wanders (see hal agent)
+          // a small model is offered the skills: a few tools that each do a whole step
+          toolProfile: 'skills',
           maxSteps: options.maxSteps ?? (modelFile === undefined ? DEFAULT_SMALL_MODEL_STEPS : 20),
         }),
       );

@@ -1,5 +1,6 @@
 import { runAgent } from '@hal/agent';
 import type { AgentEndpoint, AgentError, ChatProvider } from '@hal/agent';
+import type { ToolProfile } from '@hal/skills';
 import type { AgentTool } from '@hal/tools';
 import type { EvalAgent, ModelFailure } from '../agent.js';
 
@@ -17,6 +18,8 @@ export interface ChatAgentOptions {
   temperature?: number;
   /** Most model requests per trial. Default: the task's tool-call budget. */
   maxSteps?: number;
+  /** The tools it is offered unless the run names a profile. Default `primitives`. */
+  toolProfile?: ToolProfile;
   /**
    * Runs before each trial with the tools it offers (a local model builds its grammar here). A
    * rejection is a model failure: the trial is not scored.
@@ -49,6 +52,7 @@ function thrownFailure(error: unknown): ModelFailure {
 export function chatAgent(options: ChatAgentOptions): EvalAgent {
   return {
     name: options.name,
+    ...(options.toolProfile === undefined ? {} : { toolProfile: options.toolProfile }),
     run: async (trial) => {
       try {
         await options.prepare?.(trial.tools);

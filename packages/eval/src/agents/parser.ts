@@ -40,7 +40,7 @@ function callOf(step: PlanStep): ToolCall {
       };
     case 'go-to-point':
       return {
-        name: 'go_to',
+        name: 'go_to_point',
         arguments: {
           x: step.x,
           y: step.y,
@@ -117,7 +117,13 @@ async function closeToFence(
   said: string[],
 ): Promise<ToolResult> {
   if (step.kind === 'go-to-point') {
-    await trial.execute({ name: 'face', arguments: { x: step.x, y: step.y } });
+    const pose = (await trial.execute({ name: 'look', arguments: {} })).structured?.['pose'] as
+      { x: number; y: number; yawDeg: number } | undefined;
+    if (pose !== undefined) {
+      const bearing = (Math.atan2(step.y - pose.y, step.x - pose.x) * 180) / Math.PI - pose.yawDeg;
+      const degrees = ((((bearing + 180) % 360) + 360) % 360) - 180;
+      if (Math.abs(degrees) >= 1) await trial.execute({ name: 'turn', arguments: { degrees } });
+    }
   } else if (step.kind === 'go-to-thing') {
     await trial.execute({ name: 'face', arguments: { target: step.target } });
   }
