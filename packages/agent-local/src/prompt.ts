@@ -101,7 +101,7 @@ export const SKILL_EXAMPLES: readonly ExampleRun[] = Object.freeze([
     answer: 'I stopped 21 cm from the purple box.',
   },
   {
-    goal: 'Go to the orange pillar and stop within 25 cm of it.',
+    goal: 'drive to the orange pillar',
     calls: [
       {
         tool: 'go_to',

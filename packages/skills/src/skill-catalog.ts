@@ -9,12 +9,8 @@ const Metres = z.number().finite().min(-50).max(50);
 export const SKILL_PARAMETERS = {
   look: z.object({ around: z.boolean().optional() }).strict(),
   find: z.object({ target: Target }).strict(),
-  go_to: z
-    .object({ target: Target, withinCm: z.number().finite().min(5).max(200).optional() })
-    .strict(),
-  go_to_point: z
-    .object({ x: Metres, y: Metres, withinCm: z.number().finite().min(1).max(100).optional() })
-    .strict(),
+  go_to: z.object({ target: Target }).strict(),
+  go_to_point: z.object({ x: Metres, y: Metres }).strict(),
   face: z.object({ target: Target }).strict(),
   explore: z.object({}).strict(),
   where_is: z.object({ target: Target }).strict(),
@@ -79,19 +75,8 @@ export const SKILL_TOOLS: Readonly<Record<SkillName, AgentTool>> = {
   go_to: {
     name: 'go_to',
     description:
-      'Drive to a named thing and stop about 25 cm before it (or withinCm), avoiding what the camera sees. Looks for it first if needed.',
-    inputSchema: object(
-      {
-        target,
-        withinCm: {
-          type: 'number',
-          description: 'stop this near it, cm',
-          minimum: 5,
-          maximum: 200,
-        },
-      },
-      ['target'],
-    ),
+      'Drive to a named thing and stop about 25 cm before it, avoiding what the camera sees. Looks for it first if needed.',
+    inputSchema: object({ target }, ['target']),
     motion: true,
   },
   go_to_point: {

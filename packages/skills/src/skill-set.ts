@@ -81,21 +81,16 @@ export function createSkills(
         return lookSkill(context, a['around'] === true);
       case 'find':
         return findSkill(context, target ?? '');
-      case 'go_to': {
-        const within = typeof a['withinCm'] === 'number' ? a['withinCm'] / 100 : undefined;
-        return goToThing(context, target ?? '', within, signal);
-      }
-      case 'go_to_point': {
-        const tolerance =
-          typeof a['withinCm'] === 'number' ? a['withinCm'] / 100 : context.pointToleranceM;
+      case 'go_to':
+        return goToThing(context, target ?? '', undefined, signal);
+      case 'go_to_point':
         return goToPoint(
           context,
           { x: x ?? 0, y: y ?? 0 },
-          tolerance,
+          context.pointToleranceM,
           `(${(x ?? 0).toFixed(2)}, ${(y ?? 0).toFixed(2)})`,
           signal,
         );
-      }
       case 'face':
         return faceSkill(context, target ?? '');
       case 'explore':

@@ -30,6 +30,8 @@ import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
 import { offeredTools } from '../mcp/offered-tools.js';
+import { openWorldSimulator, readLookWorld } from '../look/look-world.js';
+import type { LookWorld } from '../look/look-world.js';
 import type { ModelChoice, ModelCliOptions } from '../agent/model-choice.js';
 import { eventPrinter } from '../agent/print.js';
 import { CliError } from '../cli-error.js';
@@ -38,13 +40,16 @@ import { cliLogger } from '../logger.js';
 import { addOverwriteOption, checkOutputPlace, openRecordingFile } from '../output-place.js';
 import { poseText } from '../pose-text.js';
 import { addTargetOptions, namesTarget, resolveTarget } from '../target.js';
-import type { TargetCliOptions } from '../target.js';
+import type { Target, TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
+import type { OpenedHal } from '../target-hal.js';
+import type { CliIO } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 interface AgentCliOptions
   extends TargetCliOptions, ModelCliOptions, LeashCliOptions, GuardCliOptions {
   maxTime?: number;
+  world?: string;
   record?: string;
   overwrite?: boolean;
   timeout?: number;
@@ -78,6 +83,24 @@ function asCliError(error: unknown): unknown {
     : error;
 }
 
+/** Runs `use` on the simulator started in `world`, and closes it. */
+async function inWorld<T>(
+  world: LookWorld,
+  target: Extract<Target, { kind: 'sim' }>,
+  io: CliIO,
+  use: (opened: OpenedHal) => Promise<T>,
+): Promise<T> {
+  const opened = await openWorldSimulator(world, io, {
+    speed: target.speed,
+    ...(target.calibration === undefined ? {} : { calibration: target.calibration }),
+  });
+  try {
+    return await use(opened);
+  } finally {
+    await opened.close();
+  }
+}
+
 export const registerAgent: RegisterCommand = (program, { io, global }) => {
   const command = new Command('agent')
     .description(
@@ -108,6 +131,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         '--max-steps <n>',
         `most model requests (default ${DEFAULT_SMALL_MODEL_STEPS} with the default model, else ${DEFAULT_STEPS})`,
       ).argParser(integerArg('--max-steps', 1, 200)),
+    )
+    .addOption(
+      new Option(
+        '--world <file>',
+        "with the simulator: start it in this world (a task file's world: map, start, coloured objects; see docs/eval.md)",
+      ),
     )
     .addOption(
       new Option('--max-time <s>', 'most time for the whole run, seconds (default 300)').argParser(
@@ -150,6 +179,10 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
       namesTarget(options) ? options : { ...options, sim: true },
       io.env,
     );
+    if (options.world !== undefined && target.kind !== 'sim')
+      throw new CliError('USAGE', '--world starts the simulator in a world: it needs --sim');
+    // a world file that cannot be used is refused before the model loads
+    const world = options.world === undefined ? undefined : await readLookWorld(options.world);
     const leash = leashFromOptions(options);
     const logger = cliLogger(io, json);
 
@@ -183,81 +216,81 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     try {
       const connect =
         options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
-      const { outcome, pose, guard } = await withTarget(
-        target,
-        io,
-        { ...connect, json, role: 'control' },
-        async ({ hal: robot, deviceId }) => {
-          // the guard sits between the leash (the executor) and the robot
-          const { hal: guarded, guard } = guardFromOptions(robot, options, io, json, target);
-          recordGuard(guard, recorder);
-          // scan answers from the range sensors and the camera, as the robot can know
-          const { hal: opened } = seeingFrom(guarded, robot, recorder, target);
-          const hal = recorder
-            ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
-            : opened;
-          const timeout = options.timeout === undefined ? {} : { timeoutMs: options.timeout };
-          const executor =
-            choice.profile === 'primitives'
-              ? createToolExecutor(hal, {
-                  tools:
-                    choice.kind === 'endpoint' && choice.tools !== undefined
-                      ? // the loop stops the robot with `stop` at the end of a run: always keep it
-                        halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
-                      : halTools(hal),
-                  leash,
-                  ...timeout,
-                })
-              : // the skills drive through the same executor: the leash and the guard hold inside them
-                offeredTools(hal, { profile: choice.profile, leash, ...timeout });
-          if (local !== undefined)
-            await local.prepare(toOpenAITools(executor.tools)).catch((e) => {
-              throw asCliError(e);
-            });
-          const model: Pick<RunAgentOptions, 'provider' | 'endpoint' | 'systemPrompt'> =
-            local !== undefined
-              ? {
-                  provider: local satisfies ChatProvider,
-                  ...(choice.kind === 'local' && choice.modelFile === undefined
-                    ? {
-                        systemPrompt:
-                          choice.profile === 'primitives'
-                            ? LOCAL_SYSTEM_PROMPT
-                            : SKILLS_SYSTEM_PROMPT,
-                      }
-                    : {}),
-                }
-              : { endpoint: (choice as Extract<ModelChoice, { kind: 'endpoint' }>).endpoint };
-          const print = eventPrinter((text) => io.out(text));
-          const run: AgentOutcome = await runAgent({
-            goal,
-            executor,
-            ...model,
-            caps: {
-              maxSteps:
-                options.maxSteps ??
-                (choice.kind === 'local' && choice.modelFile === undefined
-                  ? DEFAULT_SMALL_MODEL_STEPS
-                  : DEFAULT_STEPS),
-              ...(options.maxTime === undefined ? {} : { maxMs: options.maxTime * 1000 }),
-            },
-            signal: io.signal,
-            onEvent: (event) => {
-              recorder?.write(TOPICS.agent, event);
-              if (json) io.out(`${JSON.stringify(event)}\n`);
-              else print(event);
-            },
-            logger,
+      const open =
+        world !== undefined && target.kind === 'sim'
+          ? <T>(use: (opened: OpenedHal) => Promise<T>) => inWorld(world, target, io, use)
+          : <T>(use: (opened: OpenedHal) => Promise<T>) =>
+              withTarget(target, io, { ...connect, json, role: 'control' }, use);
+      const { outcome, pose, guard } = await open(async ({ hal: robot, deviceId }) => {
+        // the guard sits between the leash (the executor) and the robot
+        const { hal: guarded, guard } = guardFromOptions(robot, options, io, json, target);
+        recordGuard(guard, recorder);
+        // scan answers from the range sensors and the camera, as the robot can know
+        const { hal: opened } = seeingFrom(guarded, robot, recorder, target);
+        const hal = recorder
+          ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
+          : opened;
+        const timeout = options.timeout === undefined ? {} : { timeoutMs: options.timeout };
+        const executor =
+          choice.profile === 'primitives'
+            ? createToolExecutor(hal, {
+                tools:
+                  choice.kind === 'endpoint' && choice.tools !== undefined
+                    ? // the loop stops the robot with `stop` at the end of a run: always keep it
+                      halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
+                    : halTools(hal),
+                leash,
+                ...timeout,
+              })
+            : // the skills drive through the same executor: the leash and the guard hold inside them
+              offeredTools(hal, { profile: choice.profile, leash, ...timeout });
+        if (local !== undefined)
+          await local.prepare(toOpenAITools(executor.tools)).catch((e) => {
+            throw asCliError(e);
           });
-          let pose: Pose | undefined;
-          try {
-            pose = await hal.locomotion.getPose();
-          } catch {
-            pose = undefined;
-          }
-          return { outcome: run, pose, guard: guardReport(guard) };
-        },
-      );
+        const model: Pick<RunAgentOptions, 'provider' | 'endpoint' | 'systemPrompt'> =
+          local !== undefined
+            ? {
+                provider: local satisfies ChatProvider,
+                ...(choice.kind === 'local' && choice.modelFile === undefined
+                  ? {
+                      systemPrompt:
+                        choice.profile === 'primitives'
+                          ? LOCAL_SYSTEM_PROMPT
+                          : SKILLS_SYSTEM_PROMPT,
+                    }
+                  : {}),
+              }
+            : { endpoint: (choice as Extract<ModelChoice, { kind: 'endpoint' }>).endpoint };
+        const print = eventPrinter((text) => io.out(text));
+        const run: AgentOutcome = await runAgent({
+          goal,
+          executor,
+          ...model,
+          caps: {
+            maxSteps:
+              options.maxSteps ??
+              (choice.kind === 'local' && choice.modelFile === undefined
+                ? DEFAULT_SMALL_MODEL_STEPS
+                : DEFAULT_STEPS),
+            ...(options.maxTime === undefined ? {} : { maxMs: options.maxTime * 1000 }),
+          },
+          signal: io.signal,
+          onEvent: (event) => {
+            recorder?.write(TOPICS.agent, event);
+            if (json) io.out(`${JSON.stringify(event)}\n`);
+            else print(event);
+          },
+          logger,
+        });
+        let pose: Pose | undefined;
+        try {
+          pose = await hal.locomotion.getPose();
+        } catch {
+          pose = undefined;
+        }
+        return { outcome: run, pose, guard: guardReport(guard) };
+      });
       sampling.abort();
       const recorded = await recorder?.close();
       const summary = {

@@ -31,22 +31,9 @@ function callOf(step: PlanStep): ToolCall {
     case 'turn':
       return { name: 'turn', arguments: { degrees: step.degrees } };
     case 'go-to-thing':
-      return {
-        name: 'go_to',
-        arguments: {
-          target: step.target,
-          ...(step.withinCm === undefined ? {} : { withinCm: Math.min(step.withinCm, 25) }),
-        },
-      };
+      return { name: 'go_to', arguments: { target: step.target } };
     case 'go-to-point':
-      return {
-        name: 'go_to_point',
-        arguments: {
-          x: step.x,
-          y: step.y,
-          ...(step.withinCm === undefined ? {} : { withinCm: Math.max(5, step.withinCm / 2) }),
-        },
-      };
+      return { name: 'go_to_point', arguments: { x: step.x, y: step.y } };
     case 'go-back':
       return { name: 'go_back', arguments: {} };
     case 'look':
