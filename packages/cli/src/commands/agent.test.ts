@@ -1,6 +1,7 @@
 // `hal agent` in-process with the real local model (SmolLM2-135M from hal model pull) on
 // the embedded simulator: one short generation per run, on one thread (other test files share
 // the cores).
+import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { captureIO } from '../capture-io.fixture.js';
 import type { CapturedIO } from '../capture-io.fixture.js';
@@ -65,6 +66,35 @@ describe('hal agent with the local model', () => {
     MODEL_MS,
   );
 
+  it(
+    'drives to the red box of a world with the skills, which the default model is offered',
+    async () => {
+      const world = fileURLToPath(
+        new URL('../../../../examples/worlds/look.json', import.meta.url),
+      );
+      const io = captureIO();
+      const code = await runHal(
+        ['--json', 'agent', ...fast, '--world', world, '--max-steps', '2', 'drive to the red box'],
+        io,
+      );
+      expect(code, io.stderr()).toBe(0);
+      const lines = io.jsonLines() as Line[];
+      const calls = lines.filter((l) => l.type === 'tool_call');
+      expect(calls[0]).toMatchObject({ name: 'go_to', arguments: '{"target":"red box"}' });
+      const result = lines.find((l) => l.type === 'tool_result' && l['name'] === 'go_to');
+      expect(result?.['text']).toMatch(/^Reached the red box 1: stopped 0\.\d\d m from it/);
+      // the 0.3 m box stands at (0.5, 0.2): the robot stops before its near face, not in it
+      const pose = lines.at(-1)?.['pose'] as { position: { x: number; y: number } };
+      const gap = Math.hypot(
+        Math.max(Math.abs(pose.position.x - 0.5) - 0.15, 0),
+        Math.max(Math.abs(pose.position.y - 0.2) - 0.15, 0),
+      );
+      expect(gap).toBeLessThanOrEqual(0.25);
+      expect(gap).toBeGreaterThan(0.05);
+    },
+    MODEL_MS,
+  );
+
   it('fails at once for a model file that is not there, saying so', async () => {
     const io = captureIO();
     const code = await runHal(['agent', '--model-file', '/nonexistent/m.gguf', 'go'], io);
@@ -78,6 +108,8 @@ describe('hal agent with the local model', () => {
     [['--base-url', 'http://127.0.0.1:1/v1', '--model-file', 'x.gguf', 'go'], /not both/],
     [['--base-url', 'http://127.0.0.1:1/v1', 'go'], /--model <name>/],
     [['--tools', ',', 'go'], /--tools/],
+    [['--tools', 'skills,move', 'go'], /is a profile/],
+    [['--world', 'w.json', '--udp', '127.0.0.1:9', 'go'], /--world .* needs --sim/],
   ])('refuses %j before loading anything', async (args, message) => {
     const io = captureIO();
     expect(await runHal(['agent', ...args], io)).toBe(2);
