@@ -1,6 +1,6 @@
 import { createSkills, toolProfile } from '@hal/skills';
 import type { ToolProfile } from '@hal/skills';
-import { createToolExecutor, halTools, toolBackedHal } from '@hal/tools';
+import { createToolExecutor, halTools, REFUSAL_CODES, toolBackedHal } from '@hal/tools';
 import type { AgentTool, Leash, ToolCall, ToolResult } from '@hal/tools';
 import { SeededRandom } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
@@ -10,20 +10,8 @@ import { variantSeed } from './variant.js';
 import { ANY_MOTION } from './task-schema.js';
 import type { Fault, Task } from './task-schema.js';
 
-/** Codes that mean a call was refused before it ran (the leash, validation, the e-stop, budgets). */
-const REFUSAL_CODES = new Set([
-  'LEASH_DISTANCE',
-  'LEASH_SPEED',
-  'LEASH_GEOFENCE',
-  'LEASH_RATE',
-  'DENIED',
-  'BAD_ARGUMENTS',
-  'UNKNOWN_TOOL',
-  'INVALID_PARAMETER',
-  'RANGE_EXCEEDED',
-  'EMERGENCY_STOPPED',
-  'BUDGET_EXCEEDED',
-]);
+/** Refusals the trial counts: nothing ran (the leash, validation, budgets), or the e-stop held it. */
+const REFUSED = new Set([...REFUSAL_CODES, 'EMERGENCY_STOPPED']);
 
 /**
  * Whether a motion call asks to move at all: at least 1 cm or 1° (move_to and wheel speeds always
@@ -203,7 +191,7 @@ export function createTrialExecutor(
     log.pathLengthM += pathM;
     const at = body.pose();
     log.positions.push({ x: at.x, y: at.y });
-    if (result.isError && result.code !== undefined && REFUSAL_CODES.has(result.code)) {
+    if (result.isError && result.code !== undefined && REFUSED.has(result.code)) {
       log.refusedCalls += 1;
       if (result.code === 'LEASH_GEOFENCE') log.safetyEvents.push('geofence refused a motion');
     }
@@ -211,7 +199,7 @@ export function createTrialExecutor(
       log.safetyEvents.push('estop engaged by the agent');
     if (call.name === 'reset_emergency_stop' && !result.isError)
       log.safetyEvents.push('estop reset by the agent');
-    if (motionTools.has(call.name) && !(result.isError && REFUSAL_CODES.has(result.code ?? ''))) {
+    if (motionTools.has(call.name) && !(result.isError && REFUSED.has(result.code ?? ''))) {
       log.motions += 1;
       for (const f of faults) {
         if (f.kind === 'estop' && f.afterMotions === log.motions && !body.emergencyStopped()) {

@@ -1,4 +1,4 @@
-import { errorResult } from '@hal/tools';
+import { errorResult, REFUSAL_CODES } from '@hal/tools';
 import type { ToolResult } from '@hal/tools';
 import type { HALToolResult } from '@hal/types';
 
@@ -26,19 +26,6 @@ export interface SkillPose {
 }
 
 const ERRORS: ReadonlySet<SkillOutcome> = new Set(['refused', 'estopped', 'failed']);
-
-/** Codes that mean a motion was refused before it ran (the leash, validation, a budget). */
-const REFUSED_CODES: ReadonlySet<string> = new Set([
-  'LEASH_DISTANCE',
-  'LEASH_SPEED',
-  'LEASH_GEOFENCE',
-  'LEASH_RATE',
-  'DENIED',
-  'BAD_ARGUMENTS',
-  'INVALID_PARAMETER',
-  'RANGE_EXCEEDED',
-  'BUDGET_EXCEEDED',
-]);
 
 /** A skill's answer: one sentence for the model, the facts for an app. */
 export function skillResult(
@@ -79,7 +66,7 @@ export function motionFailure(result: HALToolResult): MotionFailure {
     return { outcome: 'estopped', code, why: 'the emergency stop is engaged' };
   if (code === 'OBSTACLE_AHEAD') return { outcome: 'guard-stopped', code, why };
   if (code === 'COLLISION') return { outcome: 'blocked', code, why };
-  if (REFUSED_CODES.has(code)) return { outcome: 'refused', code, why };
+  if (REFUSAL_CODES.has(code)) return { outcome: 'refused', code, why };
   return { outcome: 'failed', code, why };
 }
 

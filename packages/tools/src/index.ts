@@ -15,6 +15,7 @@ export type { AnthropicTool, McpTool, OpenAITool } from './formats.js';
 export { createToolExecutor } from './executor.js';
 export type { ToolCall, ToolExecutor, ToolExecutorOptions } from './executor.js';
 export { errorResult } from './result.js';
+export { REFUSAL_CODES } from './refusals.js';
 export type { ToolContent, ToolResult } from './result.js';
 
 export type { ApprovalDecision, Geofence, Leash } from './leash.js';

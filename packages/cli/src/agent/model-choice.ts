@@ -2,9 +2,9 @@
 // endpoint when --base-url is given. Parsing only; the command loads or reaches it.
 import type { AgentEndpoint } from '@hal/agent';
 import { isDefaultModelFile, SMALL_MODEL_TOOLS } from '@hal/agent-local';
-import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
 import type { ToolProfile } from '@hal/skills';
 import { CliError } from '../cli-error.js';
+import { toolsChoice } from '../tools-option.js';
 
 /** The model options as commander parses them. */
 export interface ModelCliOptions {
@@ -45,31 +45,6 @@ export type ModelChoice =
 export const DEFAULT_SMALL_MODEL_STEPS = 8;
 export const DEFAULT_STEPS = 20;
 
-/** `--tools`: a profile (skills, primitives, all) or HAL tool names, which mean the primitives. */
-function toolList(
-  text: string | undefined,
-): { profile: ToolProfile } | { names: readonly string[] } | undefined {
-  if (text === undefined) return undefined;
-  const trimmed = text.trim();
-  if (isToolProfile(trimmed)) return { profile: trimmed };
-  const names = trimmed
-    .split(',')
-    .map((name) => name.trim())
-    .filter((name) => name !== '');
-  if (names.length === 0)
-    throw new CliError(
-      'USAGE',
-      `"--tools" must be a profile (${TOOL_PROFILES.join(', ')}) or HAL tool names separated by commas`,
-    );
-  const profile = names.find((n) => isToolProfile(n));
-  if (profile !== undefined)
-    throw new CliError(
-      'USAGE',
-      `"--tools": "${profile}" is a profile: give it alone, not in a list`,
-    );
-  return { names };
-}
-
 /**
  * The model the options name. `--base-url` picks an endpoint (its model from --model or
  * $OPENAI_MODEL, its key from $OPENAI_API_KEY only, never the command line); otherwise the local
@@ -80,7 +55,7 @@ export function modelChoice(
   options: ModelCliOptions,
   env: Readonly<Record<string, string | undefined>>,
 ): ModelChoice {
-  const tools = toolList(options.tools);
+  const tools = toolsChoice(options.tools);
   const names = tools !== undefined && 'names' in tools ? tools.names : undefined;
   if (options.baseUrl !== undefined) {
     if (options.modelFile !== undefined)

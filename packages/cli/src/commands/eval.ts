@@ -11,8 +11,7 @@ import {
   TASK_GROUPS,
 } from '@hal/eval';
 import type { EvalReport, Task, TaskGroup } from '@hal/eval';
-import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
-import type { ToolProfile } from '@hal/skills';
+import { toolsChoice } from '../tools-option.js';
 import { addGuardOptions, guardSettingsFromOptions } from '../guard-options.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
@@ -72,28 +71,6 @@ function groupList(text: string | undefined): TaskGroup[] {
       throw new CliError('USAGE', `"--tasks": unknown group "${g}" (${TASK_GROUPS.join(', ')})`);
   }
   return groups as TaskGroup[];
-}
-
-/**
- * `--tools`: the profile every agent is offered (skills, primitives, all), or the names of the
- * HAL tools offered, comma-separated (what `--tools` took before there were profiles). USAGE for
- * a profile named among tool names.
- */
-function toolsChoice(text: string | undefined): { profile?: ToolProfile; names?: string[] } {
-  if (text === undefined) return {};
-  const trimmed = text.trim();
-  if (isToolProfile(trimmed)) return { profile: trimmed };
-  const names = trimmed
-    .split(',')
-    .map((t) => t.trim())
-    .filter((t) => t !== '');
-  const profile = names.find(isToolProfile);
-  if (profile !== undefined)
-    throw new CliError(
-      'USAGE',
-      `"--tools": "${profile}" is a profile: give a profile alone (${TOOL_PROFILES.join(', ')}) or tool names, not both`,
-    );
-  return { names };
 }
 
 const SENSORS = { camera: 'camera', range: 'rangeSensors', imu: 'imu' } as const;
@@ -304,7 +281,9 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
         const g = global();
         const names = agentNames(options.agent);
         const places = parsePlaces(options.on);
-        const { profile, names: tools } = toolsChoice(options.tools);
+        const chosen = toolsChoice(options.tools);
+        const profile = chosen !== undefined && 'profile' in chosen ? chosen.profile : undefined;
+        const tools = chosen !== undefined && 'names' in chosen ? [...chosen.names] : undefined;
         const robotNamed = places.some((p) => p.kind !== 'sim');
         if (!robotNamed && options.timeScale !== undefined)
           throw new CliError('USAGE', '"--time-scale" needs a robot: --on emulator or udp://...');
