@@ -4,6 +4,7 @@
 import type { ChatContentPart, ChatMessage } from '@hal/agent';
 import type { ChatHistoryItem } from 'node-llama-cpp';
 import { LocalModelError } from './errors.js';
+import type { ExampleRun } from './example-run.js';
 
 /** What a model that takes no images reads in place of a camera frame. */
 export const IMAGE_PLACEHOLDER = '[camera frame not shown: this model takes no images]';
@@ -56,19 +57,6 @@ function itemOf(
       return { type: 'model', text };
     }
   }
-}
-
-/**
- * A worked example the model reads before the conversation, as chat turns of its own (a tiny
- * model copies a pattern from earlier turns far better than it follows a description).
- */
-export interface ExampleRun {
-  /** What the user asks. */
-  goal: string;
-  /** The model's tool calls, each with the result it got, in order. */
-  calls: ReadonlyArray<{ tool: string; arguments: Record<string, unknown>; result: string }>;
-  /** The model's final answer. */
-  answer: string;
 }
 
 /** An example run as history items: the goal, each call and its result, the answer. */

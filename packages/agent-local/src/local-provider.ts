@@ -7,7 +7,7 @@ import { LocalModelError } from './errors.js';
 import { replyGrammar } from './grammar.js';
 import { DEFAULT_ANSWER_MAX_LENGTH, replySchema } from './grammar-schema.js';
 import { fitHistory } from './history.js';
-import type { ExampleRun } from './history.js';
+import type { ExampleRun } from './example-run.js';
 import { loadNodeLlamaCpp } from './load-llama.js';
 import { checkModelFile, defaultModelFile } from './model-file.js';
 import { systemText } from './prompt.js';

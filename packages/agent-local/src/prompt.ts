@@ -1,5 +1,5 @@
 import type { ChatTool } from '@hal/agent';
-import type { ExampleRun } from './history.js';
+import type { ExampleRun } from './example-run.js';
 
 /**
  * A system prompt for small local models: short, since every token is read on a CPU and a
