@@ -4,7 +4,7 @@ import type { ToolResult } from '@hal/tools';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
 import { describeThing, seenFrom, wrapDeg } from './seen-thing.js';
-import { badArguments, motionFailure, skillResult } from './skill-result.js';
+import { badArguments, interruptedResult, motionFailure, skillResult } from './skill-result.js';
 import { TARGET_HELP, targetOf } from './target.js';
 
 /** The turn between two looks while searching, degrees (the camera sees 62 across). */
@@ -35,6 +35,8 @@ export async function findSkill(ctx: SkillContext, target: string): Promise<Tool
   await ctx.pose();
   for (let view = 0; view < 360 / FIND_STEP_DEG; view += 1) {
     if (view > 0) {
+      if (ctx.interrupted())
+        return interruptedResult('find', { pose: skillPose(await ctx.pose()) });
       const failure = await turnBy(ctx, FIND_STEP_DEG);
       if (failure !== undefined) {
         const pose = await ctx.pose();

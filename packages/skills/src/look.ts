@@ -6,7 +6,7 @@ import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
 import { describeThings, seenFrom } from './seen-thing.js';
 import type { SeenThing } from './seen-thing.js';
-import { m2, motionFailure, skillResult } from './skill-result.js';
+import { interruptedResult, m2, motionFailure, skillResult } from './skill-result.js';
 
 /** How far the floor is free, metres from the body's front, as far as the camera saw. */
 export interface Clear {
@@ -91,6 +91,8 @@ export async function lookSkill(ctx: SkillContext, around: boolean): Promise<Too
   const ahead: number[] = [];
   for (let view = 0; view < 360 / AROUND_STEP_DEG; view += 1) {
     if (view > 0) {
+      if (ctx.interrupted())
+        return interruptedResult('look', { pose: skillPose(await ctx.pose()) });
       const turned = await ctx.hal.locomotion.rotate('left', AROUND_STEP_DEG);
       if (!turned.success) {
         const failure = motionFailure(turned);
@@ -110,6 +112,7 @@ export async function lookSkill(ctx: SkillContext, around: boolean): Promise<Too
     ahead.push(clearOf(look.freeSpace, ctx.perception.bodyRadiusM).aheadM);
   }
   // back to the heading it started from
+  if (ctx.interrupted()) return interruptedResult('look', { pose: skillPose(await ctx.pose()) });
   const back = await ctx.hal.locomotion.rotate('left', AROUND_STEP_DEG);
   const pose = await ctx.pose();
   const quarter = 90 / AROUND_STEP_DEG;

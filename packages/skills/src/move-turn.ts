@@ -2,7 +2,14 @@ import type { ToolResult } from '@hal/tools';
 import type { HALToolResult } from '@hal/types';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
-import { badArguments, deg0, m2, motionFailure, skillResult } from './skill-result.js';
+import {
+  badArguments,
+  deg0,
+  interruptedResult,
+  m2,
+  motionFailure,
+  skillResult,
+} from './skill-result.js';
 import { wrapDeg } from './seen-thing.js';
 
 /**
@@ -37,6 +44,8 @@ export async function moveSkill(ctx: SkillContext, cm: number): Promise<ToolResu
   let limitWords: string | undefined;
   let limitCm = 0;
   while (left > 0.05) {
+    if (legs > 0 && ctx.interrupted())
+      return interruptedResult('move', { pose: skillPose(await ctx.pose()) });
     const step = Math.min(leg, left);
     result =
       sign > 0

@@ -35,6 +35,8 @@ export class SkillContext {
   readonly pointToleranceM: number;
   readonly maxLegM: number;
   readonly maxCycles: number;
+  /** Aborts when a stop or an e-stop interrupts the skill running (see SkillSet.interrupt). */
+  signal: AbortSignal | undefined;
   /** The longest motion the leash was found to allow, metres (learnt from a refusal). */
   leashLegM: number | undefined;
   #start: Pose2D | undefined;
@@ -61,6 +63,11 @@ export class SkillContext {
     const pose = await this.perception.pose();
     this.#start ??= pose;
     return pose;
+  }
+
+  /** Whether a stop interrupted the skill running: it must not start another motion. */
+  interrupted(): boolean {
+    return this.signal?.aborted === true;
   }
 
   /** The longest leg a drive may take now: `maxLegM`, or less where the leash allows less. */

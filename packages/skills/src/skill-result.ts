@@ -43,6 +43,16 @@ export function skillResult(
   };
 }
 
+/** A skill a stop interrupted, between two of its motions. */
+export function interruptedResult(skill: string, facts: Record<string, unknown>): ToolResult {
+  return skillResult(
+    'failed',
+    `Stopped: a stop interrupted ${skill}; it started no motion after it.`,
+    facts,
+    'INTERRUPTED',
+  );
+}
+
 /** A skill's refusal of its arguments, before anything moved. */
 export function badArguments(skill: string, message: string): ToolResult {
   return errorResult('INVALID_PARAMETER', `${skill}: ${message}`);

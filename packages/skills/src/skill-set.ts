@@ -11,9 +11,9 @@ import { moveSkill, turnSkill } from './move-turn.js';
 import { whatHaveYouSeenSkill, whereIsSkill } from './recall.js';
 import { SKILL_NAMES, SKILL_PARAMETERS, SKILL_TOOLS } from './skill-catalog.js';
 import type { SkillName } from './skill-catalog.js';
-import { SkillContext } from './skill-context.js';
+import { SkillContext, skillPose } from './skill-context.js';
 import type { SkillOptions } from './skill-context.js';
-import { badArguments } from './skill-result.js';
+import { badArguments, interruptedResult } from './skill-result.js';
 
 /** The skills over one robot, sharing what it has seen: offer `tools`, run calls with `execute`. */
 export interface SkillSet {
@@ -24,7 +24,10 @@ export interface SkillSet {
    * run one at a time, in the order they came.
    */
   execute(call: ToolCall): Promise<ToolResult>;
-  /** Ends the skill running now, if any (its motion is stopped by its own bridge or HAL call). */
+  /**
+   * Ends the skill running now, if any, before its next motion (the stop itself halts the one
+   * under way), and drops the calls queued behind it.
+   */
   interrupt(): void;
   /** The robot, map and memory the skills share. */
   readonly context: SkillContext;
@@ -60,6 +63,8 @@ export function createSkills(
   const tried: Point[] = [];
   let queue: Promise<unknown> = Promise.resolve();
   let running: AbortController | undefined;
+  // counts stops: a call queued before a stop does not run after it
+  let epoch = 0;
 
   async function run(name: SkillName, args: Record<string, unknown>): Promise<ToolResult> {
     const parsed = SKILL_PARAMETERS[name].safeParse(args);
@@ -117,8 +122,13 @@ export function createSkills(
     const parsed = parseArguments(call.arguments);
     if (!parsed.ok) return errorResult('BAD_ARGUMENTS', `${call.name}: ${parsed.message}`);
     const name = call.name;
+    const asked = epoch;
     const turn = queue.then(async () => {
+      // a stop came after this call and before its turn: it does not start
+      if (epoch !== asked)
+        return interruptedResult(name, { pose: skillPose(await context.pose()) });
       running = new AbortController();
+      context.signal = running.signal;
       try {
         return await run(name, parsed.args);
       } catch (error) {
@@ -128,6 +138,7 @@ export function createSkills(
         return errorResult(code, `${name}: ${why}`);
       } finally {
         running = undefined;
+        context.signal = undefined;
       }
     });
     queue = turn.catch(() => undefined);
@@ -137,7 +148,10 @@ export function createSkills(
   return {
     tools,
     execute,
-    interrupt: () => running?.abort(),
+    interrupt: () => {
+      epoch += 1;
+      running?.abort();
+    },
     context,
   };
 }

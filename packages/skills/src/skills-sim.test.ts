@@ -244,3 +244,55 @@ describe('tool profiles', () => {
     expect(sim!.robot.x).toBe(0);
   });
 });
+
+describe('a stop interrupts the skills', () => {
+  it('drops the calls queued before it: they start no motion', async () => {
+    const { skills, sim } = await skillsIn(TWO_THINGS());
+    const first = skills.execute({ name: 'move', arguments: { cm: 30 } });
+    const second = skills.execute({ name: 'turn', arguments: { degrees: 90 } });
+    skills.interrupt();
+    for (const result of await Promise.all([first, second])) {
+      expect(result.code).toBe('INTERRUPTED');
+      expect(text(result)).toMatch(/^Stopped: a stop interrupted (move|turn)/);
+    }
+    expect(sim.robot.x).toBe(0);
+    expect(sim.robot.yaw).toBe(0);
+  });
+
+  it('ends a skill under way before its next motion', async () => {
+    sim = new SimulationHAL({ world: TWO_THINGS() });
+    await sim.initialize();
+    const robot = sim;
+    // the first turn of the look all round waits until the test lets it go
+    let release: () => void = () => undefined;
+    const held = new Promise<void>((resolve) => (release = resolve));
+    let turns = 0;
+    const locomotion = new Proxy(robot.locomotion, {
+      get(target, key) {
+        if (key === 'rotate')
+          return async (direction: 'left' | 'right', degrees: number) => {
+            turns += 1;
+            if (turns === 1) await held;
+            return target.rotate(direction, degrees);
+          };
+        const value: unknown = Reflect.get(target, key);
+        return typeof value === 'function' ? (value as () => unknown).bind(target) : value;
+      },
+    });
+    const hal = new Proxy(robot, {
+      get(target, key) {
+        if (key === 'locomotion') return locomotion;
+        const value: unknown = Reflect.get(target, key);
+        return typeof value === 'function' ? (value as () => unknown).bind(target) : value;
+      },
+    });
+    const skills = createSkills(hal);
+    const look = skills.execute({ name: 'look', arguments: { around: true } });
+    await expect.poll(() => turns).toBe(1);
+    skills.interrupt();
+    release();
+    const result = await look;
+    expect(result.code).toBe('INTERRUPTED');
+    expect(turns).toBe(1); // the turn under way ended; no other started
+  });
+});
