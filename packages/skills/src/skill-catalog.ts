@@ -63,7 +63,8 @@ export const SKILL_TOOLS: Readonly<Record<SkillName, AgentTool>> = {
     description:
       'See what the camera shows now: coloured objects (distance, bearing) and how far the floor is clear ahead, left and right. around=true turns a full circle to look everywhere.',
     inputSchema: object({ around: { type: 'boolean', description: 'look all round' } }),
-    motion: false,
+    // with `around` it turns a full circle
+    motion: true,
   },
   find: {
     name: 'find',
