@@ -1,7 +1,7 @@
-import { GoalSeekingProvider, NavigationBridge } from '@hal/navigation';
+import { GoalSeekingProvider } from '@hal/navigation';
 import type { Point } from '@hal/navigation';
-import { perceivingObserver } from '@hal/perception';
 import type { ToolResult } from '@hal/tools';
+import { bridgeFor } from './camera-bridge.js';
 import { mostPromisingFrontier } from './frontier-choice.js';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
@@ -34,19 +34,7 @@ export async function exploreSkill(
     });
   }
   tried.push(frontier.target);
-  let frames = 0;
-  const bridge = new NavigationBridge({
-    hal: ctx.hal,
-    provider: new GoalSeekingProvider(),
-    grid: ctx.grid,
-    observe: perceivingObserver(ctx.perception, { now: () => (frames += 1) }),
-    rangeSensors: false,
-    maxLegM: ctx.legM(),
-    faceBeforeDrivingDeg: 45,
-    goalToleranceM: THERE_M,
-    maxCycles: EXPLORE_CYCLES,
-    poseFromResults: true,
-  });
+  const bridge = bridgeFor(ctx, new GoalSeekingProvider(), THERE_M, EXPLORE_CYCLES);
   const outcome = await bridge.run(frontier.target, signal === undefined ? {} : { signal });
   const after = await ctx.pose();
   const fresh = ctx.memory

@@ -1,9 +1,8 @@
-import type { Pose2D } from '@hal/navigation';
 import type { RememberedObject } from '@hal/perception';
 import type { ToolResult } from '@hal/tools';
 import type { SkillContext } from './skill-context.js';
 import { skillPose } from './skill-context.js';
-import { describeThing, seenFrom, wrapDeg } from './seen-thing.js';
+import { describeThing, seenFrom } from './seen-thing.js';
 import { badArguments, interruptedResult, motionFailure, skillResult } from './skill-result.js';
 import { TARGET_HELP, targetOf } from './target.js';
 
@@ -109,9 +108,4 @@ export async function faceSkill(ctx: SkillContext, target: string): Promise<Tool
     );
   }
   return skillResult('done', `Facing the ${known.id}.`, { pose: skillPose(pose) });
-}
-
-/** The bearing of (x, y) from `pose`, degrees, left positive. */
-export function bearingTo(pose: Pose2D, x: number, y: number): number {
-  return wrapDeg(((Math.atan2(y - pose.y, x - pose.x) - pose.yaw) * 180) / Math.PI);
 }

@@ -1,6 +1,6 @@
-import { GoalSeekingProvider, NavigationBridge } from '@hal/navigation';
-import type { DecisionProvider, NavigationOutcome, Point } from '@hal/navigation';
-import { perceivingObserver } from '@hal/perception';
+import { GoalSeekingProvider } from '@hal/navigation';
+import type { NavigationOutcome, Point } from '@hal/navigation';
+import { bridgeFor } from './camera-bridge.js';
 import type { ToolResult } from '@hal/tools';
 import { legLimitCm } from './move-turn.js';
 import { ObjectSeekingProvider } from './object-seeker.js';
@@ -12,31 +12,6 @@ import { TARGET_HELP, targetOf } from './target.js';
 
 /** How near an object `go_to` stops by default, metres from its surface. */
 const OBJECT_WITHIN_M = 0.25;
-
-/** The navigation bridge over the skill set's robot, map and memory, seeing with the camera. */
-function bridgeFor(
-  ctx: SkillContext,
-  provider: DecisionProvider,
-  goalToleranceM: number,
-  maxCycles = ctx.maxCycles,
-): NavigationBridge {
-  let frames = 0;
-  return new NavigationBridge({
-    hal: ctx.hal,
-    provider,
-    grid: ctx.grid,
-    // frames are numbered, not timed, so that a run is repeatable
-    observe: perceivingObserver(ctx.perception, { now: () => (frames += 1) }),
-    // the camera is the sense every robot of ours has (the V1 cube has no range sensors)
-    rangeSensors: false,
-    maxLegM: ctx.legM(),
-    // a leg more than this off the heading is looked at first (the camera sees 62 degrees)
-    faceBeforeDrivingDeg: 45,
-    goalToleranceM,
-    maxCycles,
-    poseFromResults: true,
-  });
-}
 
 /**
  * Runs a drive; when the leash refused a leg as too long, runs it again (once) with legs it

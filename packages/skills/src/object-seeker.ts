@@ -8,6 +8,7 @@ import type {
 import type { ObjectMemory, RememberedObject } from '@hal/perception';
 import { mostPromisingFrontier } from './frontier-choice.js';
 import type { NamedObject } from './named-object.js';
+import { wrapDeg } from './seen-thing.js';
 
 /** Options of an {@link ObjectSeekingProvider}. */
 export interface ObjectSeekerOptions {
@@ -148,7 +149,7 @@ export class ObjectSeekingProvider implements DecisionProvider {
     if (this.#turns < this.#turnsPerCircle - 1) {
       this.#turns += 1;
       this.phase = 'looking';
-      const yaw = normalizeDeg((pose.yaw + this.#scanStep) / DEG);
+      const yaw = wrapDeg((pose.yaw + this.#scanStep) / DEG);
       return {
         reasoning: `No ${this.#target.query} seen yet: turning to look (view ${this.#turns + 1} of ${this.#turnsPerCircle}).`,
         action: { type: 'ROTATE_TO', yaw_deg: yaw },
@@ -230,10 +231,4 @@ export class ObjectSeekingProvider implements DecisionProvider {
       goal_reached: false,
     };
   }
-}
-
-/** Degrees in (-180, 180]. */
-function normalizeDeg(deg: number): number {
-  const d = ((((deg + 180) % 360) + 360) % 360) - 180;
-  return d === -180 ? 180 : d;
 }

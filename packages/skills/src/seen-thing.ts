@@ -1,5 +1,6 @@
 import type { Pose2D } from '@hal/navigation';
 import type { RememberedObject } from '@hal/perception';
+import { angleDifference, normalizeAngle } from '@hal/types';
 import { deg0, m2 } from './skill-result.js';
 
 /**
@@ -22,17 +23,18 @@ export interface SeenThing {
 
 const round2 = (v: number) => Math.round(v * 100) / 100;
 
-/** Degrees in (-180, 180]. */
+const DEG = Math.PI / 180;
+
+/** Degrees in (-180, 180] (`normalizeAngle` of @hal/types, in degrees). */
 export function wrapDeg(deg: number): number {
-  const d = ((((deg + 180) % 360) + 360) % 360) - 180;
-  return d === -180 ? 180 : d;
+  return normalizeAngle(deg * DEG) / DEG;
 }
 
 /** A remembered object as seen from `pose`. */
 export function seenFrom(object: RememberedObject, pose: Pose2D): SeenThing {
   const dx = object.x - pose.x;
   const dy = object.y - pose.y;
-  const bearing = wrapDeg(((Math.atan2(dy, dx) - pose.yaw) * 180) / Math.PI);
+  const bearing = angleDifference(Math.atan2(dy, dx), pose.yaw) / DEG;
   return {
     id: object.id,
     colour: object.colour,

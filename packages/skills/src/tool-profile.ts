@@ -1,3 +1,4 @@
+import { errorResult } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolExecutor, ToolResult } from '@hal/tools';
 import type { SkillSet } from './skill-set.js';
 
@@ -52,23 +53,7 @@ export function toolProfile(
       if (SAFETY.has(call.name)) skills.interrupt();
       if (skillNames.has(call.name)) return skills.execute(call);
       if (hal.has(call.name)) return primitives.execute(call);
-      return {
-        isError: true,
-        code: 'UNKNOWN_TOOL',
-        content: [
-          {
-            type: 'text',
-            text: JSON.stringify({
-              error: `no tool "${call.name}" in the ${profile} profile`,
-              code: 'UNKNOWN_TOOL',
-            }),
-          },
-        ],
-        structured: {
-          error: `no tool "${call.name}" in the ${profile} profile`,
-          code: 'UNKNOWN_TOOL',
-        },
-      };
+      return errorResult('UNKNOWN_TOOL', `no tool "${call.name}" in the ${profile} profile`);
     },
   };
 }

@@ -1,4 +1,5 @@
 import type { ToolCall, ToolResult } from '@hal/tools';
+import { angleDifference } from '@hal/types';
 import type { AgentTrial, EvalAgent } from '../agent.js';
 import { planInstruction } from './instruction-plan.js';
 import type { PlanQuestion, PlanStep } from './instruction-plan.js';
@@ -107,8 +108,13 @@ async function closeToFence(
     const pose = (await trial.execute({ name: 'look', arguments: {} })).structured?.['pose'] as
       { x: number; y: number; yawDeg: number } | undefined;
     if (pose !== undefined) {
-      const bearing = (Math.atan2(step.y - pose.y, step.x - pose.x) * 180) / Math.PI - pose.yawDeg;
-      const degrees = ((((bearing + 180) % 360) + 360) % 360) - 180;
+      const degrees =
+        (angleDifference(
+          Math.atan2(step.y - pose.y, step.x - pose.x),
+          (pose.yawDeg * Math.PI) / 180,
+        ) *
+          180) /
+        Math.PI;
       if (Math.abs(degrees) >= 1) await trial.execute({ name: 'turn', arguments: { degrees } });
     }
   } else if (step.kind === 'go-to-thing') {
