@@ -86,11 +86,11 @@ describe('hal emulate --camera, over UDP and MJPEG', { timeout: 60_000 }, () => 
     seen.push({ what: 'start', got: red(start), want: expected(WORLD.start) });
 
     // the truth is where the commands put the body (to a step, 1/217 cm), not what it reported
-    expect((await hal.locomotion.moveForward(40)).success).toBe(true);
+    expect(await hal.locomotion.moveForward(40)).toMatchObject({ success: true });
     const ahead = { ...WORLD.start, x: WORLD.start.x + 0.4 };
     seen.push({ what: 'forward 40 cm', got: red(await frameNow()), want: expected(ahead) });
 
-    expect((await hal.locomotion.rotate('left', 15)).success).toBe(true);
+    expect(await hal.locomotion.rotate('left', 15)).toMatchObject({ success: true });
     const turned = { ...ahead, yaw: (15 * Math.PI) / 180 };
     seen.push({ what: 'left 15 deg', got: red(await frameNow()), want: expected(turned) });
 

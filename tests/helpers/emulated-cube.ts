@@ -19,6 +19,12 @@ export interface EmulatedCubeOptions {
   timeScale?: number;
   /** The camera's token (`--camera-token`). Default none. */
   token?: string;
+  /**
+   * The robot's host timeout in its own milliseconds (`--host-timeout-ms`). Default the longest,
+   * 10 s: at 10x the firmware's 2 s is 200 ms of real time, which a loaded machine rendering the
+   * camera in the same process can miss; these tests are not tests of the timeout.
+   */
+  hostTimeoutMs?: number;
 }
 
 /** A running emulated cube with its camera. */
@@ -61,6 +67,8 @@ export async function startEmulatedCube(options: EmulatedCubeOptions): Promise<E
     '--no-announce',
     '--time-scale',
     String(timeScale),
+    '--host-timeout-ms',
+    String(options.hostTimeoutMs ?? 10_000),
     '--camera',
     '0',
     ...(options.token === undefined ? [] : ['--camera-token', options.token]),
