@@ -3,6 +3,7 @@
 // @hal/physical/protocol; the in-process mock robot is in @hal/physical/testing.
 export { PhysicalHAL } from './hal/physical-hal.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
+export type { StartPose } from './pose-tracker.js';
 export { calibrationParams, robotCalibration } from './hal/calibration.js';
 export type { CalibrationSource, RobotCalibration, WheelCalibration } from './hal/calibration.js';
 export {

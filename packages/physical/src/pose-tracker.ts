@@ -32,6 +32,16 @@ export interface ReportedSteps {
 
 const zero = (value: number): number => (value === 0 ? 0 : value);
 
+/** Where the robot stands when the HAL connects, in the frame its poses are given in. */
+export interface StartPose {
+  /** Metres. */
+  x: number;
+  /** Metres. */
+  y: number;
+  /** Radians, counter-clockwise from +x. */
+  yaw: number;
+}
+
 /**
  * Host-side dead reckoning: integrates the step counters of each status reply with the firmware's
  * odometry (@hal/kinematics), in a frame anchored where the robot was when the HAL connected
@@ -73,9 +83,16 @@ export class PoseTracker {
     this.#odometry = new OdometryIntegrator(config, pose, this.#left, this.#right);
   }
 
-  /** Makes the robot's present position the origin, facing +x. */
-  anchor(status: StatusReply): void {
-    this.#odometry.reset(undefined, status.left_steps, status.right_steps);
+  /**
+   * Makes the robot's present position `start` (metres and radians; default the origin, facing
+   * +x): the frame every later pose is in.
+   */
+  anchor(status: StatusReply, start: StartPose = { x: 0, y: 0, yaw: 0 }): void {
+    this.#odometry.reset(
+      { xCm: start.x * 100, yCm: start.y * 100, headingRad: start.yaw },
+      status.left_steps,
+      status.right_steps,
+    );
     this.#absorb(status);
   }
 

@@ -1,4 +1,5 @@
 import type { Logger } from '@hal/types';
+import type { StartPose } from '../pose-tracker.js';
 import type { CalibrationSource } from './calibration.js';
 import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
 import type { SafetyLaneTiming } from '../safety-lane.js';
@@ -55,6 +56,12 @@ export interface PhysicalHALOptions {
    * robot's own geometry).
    */
   calibration?: CalibrationSource;
+  /**
+   * Where the robot stands when `initialize()` connects, in the frame its poses are to be given
+   * in (a room's, a map's): metres and radians. Default the origin, facing +x. The robot cannot
+   * tell where it is; this is the caller's word for it, and odometry goes on from there.
+   */
+  startPose?: StartPose;
 }
 
 /** What the robot said about itself when the session opened. */

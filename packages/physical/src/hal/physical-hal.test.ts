@@ -22,6 +22,31 @@ describeHalContract('PhysicalHAL over the mock robot', {
 
 describe('PhysicalHAL', () => {
   describe('#initialize', () => {
+    it('gives poses in the frame of startPose: where it stands when it connects', async () => {
+      const robot = new MockRobot({ timeScale: TIME_SCALE, hostTimeoutMs: 10_000 });
+      const hal = halOn(robot, { startPose: { x: 1, y: -0.5, yaw: Math.PI / 2 } });
+      await hal.initialize();
+      const at = await hal.locomotion.getPose();
+      expect([at.position.x, at.position.y, at.rotation.yaw]).toEqual([1, -0.5, Math.PI / 2]);
+      // facing +y: 20 cm forward is 0.2 m along +y of that frame
+      expect(await hal.locomotion.moveForward(20)).toMatchObject({ success: true });
+      const moved = await hal.locomotion.getPose();
+      expect(moved.position.x).toBeCloseTo(1, 2);
+      expect(moved.position.y).toBeCloseTo(-0.3, 2);
+      await hal.cleanup();
+    });
+
+    it('refuses a startPose that is not finite, before it connects', () => {
+      const robot = new MockRobot();
+      expect(() => halOn(robot, { startPose: { x: Number.NaN, y: 0, yaw: 0 } })).toThrow(
+        expect.objectContaining({
+          code: 'INVALID_PARAMETER',
+          message: expect.stringContaining('"startPose"'),
+        }),
+      );
+      expect(robot.requests).toHaveLength(0);
+    });
+
     it('fails AUTH_FAILED, not NOT_CONNECTED, when the robot answers with another key', async () => {
       const robot = new MockRobot({ auth: await createAuthenticator('c0ffee') });
       const wrong = new PhysicalHAL(

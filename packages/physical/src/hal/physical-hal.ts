@@ -54,7 +54,7 @@ const DEAD_LINK_STOP_MS = 300;
  * The HAL of the physical V1 stepper cube, spoken to over protocol 1.0 (docs/protocol.md) through
  * a UDP or serial transport. Every public call goes through the shared {@link HalBoundary}; a
  * motion resolves when the robot reports it finished; the pose is dead-reckoned on the host from
- * the robot's step counters, in a frame anchored where the robot stood at `initialize()`.
+ * the robot's step counters, in a frame anchored where the robot stood at `initialize()` (the origin, or `startPose`).
  */
 export class PhysicalHAL implements HardwareAbstractionLayer {
   readonly mode = 'physical' as const;
@@ -87,6 +87,13 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
     const timeScale = options.timeScale ?? 1;
     if (!(timeScale > 0) || !Number.isFinite(timeScale)) {
       throw new HalError('INVALID_PARAMETER', `"timeScale" must be a finite number > 0`);
+    }
+    const start = options.startPose;
+    if (start !== undefined && ![start.x, start.y, start.yaw].every(Number.isFinite)) {
+      throw new HalError(
+        'INVALID_PARAMETER',
+        `"startPose" must be finite metres and radians (got x ${start.x}, y ${start.y}, yaw ${start.yaw})`,
+      );
     }
     this.#config = parsed;
     this.#options = options;
@@ -177,7 +184,7 @@ export class PhysicalHAL implements HardwareAbstractionLayer {
       const hello = await session.open(this.#helloOptions());
       this.#learn(hello);
       const status = await session.command('get_status', {});
-      this.#tracker.anchor(status);
+      this.#tracker.anchor(status, this.#options.startPose);
       const hostLatch = this.#safety.hostLatch;
       if (hostLatch !== undefined && !status.safety.estop) {
         // emergencyStop() was called before initialize() (or after a cleanup): latch the robot too
