@@ -109,10 +109,34 @@ describe('MjpegCamera', () => {
     for (const cleanup of cleanups.splice(0).reverse()) await cleanup();
   });
 
-  it('keeps the latest frame of the stream and returns it as a base64 JPEG data URL', async () => {
+  it('returns the first frame after the call, never one from before it, as a base64 JPEG data URL', async () => {
     const server = await cameraServer();
     cleanups.push(() => server.close());
     const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 20 });
+    cleanups.push(() => camera.stop());
+    camera.start();
+    await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    server.send(1);
+    await expect.poll(() => camera.stats.frames, { timeout: 5000 }).toBe(1);
+    // frame 1 is the latest, but it came before the call: the capture waits for frame 2
+    let captured: string | undefined;
+    const capture = camera.captureFrame().then((url) => (captured = url));
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    expect(captured).toBeUndefined();
+    server.send(2);
+    await capture;
+    expect(captured?.startsWith('data:image/jpeg;base64,')).toBe(true);
+    expect(decodeDataUrl(captured ?? '')).toEqual(jpeg(2));
+  });
+
+  it('with maxFrameAgeMs, keeps the latest frame of the stream and returns it at once', async () => {
+    const server = await cameraServer();
+    cleanups.push(() => server.close());
+    const camera = new MjpegCamera({
+      url: server.url,
+      reconnectDelayMs: 20,
+      maxFrameAgeMs: 60_000,
+    });
     cleanups.push(() => camera.stop());
     camera.start();
     await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
@@ -130,7 +154,11 @@ describe('MjpegCamera', () => {
   it('reconnects when the stream drops, and serves the frames that follow', async () => {
     const server = await cameraServer();
     cleanups.push(() => server.close());
-    const camera = new MjpegCamera({ url: server.url, reconnectDelayMs: 20 });
+    const camera = new MjpegCamera({
+      url: server.url,
+      reconnectDelayMs: 20,
+      maxFrameAgeMs: 60_000,
+    });
     cleanups.push(() => camera.stop());
     camera.start();
     await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
@@ -204,9 +232,9 @@ describe('MjpegCamera with a camera that requires a token', () => {
     cleanups.push(() => camera.stop());
     camera.start();
     await expect.poll(() => server.connections, { timeout: 5000 }).toBe(1);
+    const capture = camera.captureFrame();
     server.send(5);
-    await expect.poll(() => camera.stats.frames, { timeout: 5000 }).toBe(1);
-    expect(decodeDataUrl(await camera.captureFrame())).toEqual(jpeg(5));
+    expect(decodeDataUrl(await capture)).toEqual(jpeg(5));
     expect(server.refused).toBe(0);
     expect(server.authorizations).toEqual(['Bearer cam-token_42']);
   });

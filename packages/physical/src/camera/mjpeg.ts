@@ -16,7 +16,13 @@ export interface MjpegCameraOptions {
   reconnectDelayMs?: number;
   /** `captureFrame` waits this long for a first frame, ms. Default 5000. */
   frameTimeoutMs?: number;
-  /** A frame older than this is stale: `captureFrame` waits for a newer one, ms. Default 2000. */
+  /**
+   * A frame that arrived longer ago than this is stale: `captureFrame` waits for a newer one, ms.
+   * Default 0: a frame that arrives after the call, so that a capture made after a motion never
+   * shows the robot from before it (at the sketch's 10 frames a second, up to 100 ms more per
+   * capture). A larger value trades that for speed: a frame up to that old, wherever the robot
+   * was then.
+   */
   maxFrameAgeMs?: number;
   /** The fetch implementation (a test seam). Default the global `fetch`. */
   fetch?: typeof fetch;
@@ -92,8 +98,8 @@ export class MjpegCamera {
   }
 
   /**
-   * The latest frame as a `data:image/jpeg;base64,...` URL, waiting for one if there is none yet
-   * (or the last is stale). Rejects with NOT_READY when the reader is not running (it never
+   * The next frame as a `data:image/jpeg;base64,...` URL: the first to arrive after the call
+   * (or, with `maxFrameAgeMs`, the latest if it is no older than that). Rejects with NOT_READY when the reader is not running (it never
    * starts the stream itself: after {@link stop} nothing may open it again but {@link start}), and
    * with TIMEOUT when no frame comes in time.
    */
@@ -103,8 +109,9 @@ export class MjpegCamera {
         details: { url: this.#options.url },
       });
     }
-    const maxAge = this.#options.maxFrameAgeMs ?? 2000;
-    const fresh = () => this.#latest !== undefined && performance.now() - this.#latest.at <= maxAge;
+    const maxAge = this.#options.maxFrameAgeMs ?? 0;
+    const fresh = () =>
+      maxAge > 0 && this.#latest !== undefined && performance.now() - this.#latest.at <= maxAge;
     if (!fresh()) {
       const timeoutMs = this.#options.frameTimeoutMs ?? 5000;
       await new Promise<void>((resolve, reject) => {
