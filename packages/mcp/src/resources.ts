@@ -2,6 +2,7 @@ import type { HardwareAbstractionLayer } from '@hal/types';
 import { hasCapability, CAPABILITIES } from '@hal/types';
 import { robotConfigOf } from '@hal/tools';
 import type { AgentTool } from '@hal/tools';
+import type { RobotEvents } from './events.js';
 
 /** One resource the server lists, and how to read it. */
 export interface RobotResource {
@@ -18,6 +19,10 @@ export interface RobotWorld {
   map?: () => unknown;
 }
 
+/** The robot's state, and its events: the resources a client can subscribe to. */
+export const STATE_URI = 'robot://state';
+export const EVENTS_URI = 'robot://events';
+
 const json = (value: unknown) => ({ text: JSON.stringify(value, null, 2) });
 
 /**
@@ -28,10 +33,11 @@ export function robotResources(
   hal: HardwareAbstractionLayer,
   tools: readonly AgentTool[],
   world: RobotWorld = {},
+  events?: RobotEvents,
 ): RobotResource[] {
   const resources: RobotResource[] = [
     {
-      uri: 'robot://state',
+      uri: STATE_URI,
       name: 'state',
       description:
         'Pose (REP-103: metres, radians, m/s, rad/s), safety status (e-stop, battery, faults) and readiness',
@@ -76,6 +82,17 @@ export function robotResources(
         ),
     },
   ];
+  if (events !== undefined) {
+    resources.push({
+      uri: EVENTS_URI,
+      name: 'events',
+      description:
+        'Recent events, oldest first: e-stops (by whom, why), resets, collisions, guard stops, ' +
+        'the link lost and back, low battery, faults; subscribe to be told of new ones',
+      mimeType: 'application/json',
+      read: async () => json({ events: events.recent() }),
+    });
+  }
   if (hasCapability(hal.getDeviceInfo().capabilities, CAPABILITIES.camera)) {
     resources.push({
       uri: 'robot://camera',

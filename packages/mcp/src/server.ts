@@ -6,12 +6,27 @@ import {
   ListToolsRequestSchema,
   McpError,
   ReadResourceRequestSchema,
+  SubscribeRequestSchema,
+  UnsubscribeRequestSchema,
 } from '@modelcontextprotocol/sdk/types.js';
-import { toMcpTools } from '@hal/tools';
+import { errorResult, robotConfigOf, toMcpTools } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { decide } from './approval.js';
+import type { Summarize } from './approval.js';
+import { asks, DEFAULT_APPROVAL_TIMEOUT_MS, policyText } from './approval-policy.js';
+import type { ApprovalPolicy } from './approval-policy.js';
+import { inCall } from './call-context.js';
+import type { CallContext } from './call-context.js';
+import { elicitApproval } from './elicit.js';
+import { RobotEvents } from './events.js';
+import type { RobotEventSources } from './events.js';
+import { summarizeMotion } from './motion-words.js';
+import { DEFAULT_PROGRESS_PERIOD_MS, watchProgress } from './progress.js';
+import type { ProgressWatch } from './progress.js';
 import { robotResources } from './resources.js';
 import type { RobotWorld } from './resources.js';
+import { serveLive } from './live.js';
 
 /** The server's name and version, as MCP clients show them. */
 export const SERVER_INFO = { name: 'hal-robot', version: '0.1.0' } as const;
@@ -25,33 +40,134 @@ export interface OfferedTools {
   execute(call: ToolCall): Promise<ToolResult>;
 }
 
+/** How the server keeps a person in the loop and the client informed. */
+export interface RobotMcpOptions {
+  /**
+   * Ask the client's user (MCP elicitation) before every motion (`'motion'`), before one longer
+   * than `{ overM }` metres, or never (`'none'`, the default). The HAL calls are asked about by
+   * the leash's approval hook: put `approveOverMcp` in the executor's leash. A skill that moves
+   * is asked about once, by the server, before it starts.
+   */
+  approve?: ApprovalPolicy;
+  /** How long the user has to answer, ms; unanswered is declined. Default 30000. */
+  approvalTimeoutMs?: number;
+  /** The robot's events, shared by every server of the robot; default one of this server's own. */
+  events?: RobotEvents;
+  /** Where this server's own feed reads events from besides the safety status. */
+  eventSources?: RobotEventSources;
+  /** How often a motion's progress is read, ms. Default 200. */
+  progressPeriodMs?: number;
+  /** How often robot://state is read for a subscriber, ms. Default 250. */
+  statePeriodMs?: number;
+}
+
+const isHalTool = (tool: AgentTool) => typeof (tool as { call?: unknown }).call === 'string';
+
+const argsOf = (raw: unknown): Record<string, unknown> =>
+  typeof raw === 'object' && raw !== null && !Array.isArray(raw)
+    ? (raw as Record<string, unknown>)
+    : {};
+
 /**
  * An MCP server for one HAL: its tools run through `offered` (an executor: validation, timeouts,
- * the leash; or a profile whose skills call such an executor), and its state, capabilities, map
- * and camera are resources. Each tool result goes back with its content and, as
- * `structuredContent`, its facts; refusals and failures with `isError`. Connect it to a transport.
+ * the leash; or a profile whose skills call such an executor), and its state, capabilities, map,
+ * events and camera are resources. Each tool result goes back with its content and, as
+ * `structuredContent`, its facts; refusals and failures with `isError`. Motions are approved by
+ * the client's user as `options.approve` says, report progress to a client that asks, and
+ * robot://state and robot://events can be subscribed to; the robot's log goes out as logging
+ * notifications at the level the client sets. Connect it to a transport.
  */
 export function createRobotMcpServer(
   hal: HardwareAbstractionLayer,
   offered: OfferedTools,
   world: RobotWorld = {},
+  options: RobotMcpOptions = {},
 ): Server {
+  const policy = options.approve ?? 'none';
+  const timeoutMs = options.approvalTimeoutMs ?? DEFAULT_APPROVAL_TIMEOUT_MS;
+  const events = options.events ?? new RobotEvents(hal, options.eventSources ?? {});
   const server = new Server(SERVER_INFO, {
-    capabilities: { tools: {}, resources: {} },
+    capabilities: { tools: {}, resources: { subscribe: true }, logging: {} },
     instructions:
       'Drives a differential-drive robot. Frame REP-103: x forward, y left, yaw counter-clockwise ' +
       'positive; metres and radians unless a name says cm or degrees. Call emergency_stop whenever ' +
-      'something looks wrong; it is always allowed.',
+      'something looks wrong; it is always allowed.' +
+      (asks(policy)
+        ? ` A person approves motions (${policyText(policy)}): a declined one answers DENIED and nothing moves.`
+        : ''),
   });
-  const resources = () => robotResources(hal, offered.tools, world);
+  const resources = () => robotResources(hal, offered.tools, world, events);
+  const live = serveLive(server, events, policy, {
+    statePeriodMs: options.statePeriodMs ?? 250,
+    read: async (uri) =>
+      resources()
+        .find((r) => r.uri === uri)
+        ?.read(),
+  });
+
+  const summarize: Summarize = async (tool, args) => {
+    try {
+      const pose = await hal.locomotion.getPose();
+      const start = { x: pose.position.x, y: pose.position.y, yaw: pose.rotation.yaw };
+      return summarizeMotion(tool, args, start, robotConfigOf(hal));
+    } catch {
+      // no pose: ask about it as one whose length is not known
+      return tool.motion
+        ? {
+            words: `run ${tool.name} ${JSON.stringify(args)}`,
+            distanceM: undefined,
+            progress: { unit: 'm' as const },
+          }
+        : undefined;
+    }
+  };
 
   server.setRequestHandler(ListToolsRequestSchema, () => ({ tools: toMcpTools(offered.tools) }));
 
-  server.setRequestHandler(CallToolRequestSchema, async (request) => {
-    const result = await offered.execute({
-      name: request.params.name,
-      arguments: request.params.arguments,
+  server.setRequestHandler(CallToolRequestSchema, async (request, extra) => {
+    const { name } = request.params;
+    const args = argsOf(request.params.arguments);
+    const tool = offered.tools.find((t) => t.name === name);
+    if (tool?.safety === 'estop') events.expect('estop');
+    if (name === 'reset_emergency_stop') events.expect('reset');
+    const context: CallContext = {
+      tool: name,
+      policy,
+      ask: elicitApproval(server, extra, timeoutMs),
+      summarize,
+      approved: false,
+      hookConsulted: false,
+    };
+    const token = request.params._meta?.progressToken;
+    let watch: ProgressWatch | undefined;
+    if (token !== undefined && tool?.motion === true) {
+      const summary = await summarize(tool, args);
+      if (summary !== undefined) {
+        watch = watchProgress(
+          hal,
+          summary,
+          (report) =>
+            extra.sendNotification({
+              method: 'notifications/progress',
+              params: { progressToken: token, ...report },
+            }),
+          options.progressPeriodMs ?? DEFAULT_PROGRESS_PERIOD_MS,
+        );
+      }
+    }
+    const result = await inCall(context, async () => {
+      // a skill makes HAL calls of its own: the user approves it once, here, before it starts
+      if (tool !== undefined && !isHalTool(tool)) {
+        const decision = await decide(context, tool, args, summarize);
+        if (!decision.allow) return errorResult('DENIED', `${name}: denied: ${decision.reason}`);
+      }
+      return offered.execute({ name, arguments: request.params.arguments });
     });
+    await watch?.finish(!result.isError);
+    if (tool?.safety !== undefined || name === 'reset_emergency_stop') events.check();
+    if (tool !== undefined && isHalTool(tool) && tool.motion && !result.isError) {
+      live.checkHooked(context);
+    }
     return {
       content: result.content,
       isError: result.isError,
@@ -75,6 +191,15 @@ export function createRobotMcpServer(
     }
     const body = await resource.read();
     return { contents: [{ uri: resource.uri, mimeType: resource.mimeType, ...body }] };
+  });
+
+  server.setRequestHandler(SubscribeRequestSchema, (request) => {
+    live.subscribe(request.params.uri);
+    return {};
+  });
+  server.setRequestHandler(UnsubscribeRequestSchema, (request) => {
+    live.unsubscribe(request.params.uri);
+    return {};
   });
 
   return server;
