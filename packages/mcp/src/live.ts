@@ -36,7 +36,8 @@ export function serveLive(
   policy: ApprovalPolicy,
   options: {
     statePeriodMs: number;
-    read: (uri: string) => Promise<{ text: string } | { blob: string } | undefined>;
+    /** Reads the robot's state, as robot://state holds it. */
+    state: () => Promise<unknown>;
   },
 ): Live {
   const subscribed = new Set<string>();
@@ -54,8 +55,7 @@ export function serveLive(
   };
   const stateText = async () => {
     try {
-      const body = await options.read(STATE_URI);
-      return body !== undefined && 'text' in body ? body.text : undefined;
+      return JSON.stringify(await options.state());
     } catch {
       return undefined;
     }

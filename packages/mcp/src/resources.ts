@@ -25,6 +25,16 @@ export const EVENTS_URI = 'robot://events';
 
 const json = (value: unknown) => ({ text: JSON.stringify(value, null, 2) });
 
+/** What robot://state holds: readiness, mode, pose and safety status. */
+export async function stateOf(hal: HardwareAbstractionLayer) {
+  return {
+    ready: hal.isReady(),
+    mode: hal.mode,
+    pose: hal.isReady() ? await hal.locomotion.getPose() : null,
+    safety: hal.safety.getSafetyStatus(),
+  };
+}
+
 /**
  * The robot's resources: its state (pose, safety, readiness), what it can do (device info,
  * limits, tools) and the map of its world, and the camera's latest frame where it has one.
@@ -42,13 +52,7 @@ export function robotResources(
       description:
         'Pose (REP-103: metres, radians, m/s, rad/s), safety status (e-stop, battery, faults) and readiness',
       mimeType: 'application/json',
-      read: async () =>
-        json({
-          ready: hal.isReady(),
-          mode: hal.mode,
-          pose: hal.isReady() ? await hal.locomotion.getPose() : null,
-          safety: hal.safety.getSafetyStatus(),
-        }),
+      read: async () => json(await stateOf(hal)),
     },
     {
       uri: 'robot://capabilities',

@@ -24,7 +24,7 @@ import type { RobotEventSources } from './events.js';
 import { summarizeMotion } from './motion-words.js';
 import { DEFAULT_PROGRESS_PERIOD_MS, watchProgress } from './progress.js';
 import type { ProgressWatch } from './progress.js';
-import { robotResources } from './resources.js';
+import { robotResources, stateOf } from './resources.js';
 import type { RobotWorld } from './resources.js';
 import { serveLive } from './live.js';
 
@@ -57,6 +57,11 @@ export interface RobotMcpOptions {
   eventSources?: RobotEventSources;
   /** How often a motion's progress is read, ms. Default 200. */
   progressPeriodMs?: number;
+  /**
+   * The HAL the server watches for progress, state updates and events (default `hal`): the same
+   * robot, given unwrapped so that a recording wrapper does not record every look.
+   */
+  monitor?: HardwareAbstractionLayer;
   /** How often robot://state is read for a subscriber, ms. Default 250. */
   statePeriodMs?: number;
 }
@@ -85,7 +90,8 @@ export function createRobotMcpServer(
 ): Server {
   const policy = options.approve ?? 'none';
   const timeoutMs = options.approvalTimeoutMs ?? DEFAULT_APPROVAL_TIMEOUT_MS;
-  const events = options.events ?? new RobotEvents(hal, options.eventSources ?? {});
+  const monitor = options.monitor ?? hal;
+  const events = options.events ?? new RobotEvents(monitor, options.eventSources ?? {});
   const server = new Server(SERVER_INFO, {
     capabilities: { tools: {}, resources: { subscribe: true }, logging: {} },
     instructions:
@@ -99,10 +105,7 @@ export function createRobotMcpServer(
   const resources = () => robotResources(hal, offered.tools, world, events);
   const live = serveLive(server, events, policy, {
     statePeriodMs: options.statePeriodMs ?? 250,
-    read: async (uri) =>
-      resources()
-        .find((r) => r.uri === uri)
-        ?.read(),
+    state: () => stateOf(monitor),
   });
 
   const summarize: Summarize = async (tool, args) => {
@@ -144,7 +147,7 @@ export function createRobotMcpServer(
       const summary = await summarize(tool, args);
       if (summary !== undefined) {
         watch = watchProgress(
-          hal,
+          monitor,
           summary,
           (report) =>
             extra.sendNotification({
