@@ -6,7 +6,7 @@ import { Writable } from 'node:stream';
 import type { Readable } from 'node:stream';
 import { Command } from 'commander';
 import { StdioServerTransport } from '@modelcontextprotocol/sdk/server/stdio.js';
-import { createRobotMcpServer, serveHttp } from '@hal/mcp';
+import { createRobotMcpServer, policyText, RobotEvents, serveHttp } from '@hal/mcp';
 import type { RobotWorld } from '@hal/mcp';
 import { recordHal } from '@hal/recorder';
 import { SimulationHAL } from '@hal/simulation';
@@ -21,6 +21,7 @@ import { cliLogger } from '../logger.js';
 import { readLookWorld, openWorldSimulator } from '../look/look-world.js';
 import { addMcpOptions, mcpOptions } from '../mcp/options.js';
 import type { McpCliOptions } from '../mcp/options.js';
+import { mcpEventSources, tapLog } from '../mcp/event-sources.js';
 import { offeredTools } from '../mcp/offered-tools.js';
 import { openRecordingFile } from '../output-place.js';
 import { openTarget } from '../target-hal.js';
@@ -100,7 +101,7 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     recordGuard(guard, recorder);
     // scan answers from the range sensors and the camera, as the robot can know
     const { hal: seeing } = seeingFrom(guarded, robot, recorder, target);
-    const hal =
+    const recorded =
       recorder === undefined
         ? seeing
         : recordHal(seeing, recorder, {
@@ -112,15 +113,34 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
                 ? { map: { name: target.map } }
                 : {}),
           });
+    // the log lines the tools write also go to the MCP client, as logging notifications
+    const { hal, logs } = tapLog(recorded);
+    // once for the run, as the tools are: what happens to the robot, for every server of it;
+    // watched on the robot itself, so that a recording does not hold every look
+    const events = new RobotEvents(robot, mcpEventSources(robot, guard, logs));
+    const stopEvents = events.open();
     let close: () => Promise<void> = async () => undefined;
     try {
       // once for the run: over HTTP each request has a server of its own, the skills one memory
       const offered = offeredTools(hal, {
         profile: options.profile,
         leash: options.leash,
+        approve: options.approve,
         ...(options.timeoutMs === undefined ? {} : { timeoutMs: options.timeoutMs }),
       });
-      const create = () => createRobotMcpServer(hal, offered, arena);
+      const create = () =>
+        createRobotMcpServer(hal, offered, arena, {
+          approve: options.approve,
+          approvalTimeoutMs: options.approvalTimeoutMs,
+          events,
+          monitor: robot,
+        });
+      io.err(
+        options.approve === 'none'
+          ? 'hal mcp: no one approves motions (--approve none): they run as the leash allows\n'
+          : `hal mcp: the MCP client's user approves motions (--approve ${policyText(options.approve)}), ` +
+              `${options.approvalTimeoutMs / 1000} s to answer; a client without elicitation has every motion refused\n`,
+      );
       const serving = `${hal.mode} robot, ${options.profile} tools`;
       if (
         options.profile !== 'primitives' &&
@@ -155,8 +175,9 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
       }
     } finally {
       await close().catch(() => undefined);
+      stopEvents();
       // the HAL's own cleanup, through the recorder when there is one (it stops the motors)
-      if (recorder !== undefined) await hal.cleanup().catch(() => undefined);
+      if (recorder !== undefined) await recorded.cleanup().catch(() => undefined);
       await opened.close();
       sampling.abort();
       if (recorder !== undefined) {

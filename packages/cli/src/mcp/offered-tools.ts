@@ -1,7 +1,8 @@
 // The tools `hal mcp --tools` offers: the HAL's calls through the executor (the leash, timeouts),
 // the skills over that same executor, or both. Built once per server: over HTTP every request gets
 // a fresh MCP server, but the skills' memory of what the robot saw lasts the whole run.
-import type { OfferedTools } from '@hal/mcp';
+import { approveOverMcp } from '@hal/mcp';
+import type { ApprovalPolicy, OfferedTools } from '@hal/mcp';
 import { createSkills, toolProfile } from '@hal/skills';
 import type { ToolProfile } from '@hal/skills';
 import { createToolExecutor, halTools, toolBackedHal } from '@hal/tools';
@@ -12,6 +13,8 @@ import type { HardwareAbstractionLayer } from '@hal/types';
 export interface OfferedToolsOptions {
   profile: ToolProfile;
   leash: Leash;
+  /** Who approves motions; anything but none puts the MCP approval hook in the leash. */
+  approve?: ApprovalPolicy;
   /** Time one HAL call may take, ms (motions get more). */
   timeoutMs?: number;
 }
@@ -27,7 +30,10 @@ export function offeredTools(
 ): OfferedTools {
   const primitives = createToolExecutor(hal, {
     tools: halTools(hal),
-    leash: options.leash,
+    leash:
+      options.approve === undefined || options.approve === 'none'
+        ? options.leash
+        : { ...options.leash, approve: approveOverMcp },
     ...(options.timeoutMs === undefined ? {} : { timeoutMs: options.timeoutMs }),
   });
   if (options.profile === 'primitives') return primitives;

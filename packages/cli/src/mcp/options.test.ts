@@ -22,9 +22,29 @@ describe('hal mcp options', () => {
       host: '127.0.0.1',
       port: 3333,
       leash: {},
+      approve: 'none',
+      approvalTimeoutMs: 30_000,
       overwrite: false,
     });
     expect(parseCli(['--http', '--port', '0'])).toMatchObject({ http: true, port: 0 });
+  });
+
+  it('takes who approves motions: motion, over:DISTANCE, none; refuses the rest and HTTP', () => {
+    expect(parseCli(['--approve', 'motion'])).toMatchObject({ approve: 'motion' });
+    expect(parseCli(['--approve', 'over:30cm'])).toMatchObject({ approve: { overM: 0.3 } });
+    expect(parseCli(['--approve', 'over:0.5'])).toMatchObject({ approve: { overM: 0.5 } });
+    expect(parseCli(['--approve', 'none', '--http'])).toMatchObject({ approve: 'none' });
+    expect(parseCli(['--approve', 'motion', '--approval-timeout', '5000'])).toMatchObject({
+      approvalTimeoutMs: 5000,
+    });
+    for (const bad of ['always', 'over:', 'over:far', 'over:-1m']) {
+      expect(() => parseCli(['--approve', bad])).toThrow(
+        /"--approve" must be motion, none or over:DISTANCE/,
+      );
+    }
+    expect(() => parseCli(['--approve', 'motion', '--http'])).toThrow(usage);
+    expect(() => parseCli(['--approve', 'motion', '--http'])).toThrow(/needs stdio/);
+    expect(() => parseCli(['--approval-timeout', '10'])).toThrow(/--approval-timeout/);
   });
 
   it("takes its robot from the target options every command has, $HAL_KEY the key's default", () => {

@@ -1,9 +1,12 @@
 // The options of `hal mcp`: the robot (the target options every command takes, the embedded
 // simulator when none is named, maybe in a --world), how to serve (stdio, or HTTP at --host/--port
-// with --http-token), the tools offered (--tools), the leash, and --record. Parsing only;
+// with --http-token), the tools offered (--tools), who approves motions (--approve), the leash,
+// and --record. Parsing only;
 // commands/mcp.ts runs the server.
 import { Option } from 'commander';
 import type { Command } from 'commander';
+import { DEFAULT_APPROVAL_TIMEOUT_MS, parseApprovalPolicy } from '@hal/mcp';
+import type { ApprovalPolicy } from '@hal/mcp';
 import { isToolProfile, TOOL_PROFILES } from '@hal/skills';
 import type { ToolProfile } from '@hal/skills';
 import type { Leash } from '@hal/tools';
@@ -13,7 +16,7 @@ import type { LeashCliOptions } from '../leash-options.js';
 import { addOverwriteOption } from '../output-place.js';
 import { addTargetOptions, namesTarget, resolveTarget } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
-import { integerArg, portArg, usageError } from '../values.js';
+import { integerArg, portArg, readQuantity, usageError } from '../values.js';
 
 /** The default HTTP port of `hal mcp --http`. */
 export const DEFAULT_MCP_HTTP_PORT = 3333;
@@ -36,6 +39,10 @@ export interface McpOptions {
   token?: string;
   timeoutMs?: number;
   leash: Leash;
+  /** Who approves motions: the client's user before every one, or one over a distance, or no one. */
+  approve: ApprovalPolicy;
+  /** How long the user has to answer, ms. */
+  approvalTimeoutMs: number;
   /** An MCAP file to record the served robot's run into. */
   record?: string;
   /** Replace the --record file when it exists. */
@@ -51,6 +58,8 @@ export interface McpCliOptions extends TargetCliOptions, LeashCliOptions {
   port: number;
   httpToken?: string;
   timeout?: number;
+  approve: ApprovalPolicy;
+  approvalTimeout: number;
   record?: string;
   overwrite?: boolean;
 }
@@ -86,6 +95,22 @@ export function addMcpOptions(command: Command): Command {
         integerArg('--timeout', 100, 600_000),
       ),
     )
+    .addOption(
+      new Option(
+        '--approve <policy>',
+        "who approves motions: motion (the MCP client's user, before every motion, by elicitation), over:DISTANCE (only one longer than that: over:30cm) or none",
+      )
+        .argParser(approvalArg)
+        .default('none' as ApprovalPolicy, 'none'),
+    )
+    .addOption(
+      new Option(
+        '--approval-timeout <ms>',
+        'how long the user has to answer an approval; no answer is a no',
+      )
+        .argParser(integerArg('--approval-timeout', 100, 3_600_000))
+        .default(DEFAULT_APPROVAL_TIMEOUT_MS),
+    )
     .option(
       '--record <file>',
       "record the robot's run (every tool call's HAL calls, the pose, e-stops) into this MCAP file",
@@ -93,6 +118,17 @@ export function addMcpOptions(command: Command): Command {
   addOverwriteOption(command, 'the --record file');
   addLeashOptions(command);
   return addTargetOptions(command);
+}
+
+/** `--approve`: motion, none or over:DISTANCE, or USAGE. */
+export function approvalArg(text: string): ApprovalPolicy {
+  try {
+    return parseApprovalPolicy(text, (d) => readQuantity(d, 'distance'));
+  } catch {
+    throw usageError(
+      `"--approve" must be motion, none or over:DISTANCE (metres, or with a unit: over:30cm), got "${text}"`,
+    );
+  }
 }
 
 /** `--tools`: a profile's name, or USAGE listing the three. */
@@ -125,6 +161,11 @@ export function mcpOptions(
       `"--host" ${o.host} is reachable from other machines: give --http-token (16+ characters, or $HAL_MCP_TOKEN)`,
     );
   }
+  if (o.http && o.approve !== 'none') {
+    throw usageError(
+      '"--approve" needs stdio: the HTTP endpoint is stateless and cannot ask its client (give --approve none, or drop --http)',
+    );
+  }
   return {
     target,
     ...(o.world === undefined ? {} : { world: o.world }),
@@ -136,6 +177,8 @@ export function mcpOptions(
     ...(hasToken ? { token } : {}),
     ...(o.timeout === undefined ? {} : { timeoutMs: o.timeout }),
     leash: leashFromOptions(o),
+    approve: o.approve,
+    approvalTimeoutMs: o.approvalTimeout,
     ...(o.record === undefined ? {} : { record: o.record }),
     overwrite: o.overwrite === true,
   };
