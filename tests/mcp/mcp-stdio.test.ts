@@ -28,6 +28,7 @@ describe('hal mcp over stdio (the server process, the SDK client)', () => {
       'robot://state',
       'robot://capabilities',
       'robot://map',
+      'robot://events',
       'robot://camera',
     ]);
     const caps = JSON.parse(
