@@ -65,6 +65,26 @@ describe('hal mcp --approve over stdio (the server process, the SDK client)', ()
     expect(asked).toHaveLength(2);
   });
 
+  it('asks about a skill once, not again for the motions it makes', async () => {
+    const { c, asked } = await connect(
+      ['--tools', 'skills', '--approve', 'motion'],
+      ['accept', 'decline'],
+    );
+    const moved = await c.callTool({ name: 'move', arguments: { cm: 20 } });
+    expect(moved.isError, JSON.stringify(moved.content)).toBe(false);
+    expect(asked).toEqual(['Allow the robot to move: drive 0.20 m forward?']);
+
+    const turned = await c.callTool({ name: 'turn', arguments: { degrees: 90 } });
+    expect(turned.isError).toBe(true);
+    expect(JSON.stringify(turned.content)).toMatch(/turn: denied: the user declined/);
+    expect(asked).toHaveLength(2);
+    const state = JSON.parse(
+      ((await c.readResource({ uri: 'robot://state' })).contents[0] as { text: string }).text,
+    ) as { pose: { position: { x: number }; rotation: { yaw: number } } };
+    expect(state.pose.position.x).toBeCloseTo(0.2, 2);
+    expect(state.pose.rotation.yaw).toBeCloseTo(0, 3);
+  });
+
   it('over:DISTANCE asks only about a longer motion', async () => {
     const { c, asked } = await connect(['--approve', 'over:20cm'], ['decline']);
     expect((await callTool(c, 'move_forward', { distanceCm: 10 })).isError).toBe(false);
