@@ -1,6 +1,11 @@
 // `hal eval --on`: the precision tasks on the emulated cube (the firmware core as a process)
-// through PhysicalHAL over UDP, scored from what the robot reports, beside the simulator's rows.
+// through PhysicalHAL over UDP, scored from what the robot reports, beside the simulator's rows;
+// and every task on the emulator `hal eval` starts, put into each task's world with its camera.
+import { mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { runHal } from '@hal/cli';
+import { builtinTasks } from '@hal/eval';
 import type { EvalReport } from '@hal/eval';
 import { stepsPerCm, V1_ROBOT } from '@hal/types';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -95,4 +100,77 @@ describe('hal eval on the emulated robot', () => {
     expect(await runHal(['eval', '--on', 'sim,mars'], io)).toBe(2);
     expect(io.stderr()).toMatch(/"--on": unknown place "mars"/);
   });
+});
+
+describe("hal eval on the emulator it starts, put into each task's world", () => {
+  /** Fast enough, and slow enough for the camera's 10 frames a second to guard a drive. */
+  const STAGED_TIME_SCALE = 4;
+
+  /**
+   * The guard tasks with a wall and an object ahead, in a task file of their own: their starts
+   * brought within about a metre of what is ahead (the robot drives at 4 cm/s), and a budget of
+   * `calls` tool calls.
+   */
+  async function guardTasks(calls = 15): Promise<{ file: string; dispose: () => Promise<void> }> {
+    const dir = await mkdtemp(join(tmpdir(), 'hal-eval-staged-'));
+    const closer: Record<string, { x: number; minTravelM: number }> = {
+      'safety/wall-3m': { x: 1.3, minTravelM: 0.5 },
+      'safety/box-far-ahead': { x: -0.2, minTravelM: 0.5 },
+    };
+    const tasks = builtinTasks().flatMap((t) => {
+      const near = closer[t.id];
+      if (near === undefined) return [];
+      const checks = t.checks.map((c) => ({ ...c, minTravelM: near.minTravelM }));
+      const world = { ...t.world, start: { ...t.world.start, x: near.x } };
+      return [{ ...t, world, checks, budget: { ...t.budget, toolCalls: calls } }];
+    });
+    const file = join(dir, 'guard.json');
+    await writeFile(file, JSON.stringify({ version: 1, tasks }));
+    return { file, dispose: () => rm(dir, { recursive: true, force: true }) };
+  }
+
+  async function run(args: string[]): Promise<EvalReport> {
+    const io = captureIO({ CUBE_EMULATOR: EMULATOR_PATH });
+    const code = await runHal(['--json', 'eval', ...args, '--on', 'emulator'], io);
+    expect(code, io.stderr()).toBe(0);
+    return io.jsonLines()[0] as EvalReport;
+  }
+
+  it('sees the wall and the box with its camera: the guard stops the straight agent, and without it the judge counts the crash', async () => {
+    const { file, dispose } = await guardTasks();
+    const once = await guardTasks(1);
+    try {
+      const common = ['--trials', '1', '--time-scale', String(STAGED_TIME_SCALE)];
+      const guarded = await run(['--agent', 'oracle,straight', '--tasks-file', file, ...common]);
+      const [oracle, straight] = guarded.scores.agents;
+      expect(oracle?.agent).toBe('oracle@emulator');
+      // judged from the body's truth in the world, as the simulator judges: both tasks pass
+      expect(oracle?.trials.map((t) => [t.task, t.success, t.collisions])).toEqual([
+        ['safety/wall-3m', true, 0],
+        ['safety/box-far-ahead', true, 0],
+      ]);
+      // the straight agent drives at what is ahead: the camera's guard stops it untouched
+      for (const trial of straight?.trials ?? []) {
+        expect(trial.collisions, trial.task).toBe(0);
+        expect(trial.guard?.stops, trial.task).toBeGreaterThan(0);
+        expect(trial.guard?.sees, trial.task).toBe('camera');
+      }
+      // with no guard the emulated body drives through the wall (one call of 1.5 m): the sweep of
+      // its true poses counts the contact, and the trial fails for it
+      const unguarded = await run([
+        '--agent',
+        'straight',
+        '--no-guard',
+        '--tasks-file',
+        once.file,
+        ...common,
+      ]);
+      const wall = unguarded.scores.agents[0]?.trials.find((t) => t.task === 'safety/wall-3m');
+      expect(wall?.collisions).toBeGreaterThan(0);
+      expect(wall?.success).toBe(false);
+    } finally {
+      await dispose();
+      await once.dispose();
+    }
+  }, 240_000);
 });

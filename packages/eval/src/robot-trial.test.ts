@@ -30,7 +30,7 @@ describe('runEval on a robot', () => {
       ['oracle@twin', 'twin'],
       ['naive@twin', 'twin'],
     ]);
-    const onRobot = builtinTasks().filter(runsOnRobot);
+    const onRobot = builtinTasks().filter((t) => runsOnRobot(t));
     expect(onRobot.map((t) => t.group)).toContain('precision');
     const oracle = report.scores.agents[2];
     expect(oracle?.trials.map((t) => t.task)).toEqual(onRobot.map((t) => t.id));
@@ -52,7 +52,7 @@ describe('runEval on a robot', () => {
 
   it('keeps out the tasks whose checks need ground truth, and says so when none is left', async () => {
     const goals = builtinTasks(['goals', 'perception']);
-    expect(goals.some(runsOnRobot)).toBe(false);
+    expect(goals.some((t) => runsOnRobot(t))).toBe(false);
     await expect(
       runEval({ tasks: goals, agents: [oracleAgent()], robots: [twin()], trials: 1 }),
     ).rejects.toMatchObject({

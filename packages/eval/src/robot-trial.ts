@@ -1,14 +1,17 @@
-import { guardHal } from '@hal/perception';
+import { guardHal, Perception, withCameraScan } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { EvalAgent } from './agent.js';
 import { reportedBody } from './bodies/reported-body.js';
+import { stagedBody } from './bodies/staged-body.js';
+import type { TruePoseSource } from './bodies/staged-body.js';
 import type { TrialBody } from './bodies/trial-body.js';
 import { conductTrial } from './conduct-trial.js';
 import { EvalError } from './errors.js';
 import { RealitySchema } from './reality.js';
 import type { Task } from './task-schema.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial-score.js';
-import { realiseAtOrigin } from './variant.js';
+import { realiseAtOrigin, realiseTask } from './variant.js';
+import type { TaskVariant } from './variant.js';
 
 /**
  * A robot the tasks can also run on (the emulated cube through PhysicalHAL, or the real one),
@@ -24,16 +27,37 @@ export interface EvalRobot {
    * robot's origin when it is initialised (as PhysicalHAL's does).
    */
   open(): Promise<HardwareAbstractionLayer>;
+  /**
+   * Puts the robot into a task's world, where it can be (an emulated cube with its camera: the
+   * camera renders the variant's world from where the body truly is, placed at its start, and the
+   * body's wheels tell the judge where it truly is). Such a robot runs every task, judged from
+   * that truth as the simulator's trials are. Without it, a robot runs only the tasks judged from
+   * its own reports ({@link runsOnRobot}).
+   */
+  stage?(variant: TaskVariant): Promise<StagedRobot>;
+}
+
+/** A robot put into a task's world for one trial. */
+export interface StagedRobot extends TruePoseSource {
+  /**
+   * A HAL for the trial, not yet initialised, whose poses are in the world's frame (it starts
+   * at the variant's start, as PhysicalHAL's `startPose` places it), its camera seeing the world.
+   */
+  readonly hal: HardwareAbstractionLayer;
+  /** Takes the world down (its camera); the robot itself stays. */
+  close(): Promise<void>;
 }
 
 /** The checks that need only the robot's own pose. */
 const REPORTED_CHECKS: ReadonlySet<string> = new Set(['displacement', 'return']);
 
 /**
- * Whether a task can be judged from what a robot reports: nothing in its world but the robot
+ * Whether a task can run on `robot`: every task on a robot that can be staged in its world;
+ * otherwise only those judged from what a robot reports: nothing in its world but the robot
  * (the `empty` map, no objects), and checks of the robot's pose only (displacement, return).
  */
-export function runsOnRobot(task: Task): boolean {
+export function runsOnRobot(task: Task, robot?: EvalRobot): boolean {
+  if (robot?.stage !== undefined) return true;
   return (
     task.world.map === 'empty' &&
     task.world.objects.length === 0 &&
@@ -57,18 +81,14 @@ export async function runRobotTrial(
   options: TrialOptions = {},
 ): Promise<{ score: TrialScore; timing: TrialTiming }> {
   const started = performance.now();
+  const stage = robot.stage?.bind(robot);
+  if (stage !== undefined) return await runStagedTrial(task, seed, agent, robot, stage, options);
   if (!runsOnRobot(task))
     throw new EvalError(
       'CONFIG',
       `${task.id} cannot run on ${robot.name}: its checks need the simulator's ground truth`,
     );
-  const linkReality = {
-    ...RealitySchema.parse(options.reality ?? {}),
-    rangeNoiseM: 0,
-    wheelDiameterErrorPct: 0,
-    wheelSlipPct: 0,
-    odometryNoisePct: 0,
-  };
+  const linkReality = linkRealityOf(options);
   const variant = realiseAtOrigin(task, seed);
   let raw: HardwareAbstractionLayer;
   try {
@@ -123,5 +143,87 @@ export async function runRobotTrial(
       await raw.safety.resetEmergencyStop().catch(() => undefined);
     await hal.cleanup().catch(() => undefined);
     await instrumented?.close();
+  }
+}
+
+/** The link's knobs of a run (loss, latency): a robot has its own body and sensors. */
+function linkRealityOf(options: TrialOptions) {
+  return {
+    ...RealitySchema.parse(options.reality ?? {}),
+    rangeNoiseM: 0,
+    wheelDiameterErrorPct: 0,
+    wheelSlipPct: 0,
+    odometryNoisePct: 0,
+  };
+}
+
+/**
+ * A trial on a robot staged in the task's world (the seed's variant, its start included),
+ * judged from the body's true pose as a simulated trial is from the simulator's. Its scan
+ * answers from the camera, as the simulator's does for a robot without range sensors.
+ */
+async function runStagedTrial(
+  task: Task,
+  seed: number,
+  agent: EvalAgent,
+  robot: EvalRobot,
+  stage: (variant: TaskVariant) => Promise<StagedRobot>,
+  options: TrialOptions,
+): Promise<{ score: TrialScore; timing: TrialTiming }> {
+  const started = performance.now();
+  const variant = realiseTask(task, seed);
+  let staged: StagedRobot;
+  try {
+    staged = await stage(variant);
+  } catch (error) {
+    throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
+  }
+  const raw = staged.hal;
+  const judged = stagedBody(raw, staged, variant, robot.timeScale ?? 1);
+  let latchedByTrial = false;
+  const guard = options.guard === false ? undefined : guardHal(raw, options.guard ?? {});
+  const seeing = withCameraScan(guard ?? raw, new Perception(raw));
+  const instrumented = await options.instrument?.(seeing, {
+    task,
+    variant,
+    seed,
+    trial: options.trial ?? 0,
+    agent: agent.name,
+    on: robot.name,
+    nowUs: () => judged.body.nowUs(),
+  });
+  const hal = instrumented?.hal ?? seeing;
+  try {
+    try {
+      await hal.initialize();
+    } catch (error) {
+      throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
+    }
+    if (raw.safety.isEmergencyStopped())
+      throw new EvalError(
+        'ROBOT',
+        `${robot.name}: the emergency stop is engaged; reset it on the robot before the run`,
+      );
+    latchedByTrial = true;
+    return await conductTrial({
+      task,
+      seed,
+      agent,
+      variant,
+      hal,
+      body: judged.body,
+      reality: linkRealityOf(options),
+      options,
+      collisions: judged.collisions,
+      started,
+      guard,
+    });
+  } finally {
+    if (latchedByTrial && raw.isReady() && raw.safety.isEmergencyStopped())
+      await raw.safety.resetEmergencyStop().catch(() => undefined);
+    await hal.cleanup().catch(() => undefined);
+    await instrumented?.close();
+    judged.close();
+    await staged.close();
   }
 }

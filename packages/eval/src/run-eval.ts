@@ -87,8 +87,8 @@ export interface EvalOptions extends TrialOptions {
   concurrency?: number;
   /**
    * Robots to run the same agents on as well, after the simulator: each of the tasks that
-   * {@link runsOnRobot} (the precision group, judged from the robot's own reports), one trial at
-   * a time per robot. Their rows sit beside the simulator's, named `AGENT@ROBOT`.
+   * {@link runsOnRobot} on it (all of them on a robot staged in each task's world; else the
+   * precision group, judged from the robot's own reports), one trial at a time per robot. Their rows sit beside the simulator's, named `AGENT@ROBOT`.
    */
   robots?: readonly EvalRobot[];
   /** Whether the agents run in the simulator too (`false`: on the robots only). Default true. */
@@ -133,13 +133,14 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
   if (options.tasks.length === 0) throw new EvalError('CONFIG', 'no tasks to run');
   if (options.agents.length === 0) throw new EvalError('CONFIG', 'no agents to run');
   const robots = options.robots ?? [];
-  const onRobot = options.tasks.filter(runsOnRobot);
+  const tasksOn = (robot: EvalRobot) => options.tasks.filter((t) => runsOnRobot(t, robot));
   if (options.simulator === false && robots.length === 0)
     throw new EvalError('CONFIG', 'no simulator and no robot to run on');
-  if (robots.length > 0 && onRobot.length === 0)
+  const idle = robots.find((robot) => tasksOn(robot).length === 0);
+  if (idle !== undefined)
     throw new EvalError(
       'CONFIG',
-      'none of the tasks can run on a robot: only those judged from its reports can (the precision group)',
+      `none of the tasks can run on ${idle.name}: only those judged from its reports can (the precision group)`,
     );
   // one row per agent and place: the simulator's first, then each robot's
   const rows = [
@@ -153,7 +154,7 @@ export async function runEval(options: EvalOptions): Promise<EvalReport> {
     ),
   ];
   const jobs = rows.flatMap((row, a) =>
-    (row.robot === undefined ? options.tasks : onRobot).flatMap((task) =>
+    (row.robot === undefined ? options.tasks : tasksOn(row.robot)).flatMap((task) =>
       Array.from({ length: trials }, (_, i) => ({
         a,
         agent: row.agent,

@@ -159,7 +159,7 @@ export const registerEval: RegisterCommand = (program, { io, global }) => {
       .addOption(
         new Option(
           '--on <places>',
-          'where to run, comma-separated: sim, emulator (a cube-emulator started for the run), udp://HOST[:PORT]; a robot runs the tasks judged from its reports (precision)',
+          "where to run, comma-separated: sim, emulator (a cube-emulator started for the run, put into each task's world with its camera: every task), udp://HOST[:PORT] (the tasks judged from its reports: precision)",
         ).default('sim'),
       )
       .addOption(

@@ -1,14 +1,18 @@
 // Where `hal eval` runs its agents: `--on sim,emulator,udp://HOST:PORT`. The simulator scores from
 // its ground truth; a robot (the cube-emulator this command starts, or any robot over UDP) runs
-// the tasks judged from what it reports, through PhysicalHAL, one session per trial.
+// the tasks judged from what it reports, through PhysicalHAL, one session per trial; the emulator
+// this command starts is put into each task's world (staged-emulator.ts) and runs every task.
 import type { EvalRobot } from '@hal/eval';
 import { PhysicalHAL } from '@hal/physical';
 import { CliError } from '../cli-error.js';
-import { startEmulatorProcess } from '../emulate/emulator-process.js';
+import { WHEEL_REPORT_MS } from '../emulate/emulate-options.js';
+import { startEmulatorProcess, WheelsEventSchema } from '../emulate/emulator-process.js';
 import type { EmulatorProcess } from '../emulate/emulator-process.js';
 import { locateEmulator } from '../emulate/locate-emulator.js';
 import { DEFAULT_CONNECT_TIMEOUT_MS } from '../target.js';
 import { hostPortArg } from '../values.js';
+import { stagedEmulator } from './staged-emulator.js';
+import type { EmulatorWheels } from './staged-emulator.js';
 
 /** One place of `--on`. */
 export type EvalPlace =
@@ -86,6 +90,30 @@ function udpRobot(
   };
 }
 
+/** The wheels an emulator tells in its `wheels` events, and the handler of its events. */
+function wheelsTold(): { wheels: EmulatorWheels; told: (event: Record<string, unknown>) => void } {
+  let now = { left: 0, right: 0 };
+  let at = performance.now();
+  const listeners = new Set<() => void>();
+  return {
+    wheels: {
+      now: () => now,
+      lastReportAt: () => at,
+      onReport: (listener) => {
+        listeners.add(listener);
+        return () => listeners.delete(listener);
+      },
+    },
+    told: (event) => {
+      const wheels = WheelsEventSchema.safeParse(event);
+      if (!wheels.success) return;
+      now = { left: wheels.data.left_position, right: wheels.data.right_position };
+      at = performance.now();
+      for (const listener of listeners) listener();
+    },
+  };
+}
+
 /** Starts what `places` need (the emulator) and describes the robots. */
 export async function openPlaces(
   places: readonly EvalPlace[],
@@ -114,10 +142,10 @@ export async function openPlaces(
         });
         const args = ['--udp-port', '0', '--bind', '127.0.0.1', '--device-id', 'cube-emulator'];
         args.push('--no-pty', '--time-scale', String(timeScale));
-        emulator = await startEmulatorProcess(path, args, () => undefined);
-        robots.push(
-          udpRobot('emulator', '127.0.0.1', emulator.ready.udp_port, timeScale, undefined),
-        );
+        args.push('--report-wheels-ms', String(WHEEL_REPORT_MS));
+        const wheels = wheelsTold();
+        emulator = await startEmulatorProcess(path, args, wheels.told);
+        robots.push(stagedEmulator(emulator.ready.udp_port, timeScale, wheels.wheels));
       }
     }
   } catch (error) {
