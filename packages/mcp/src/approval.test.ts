@@ -119,6 +119,26 @@ describe('approval by elicitation (--approve)', () => {
     expect(await x(hal)).toBe(0);
   });
 
+  it('withdraws the open question when a stop comes: nothing moves after it', async () => {
+    let asked!: () => void;
+    const question = new Promise<void>((resolve) => (asked = resolve));
+    const person: Person = {
+      asked: [],
+      answer: () => {
+        asked();
+        return new Promise<ElicitResult>(() => undefined); // the person is away
+      },
+    };
+    const { client: c, sim: hal } = await connect('motion', person);
+    const moving = c.callTool({ name: 'move_forward', arguments: { distanceCm: 30 } });
+    await question;
+    expect((await c.callTool({ name: 'stop', arguments: {} })).isError).toBe(false);
+    const result = await moving;
+    expect(result.isError).toBe(true);
+    expect(textOf(result)).toMatch(/a stop came while the question was open/);
+    expect(await x(hal)).toBe(0);
+  });
+
   it('never holds stop and emergency_stop, nor asks about reads', async () => {
     const person: Person = { asked: [], answer: async () => ({ action: 'decline' }) };
     const { client: c, sim: hal } = await connect('motion', person);

@@ -11,6 +11,11 @@ export const NO_ELICITATION =
   'and this server asks before motions (use a client that supports elicitation, or run the ' +
   'server without approval)';
 
+const withdrawn = (words: string): ApprovalDecision => ({
+  allow: false,
+  reason: `a stop came while the question was open (${words}); nothing moved`,
+});
+
 /** The request the question belongs to. */
 export interface AskingRequest {
   requestId: RequestId;
@@ -24,15 +29,18 @@ export function canElicit(server: Server): boolean {
 
 /**
  * A question for `server`'s client within `request`: "Allow the robot to <words>?", with only
- * accept, decline and cancel as answers, unanswered after `timeoutMs`.
+ * accept, decline and cancel as answers, unanswered after `timeoutMs`. `stopped()` answers the
+ * signal of the next stop: a stop or an e-stop while the question is open withdraws it (no).
  */
 export function elicitApproval(
   server: Server,
   request: AskingRequest,
   timeoutMs: number,
+  stopped: () => AbortSignal,
 ): (words: string) => Promise<ApprovalDecision> {
   return async (words) => {
     if (!canElicit(server)) return { allow: false, reason: `${NO_ELICITATION}; nothing moved` };
+    const stop = stopped();
     try {
       const answer = await server.elicitInput(
         {
@@ -40,8 +48,13 @@ export function elicitApproval(
           message: `Allow the robot to ${words}?`,
           requestedSchema: { type: 'object', properties: {} },
         },
-        { relatedRequestId: request.requestId, timeout: timeoutMs, signal: request.signal },
+        {
+          relatedRequestId: request.requestId,
+          timeout: timeoutMs,
+          signal: AbortSignal.any([request.signal, stop]),
+        },
       );
+      if (stop.aborted) return withdrawn(words);
       if (answer.action === 'accept') return { allow: true };
       return {
         allow: false,
@@ -51,6 +64,7 @@ export function elicitApproval(
             : `the user cancelled the question (${words}); nothing moved`,
       };
     } catch (thrown) {
+      if (stop.aborted) return withdrawn(words);
       if (thrown instanceof McpError && thrown.code === ErrorCode.RequestTimeout) {
         return {
           allow: false,

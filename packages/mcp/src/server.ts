@@ -108,6 +108,7 @@ export function createRobotMcpServer(
     state: () => stateOf(monitor),
   });
 
+  let stops = new AbortController();
   const summarize: Summarize = async (tool, args) => {
     try {
       const pose = await hal.locomotion.getPose();
@@ -131,12 +132,17 @@ export function createRobotMcpServer(
     const { name } = request.params;
     const args = argsOf(request.params.arguments);
     const tool = offered.tools.find((t) => t.name === name);
+    if (tool?.safety !== undefined) {
+      // a stop withdraws the questions open: what was asked about before it does not run after it
+      stops.abort();
+      stops = new AbortController();
+    }
     if (tool?.safety === 'estop') events.expect('estop');
     if (name === 'reset_emergency_stop') events.expect('reset');
     const context: CallContext = {
       tool: name,
       policy,
-      ask: elicitApproval(server, extra, timeoutMs),
+      ask: elicitApproval(server, extra, timeoutMs, () => stops.signal),
       summarize,
       approved: false,
       hookConsulted: false,
