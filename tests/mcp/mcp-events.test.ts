@@ -1,0 +1,88 @@
+// Events of a robot over a link, through the real `hal mcp --udp` process and the SDK's client:
+// the emulated cube behind a UDP proxy that stops passing datagrams and passes them again. The
+// client subscribed to robot://events is told of the link lost and back, and its log, at the
+// level it set (error), has the loss and not the return (info).
+import { Client } from '@modelcontextprotocol/sdk/client/index.js';
+import { StdioClientTransport } from '@modelcontextprotocol/sdk/client/stdio.js';
+import {
+  LoggingMessageNotificationSchema,
+  ResourceUpdatedNotificationSchema,
+} from '@modelcontextprotocol/sdk/types.js';
+import type { LoggingMessageNotification } from '@modelcontextprotocol/sdk/types.js';
+import type { RobotEvent } from '@hal/mcp';
+import { afterAll, describe, expect, it } from 'vitest';
+import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
+import { startFaultProxy } from '../physical/fault-proxy.js';
+import { serverCommand } from './client.js';
+
+afterAll(stopAllEmulators);
+
+const KEY = '00112233445566778899aabbccddeeff';
+
+async function events(client: Client): Promise<RobotEvent[]> {
+  const read = await client.readResource({ uri: 'robot://events' });
+  return (JSON.parse((read.contents[0] as { text: string }).text) as { events: RobotEvent[] })
+    .events;
+}
+
+describe('hal mcp --udp: the link lost and back, as events and in the log', () => {
+  it('tells a subscribed client, and logs at the level it set', async () => {
+    const emulator = await startEmulator({ key: KEY, pty: false, hostTimeoutMs: 10_000 });
+    const proxy = await startFaultProxy({
+      robotPort: emulator.udpPort,
+      seed: 1,
+      toRobot: {},
+      toHost: {},
+    });
+    const client = new Client({ name: 'hal-events-test', version: '1.0.0' });
+    const logs: LoggingMessageNotification['params'][] = [];
+    let updated: () => void = () => undefined;
+    client.setNotificationHandler(LoggingMessageNotificationSchema, (n) => {
+      logs.push(n.params);
+    });
+    client.setNotificationHandler(ResourceUpdatedNotificationSchema, () => updated());
+    /** Resolves once robot://events holds an event of `type`. */
+    const eventOf = async (type: RobotEvent['type']) => {
+      for (;;) {
+        const update = new Promise<void>((resolve) => (updated = resolve));
+        const found = (await events(client)).find((e) => e.type === type);
+        if (found !== undefined) return found;
+        await update;
+      }
+    };
+    await client.connect(
+      new StdioClientTransport({
+        ...serverCommand(['--udp', `127.0.0.1:${proxy.port}`]),
+        env: { ...(process.env as Record<string, string>), HAL_KEY: KEY },
+        stderr: 'ignore',
+      }),
+    );
+    try {
+      await client.setLoggingLevel('error');
+      const fromNow = logs.length; // what came before the level was set is not filtered
+      await client.subscribeResource({ uri: 'robot://events' });
+      proxy.setFaults({ toRobot: { drop: 1 }, toHost: { drop: 1 } });
+      expect(await eventOf('link_lost')).toMatchObject({
+        message: 'The link to the robot is lost; reconnecting',
+      });
+      proxy.setFaults({ toRobot: {}, toHost: {} });
+      expect(await eventOf('link_back')).toMatchObject({
+        message: 'The link to the robot is back',
+      });
+      // a request answered after both: every log line sent before it has arrived
+      await client.readResource({ uri: 'robot://state' });
+      // the loss (error) was sent, the return (info) and everything else below error was not
+      const after = logs.slice(fromNow);
+      expect(after).toContainEqual({
+        level: 'error',
+        logger: 'events',
+        data: 'The link to the robot is lost; reconnecting',
+      });
+      expect(after.filter((l) => l.level !== 'error')).toEqual([]);
+    } finally {
+      await client.close();
+      await proxy.close();
+      await emulator.stop();
+    }
+  }, 60_000);
+});
