@@ -1,6 +1,7 @@
 // `hal serve`: owns one robot's HAL (--sim, --udp or --serial) and serves it on NATS (the
-// gateway of @hal/nats), on WebSocket (serveHal of @hal/remote), or both, until Ctrl-C. Then it
-// stops serving and cleans the HAL up, which stops a physical robot.
+// gateway of @hal/nats), on WebSocket (serveHal of @hal/remote), as a live view for Foxglove
+// (--foxglove), or any of them together, until Ctrl-C. Then it stops serving and cleans the HAL
+// up, which stops a physical robot.
 import { Command, Option } from 'commander';
 import { TAFY_NODE_TYPE } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
@@ -9,6 +10,7 @@ import { GuardedHAL } from '@hal/perception';
 import { recordHal } from '@hal/recorder';
 import type { RecorderStats } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import type { FoxgloveServeOptions } from '@hal/foxglove';
 import type { HalGateway } from '@hal/nats';
 import { integerArg } from '../values.js';
 import { checkBinding, serveHal } from '@hal/remote/server';
@@ -24,6 +26,8 @@ import type { ServeCliOptions, ServePlan } from '../serve/where.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { Target, TargetCliOptions } from '../target.js';
 import { listenError } from '../listen-error.js';
+import { addFoxgloveOptions, foxglovePlan, startLiveView } from '../foxglove/live-view.js';
+import type { FoxgloveCliOptions, LiveView } from '../foxglove/live-view.js';
 import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options.js';
 import type { GuardCliOptions } from '../guard-options.js';
 import { cliLogger } from '../logger.js';
@@ -39,7 +43,9 @@ type NatsConnection = Awaited<ReturnType<typeof openConnection>>;
 
 export const registerServe: RegisterCommand = (program, { io, global }) => {
   const command = new Command('serve')
-    .description('serve one robot (--sim, --udp or --serial) on NATS and/or WebSocket')
+    .description(
+      'serve one robot (--sim, --udp or --serial) on NATS, WebSocket and/or as a Foxglove live view',
+    )
     .addOption(
       new Option(
         '--device <id>',
@@ -102,10 +108,12 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
   );
   addOverwriteOption(command, 'the --record file');
   addNatsOptions(command);
+  addFoxgloveOptions(command);
   addGuardOptions(command);
   addTargetOptions(command, SERVED_KINDS);
-  command.action(async (options: ServeCliOptions & TargetCliOptions & GuardCliOptions) => {
-    const plan = servePlan(options, io.env);
+  command.action(async (options: ServeOptions) => {
+    const foxglove = foxglovePlan(options, io.env);
+    const plan = planOf(options, io.env, foxglove);
     // the robot options only (--device here names the served id, not a NATS robot to reach)
     const target = resolveTarget(options, io.env, SERVED_KINDS);
     if (plan.ws !== undefined) checkBinding(plan.ws.host, plan.ws.token); // before touching the robot
@@ -119,7 +127,7 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
           defaultDevice: plan.nats.defaultDevice,
         });
       }
-      await serveTarget({ io, global }, options, plan, target, nc);
+      await serveTarget({ io, global }, options, { ...plan, foxglove }, target, nc);
     } finally {
       await nc?.close().catch(() => undefined);
     }
@@ -127,11 +135,38 @@ export const registerServe: RegisterCommand = (program, { io, global }) => {
   program.addCommand(command);
 };
 
+type ServeOptions = ServeCliOptions & TargetCliOptions & GuardCliOptions & FoxgloveCliOptions;
+
+/**
+ * Where to serve. --foxglove alone is a door of its own; beside it, the WebSocket and NATS
+ * options keep their rules (a --host without --ws-port is refused as before).
+ */
+function planOf(
+  options: ServeOptions,
+  env: Readonly<Record<string, string | undefined>>,
+  foxglove: FoxgloveServeOptions | undefined,
+): ServePlan {
+  if (foxglove === undefined || options.nats !== undefined || options.wsPort !== undefined) {
+    return servePlan(options, env);
+  }
+  for (const [value, name] of [
+    [options.host, '--host'],
+    [options.token, '--token'],
+    [options.allowOrigin, '--allow-origin'],
+    [options.heartbeatTimeout, '--heartbeat-timeout'],
+  ] as const) {
+    if (value !== undefined) throw new CliError('USAGE', `"${name}" needs --ws-port`);
+  }
+  // the NATS options without --nats are refused there; the WebSocket plan it makes is not used
+  const { nats } = servePlan({ ...options, wsPort: 0 }, env);
+  return nats === undefined ? {} : { nats };
+}
+
 /** Opens the robot, serves it until Ctrl-C, then stops serving and lets it go. */
 async function serveTarget(
   { io, global }: CommandContext,
-  options: ServeCliOptions & TargetCliOptions & GuardCliOptions,
-  plan: ServePlan,
+  options: ServeOptions,
+  plan: ServePlan & { foxglove: FoxgloveServeOptions | undefined },
   target: Target,
   nc: NatsConnection | undefined,
 ): Promise<void> {
@@ -150,12 +185,17 @@ async function serveTarget(
   });
   // the guard stops what the network drives before an obstacle ahead
   const { hal: guarded } = guardFromOptions(opened.hal, options, io, global().json);
-  const hal = recording?.wrap(guarded, options.device ?? opened.deviceId) ?? guarded;
+  const recorded = recording?.wrap(guarded, options.device ?? opened.deviceId) ?? guarded;
+  let live: LiveView | undefined;
   let gateway: HalGateway | undefined;
   let server: HalServer | undefined;
   let announcer: TafyNodeAnnouncer | undefined;
   try {
     const deviceId = options.device ?? opened.deviceId;
+    // the view sees every door's calls: the other doors serve its tapped HAL
+    live = await startLiveView(recorded, plan.foxglove, { io, global }, { deviceId });
+    const hal = live.hal;
+    const liveUrl = live.url;
     if (plan.nats !== undefined && nc !== undefined) {
       try {
         deviceIdArg(deviceId);
@@ -213,6 +253,7 @@ async function serveTarget(
             },
           }),
       ...(server === undefined ? {} : { ws: { url: server.url } }),
+      ...(liveUrl === undefined ? {} : { foxglove: { url: liveUrl } }),
       ...(mdns === undefined ? {} : { mdns }),
     };
     emit(io, global(), serving, () =>
@@ -222,6 +263,7 @@ async function serveTarget(
           ? []
           : [`  nats ${serving.nats.servers.join(',')}: ${serving.nats.subjects.join(', ')}`]),
         ...(server === undefined ? [] : [`  listening ${server.url}`]),
+        ...(liveUrl === undefined ? [] : [`  foxglove ${liveUrl}`]),
         ...(mdns === undefined
           ? []
           : 'error' in mdns
@@ -236,17 +278,18 @@ async function serveTarget(
     await announcer?.stop().catch(() => undefined);
     await server?.close().catch(() => undefined);
     await gateway?.close().catch(() => undefined);
+    await live?.close().catch(() => undefined);
     await opened.close();
   }
-  const recorded = await recording?.close();
+  const written = await recording?.close();
   emit(
     io,
     global(),
-    { event: 'stopped', ...(recorded === undefined ? {} : { recording: recorded }) },
+    { event: 'stopped', ...(written === undefined ? {} : { recording: written }) },
     () =>
-      recorded === undefined
+      written === undefined
         ? 'stopped'
-        : `stopped; recorded ${recorded.written} messages to ${recorded.file}${recorded.dropped > 0 ? `, ${recorded.dropped} dropped` : ''}`,
+        : `stopped; recorded ${written.written} messages to ${written.file}${written.dropped > 0 ? `, ${written.dropped} dropped` : ''}`,
   );
 }
 
