@@ -14,7 +14,7 @@ describe('the README example', () => {
     const rates = report.scores.agents.map((a) => [a.agent, a.overall.rate]);
     expect(rates).toEqual([
       ['oracle', 1],
-      ['naive', 0.25],
+      ['naive', 0.2549],
       ['claimer', 0],
     ]);
     expect(JSON.stringify((await run()).scores)).toBe(JSON.stringify(report.scores));

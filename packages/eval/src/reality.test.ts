@@ -4,9 +4,36 @@ import { oracleAgent } from './agents/oracle.js';
 import { builtinTasks } from './builtin-tasks.js';
 import type { EvalAgent } from './agent.js';
 import { navigationAgent } from './agents/navigation.js';
+import { RealitySchema, trialReality } from './reality.js';
 import type { RealityInput } from './reality.js';
 import { runEval } from './run-eval.js';
 import type { EvalReport } from './run-eval.js';
+
+describe('trialReality', () => {
+  it("runs each knob at the higher of the run's and the task's", () => {
+    const task = RealitySchema.parse({ wheelSlipPct: 5, latencyMs: 100 });
+    expect(trialReality({ latencyMs: 300, lossRate: 0.2 }, task)).toEqual({
+      ...RealitySchema.parse({}),
+      wheelSlipPct: 5,
+      latencyMs: 300,
+      lossRate: 0.2,
+    });
+    expect(trialReality({ wheelSlipPct: 1 }, task).wheelSlipPct).toBe(5);
+    expect(trialReality(undefined, undefined)).toEqual(RealitySchema.parse({}));
+  });
+
+  it("holds a task's own knobs in a run that sets none: the lossy-link task loses calls", async () => {
+    const lossy = builtinTasks(['robustness']).filter((t) => t.id === 'robustness/lossy-link');
+    const calm = lossy.map(({ reality: _reality, ...task }) => task);
+    const lost = async (tasks: typeof lossy) =>
+      (
+        await runEval({ tasks, agents: [naiveAgent()], trials: 4, seed: 1 })
+      ).scores.agents[0]?.trials.reduce((sum, t) => sum + t.lostCalls, 0);
+    expect(lossy[0]?.reality?.lossRate).toBe(0.3);
+    expect(await lost(lossy)).toBeGreaterThan(0);
+    expect(await lost(calm)).toBe(0);
+  });
+});
 
 describe('the reality knobs', () => {
   it('lose calls by the seed: the oracle recovers, the same seed loses the same calls', async () => {

@@ -52,3 +52,16 @@ export function bodyErrorOf(reality: Reality, seed: number): BodyErrorInput | un
   if (wheelDiameterErrorPct === 0 && wheelSlipPct === 0 && odometryNoisePct === 0) return undefined;
   return { wheelDiameterErrorPct, wheelSlipPct, odometryNoisePct, seed };
 }
+
+/**
+ * The knobs a trial runs with: each the higher of the run's and the task's, so a task's harder
+ * conditions hold in every run and a run's knobs make every task at least that hard.
+ */
+export function trialReality(run: RealityInput | undefined, task: Reality | undefined): Reality {
+  const mine = RealitySchema.parse(run ?? {});
+  if (task === undefined) return mine;
+  const harder = { ...mine };
+  for (const key of Object.keys(mine) as (keyof Reality)[])
+    harder[key] = Math.max(mine[key], task[key]);
+  return harder;
+}

@@ -7,7 +7,7 @@ import type { TruePoseSource } from './bodies/staged-body.js';
 import type { TrialBody } from './bodies/trial-body.js';
 import { conductTrial } from './conduct-trial.js';
 import { EvalError } from './errors.js';
-import { RealitySchema } from './reality.js';
+import { trialReality } from './reality.js';
 import type { Task } from './task-schema.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial-score.js';
 import { realiseAtOrigin, realiseTask } from './variant.js';
@@ -88,7 +88,7 @@ export async function runRobotTrial(
       'CONFIG',
       `${task.id} cannot run on ${robot.name}: its checks need the simulator's ground truth`,
     );
-  const linkReality = linkRealityOf(options);
+  const linkReality = linkRealityOf(options, task);
   const variant = realiseAtOrigin(task, seed);
   let raw: HardwareAbstractionLayer;
   try {
@@ -146,10 +146,10 @@ export async function runRobotTrial(
   }
 }
 
-/** The link's knobs of a run (loss, latency): a robot has its own body and sensors. */
-function linkRealityOf(options: TrialOptions) {
+/** The link's knobs of a trial (loss, latency): a robot has its own body and sensors. */
+function linkRealityOf(options: TrialOptions, task: Task) {
   return {
-    ...RealitySchema.parse(options.reality ?? {}),
+    ...trialReality(options.reality, task.reality),
     rangeNoiseM: 0,
     wheelDiameterErrorPct: 0,
     wheelSlipPct: 0,
@@ -212,7 +212,7 @@ async function runStagedTrial(
       variant,
       hal,
       body: judged.body,
-      reality: linkRealityOf(options),
+      reality: linkRealityOf(options, task),
       options,
       collisions: judged.collisions,
       started,

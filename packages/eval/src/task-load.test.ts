@@ -49,6 +49,14 @@ describe('parseTaskFile', () => {
     expect(error.message).toMatch(/^my-tasks\.json: "tasks\.0\.world\.objects\.0\.colour"/);
   });
 
+  it("takes a task's own reality knobs, and refuses one out of range naming it", () => {
+    const [task] = parseTaskFile(file([{ ...goodTask, reality: { wheelSlipPct: 5 } }]), 'r.json');
+    expect(task?.reality).toMatchObject({ wheelSlipPct: 5, lossRate: 0 });
+    const error = refusal(file([{ ...goodTask, reality: { lossRate: 2 } }]));
+    expect(error.field).toBe('tasks.0.reality.lossRate');
+    expect(refusal(file([{ ...goodTask, reality: { slip: 5 } }])).field).toBe('tasks.0.reality');
+  });
+
   it('refuses a check that names an object the world lacks', () => {
     const bad = {
       ...goodTask,

@@ -1,5 +1,6 @@
 import { WorldMapSchema } from '@hal/simulation';
 import { z } from 'zod';
+import { RealitySchema } from './reality.js';
 
 /*
  * The task file format, version 1. A task is a family: a world, an instruction, budgets and the
@@ -308,6 +309,9 @@ export const TaskSchema = z
     budget: BudgetSchema.prefault({}),
     leash: LeashSchema.optional(),
     faults: z.array(FaultSchema).default([]),
+    reality: RealitySchema.optional().describe(
+      "Reality knobs this task runs with at the least (a harder variant): each knob is the higher of the task's and the run's",
+    ),
     allowCollisions: z.boolean().default(false),
     checks: z.array(CheckSchema).min(1).describe('All must hold for success'),
   })

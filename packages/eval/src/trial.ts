@@ -3,7 +3,7 @@ import { SimulationHAL, World } from '@hal/simulation';
 import type { EvalAgent } from './agent.js';
 import { simulatedBody } from './bodies/simulated-body.js';
 import { conductTrial } from './conduct-trial.js';
-import { bodyErrorOf, RealitySchema } from './reality.js';
+import { bodyErrorOf, trialReality } from './reality.js';
 import type { Task } from './task-schema.js';
 import type { TrialOptions, TrialScore, TrialTiming } from './trial-score.js';
 import { realiseTask, variantSeed } from './variant.js';
@@ -26,7 +26,7 @@ export async function runTrial(
   const started = performance.now();
   const variant = realiseTask(task, seed);
   const world = new World({ map: variant.map, seed });
-  const reality = RealitySchema.parse(options.reality ?? {});
+  const reality = trialReality(options.reality, task.reality);
   // the body's errors are drawn from the trial's seed, apart from the call loss's draws
   const bodyError = bodyErrorOf(reality, (variantSeed(task.id, seed) ^ 0x5bd1e995) >>> 0);
   const sim = new SimulationHAL({
