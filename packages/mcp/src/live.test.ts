@@ -83,7 +83,7 @@ const readJson = async (c: Client, uri: string) =>
 
 describe('progress, events and the log over MCP', () => {
   it('reports progress during a 30 cm move, each larger than the last, ending at the total', async () => {
-    const { c, hal } = await connect({ clock: 'realtime', realtimeSpeed: 4 });
+    const { c, hal } = await connect({ clock: 'realtime', realtimeSpeed: 2 });
     const reports: Progress[] = [];
     const result = await c.callTool(
       { name: 'move_forward', arguments: { distanceCm: 30 } },
