@@ -1,7 +1,11 @@
-// Events of a robot over a link, through the real `hal mcp --udp` process and the SDK's client:
-// the emulated cube behind a UDP proxy that stops passing datagrams and passes them again. The
-// client subscribed to robot://events is told of the link lost and back, and its log, at the
-// level it set (error), has the loss and not the return (info).
+// Events through the real `hal mcp` process and the SDK's client. A collision in the simulator
+// (a box ahead, the guard off) is an event once the motion answers. The emulated cube behind a
+// UDP proxy that stops passing datagrams and passes them again: the client subscribed to
+// robot://events is told of the link lost and back, and its log, at the level it set (error),
+// has the loss and not the return (info).
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StdioClientTransport } from '@modelcontextprotocol/sdk/client/stdio.js';
 import {
@@ -24,6 +28,43 @@ async function events(client: Client): Promise<RobotEvent[]> {
   return (JSON.parse((read.contents[0] as { text: string }).text) as { events: RobotEvent[] })
     .events;
 }
+
+describe('hal mcp --sim: a collision', () => {
+  it('is an event with where the robot touched, once the motion answers', async () => {
+    const dir = mkdtempSync(join(tmpdir(), 'hal-mcp-events-'));
+    const world = join(dir, 'box-ahead.json');
+    writeFileSync(
+      world,
+      JSON.stringify({
+        map: 'empty',
+        start: { x: 0, y: 0, yawDeg: 0 },
+        objects: [{ name: 'box', kind: 'box', colour: 'red', x: 0.3, y: 0 }],
+      }),
+    );
+    const client = new Client({ name: 'hal-events-test', version: '1.0.0' });
+    // without the guard, which would stop before the box
+    await client.connect(
+      new StdioClientTransport({
+        ...serverCommand(['--world', world, '--no-guard']),
+        stderr: 'ignore',
+      }),
+    );
+    try {
+      await client.subscribeResource({ uri: 'robot://events' });
+      const moved = await client.callTool({ name: 'move_forward', arguments: { distanceCm: 60 } });
+      expect(moved.isError).toBe(true);
+      expect(JSON.stringify(moved.content)).toContain('COLLISION');
+      const collision = (await events(client)).find((e) => e.type === 'collision');
+      expect(collision?.message).toMatch(
+        /^The robot touched a \w+ at \(0\.\d{3}, -?0\.\d{3}\) m and stopped$/,
+      );
+      expect(collision?.details).toHaveProperty('contact.point');
+    } finally {
+      await client.close();
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+});
 
 describe('hal mcp --udp: the link lost and back, as events and in the log', () => {
   it('tells a subscribed client, and logs at the level it set', async () => {
