@@ -1,5 +1,6 @@
-// Events through the real `hal mcp` process and the SDK's client. A collision in the simulator
-// (a box ahead, the guard off) is an event once the motion answers. The emulated cube behind a
+// Events through the real `hal mcp` process and the SDK's client. In the simulator with a box
+// ahead, a collision (the guard off) or the guard's stop is an event once the motion answers. The
+// emulated cube behind a
 // UDP proxy that stops passing datagrams and passes them again: the client subscribed to
 // robot://events is told of the link lost and back, and its log, at the level it set (error),
 // has the loss and not the return (info).
@@ -29,28 +30,34 @@ async function events(client: Client): Promise<RobotEvent[]> {
     .events;
 }
 
-describe('hal mcp --sim: a collision', () => {
-  it('is an event with where the robot touched, once the motion answers', async () => {
-    const dir = mkdtempSync(join(tmpdir(), 'hal-mcp-events-'));
-    const world = join(dir, 'box-ahead.json');
-    writeFileSync(
-      world,
-      JSON.stringify({
-        map: 'empty',
-        start: { x: 0, y: 0, yawDeg: 0 },
-        objects: [{ name: 'box', kind: 'box', colour: 'red', x: 0.3, y: 0 }],
-      }),
-    );
-    const client = new Client({ name: 'hal-events-test', version: '1.0.0' });
-    // without the guard, which would stop before the box
-    await client.connect(
-      new StdioClientTransport({
-        ...serverCommand(['--world', world, '--no-guard']),
-        stderr: 'ignore',
-      }),
-    );
-    try {
-      await client.subscribeResource({ uri: 'robot://events' });
+/** Runs `hal mcp` in a world with a box 30 cm ahead, with `args`; `work` drives it. */
+async function boxAhead(args: string[], work: (client: Client) => Promise<void>): Promise<void> {
+  const dir = mkdtempSync(join(tmpdir(), 'hal-mcp-events-'));
+  const world = join(dir, 'box-ahead.json');
+  writeFileSync(
+    world,
+    JSON.stringify({
+      map: 'empty',
+      start: { x: 0, y: 0, yawDeg: 0 },
+      objects: [{ name: 'box', kind: 'box', colour: 'red', x: 0.3, y: 0 }],
+    }),
+  );
+  const client = new Client({ name: 'hal-events-test', version: '1.0.0' });
+  await client.connect(
+    new StdioClientTransport({ ...serverCommand(['--world', world, ...args]), stderr: 'ignore' }),
+  );
+  try {
+    await client.subscribeResource({ uri: 'robot://events' });
+    await work(client);
+  } finally {
+    await client.close();
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+describe('hal mcp --sim: a box ahead', () => {
+  it('without the guard, the collision is an event with where the robot touched', async () => {
+    await boxAhead(['--no-guard'], async (client) => {
       const moved = await client.callTool({ name: 'move_forward', arguments: { distanceCm: 60 } });
       expect(moved.isError).toBe(true);
       expect(JSON.stringify(moved.content)).toContain('COLLISION');
@@ -59,10 +66,20 @@ describe('hal mcp --sim: a collision', () => {
         /^The robot touched a \w+ at \(0\.\d{3}, -?0\.\d{3}\) m and stopped$/,
       );
       expect(collision?.details).toHaveProperty('contact.point');
-    } finally {
-      await client.close();
-      rmSync(dir, { recursive: true, force: true });
-    }
+    });
+  });
+
+  it('with the guard, its stop before the box is an event, and there is no collision', async () => {
+    await boxAhead([], async (client) => {
+      const moved = await client.callTool({ name: 'move_forward', arguments: { distanceCm: 60 } });
+      expect(moved.isError).toBe(true);
+      expect(JSON.stringify(moved.content)).toContain('OBSTACLE_AHEAD');
+      const seen = await events(client);
+      expect(seen.map((e) => e.type)).toEqual(['guard_stop']);
+      expect(seen[0]?.message).toMatch(
+        /^The guard (stopped the robot|refused a motion): something/,
+      );
+    });
   });
 });
 
