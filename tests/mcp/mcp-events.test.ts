@@ -1,9 +1,8 @@
 // Events through the real `hal mcp` process and the SDK's client. In the simulator with a box
-// ahead, a collision (the guard off) or the guard's stop is an event once the motion answers. The
-// emulated cube behind a
-// UDP proxy that stops passing datagrams and passes them again: the client subscribed to
-// robot://events is told of the link lost and back, and its log, at the level it set (error),
-// has the loss and not the return (info).
+// ahead, a collision (the guard off) or the guard's stop is an event once the motion answers.
+// The emulated cube behind a UDP proxy that stops passing datagrams and passes them again: the
+// client subscribed to robot://events is told of the link lost and back, and its log, at the
+// level it set (error), has the loss and not the return (info).
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
