@@ -22,6 +22,8 @@ import {
 } from '../guard-options.js';
 import { seeingFrom } from '../seeing.js';
 import type { GuardCliOptions } from '../guard-options.js';
+import { addFoxgloveOptions, foxglovePlan, startLiveView } from '../foxglove/live-view.js';
+import type { FoxgloveCliOptions, LiveView } from '../foxglove/live-view.js';
 import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
 import { AGENT_EVENT, recordHal, TOPICS } from '@hal/recorder';
@@ -47,7 +49,7 @@ import type { CliIO } from '../io.js';
 import type { RegisterCommand } from './context.js';
 
 interface AgentCliOptions
-  extends TargetCliOptions, ModelCliOptions, LeashCliOptions, GuardCliOptions {
+  extends TargetCliOptions, ModelCliOptions, LeashCliOptions, GuardCliOptions, FoxgloveCliOptions {
   maxTime?: number;
   world?: string;
   record?: string;
@@ -169,6 +171,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
   addOverwriteOption(command, 'the --record file');
   addLeashOptions(command);
   addGuardOptions(command);
+  addFoxgloveOptions(command);
   addTargetOptions(command).action(async (words: string[], options: AgentCliOptions) => {
     const json = global().json;
     const goal = words.join(' ').trim();
@@ -184,6 +187,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
     // a world file that cannot be used is refused before the model loads
     const world = options.world === undefined ? undefined : await readLookWorld(options.world);
     const leash = leashFromOptions(options);
+    const foxglove = foxglovePlan(options, io.env);
     const logger = cliLogger(io, json);
 
     // the --record file is checked before the model loads (which may take minutes), opened after
@@ -213,6 +217,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
           });
     recorder?.channel(TOPICS.agent, AGENT_EVENT);
     const sampling = new AbortController();
+    let live: LiveView | undefined;
     try {
       const connect =
         options.connectTimeout === undefined ? {} : { connectTimeoutMs: options.connectTimeout };
@@ -227,9 +232,12 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         recordGuard(guard, recorder);
         // scan answers from the range sensors and the camera, as the robot can know
         const { hal: opened } = seeingFrom(guarded, robot, recorder, target);
-        const hal = recorder
+        const recorded = recorder
           ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
           : opened;
+        // a viewer watches the run and may drive under the same leash
+        live = await startLiveView(recorded, foxglove, { io, global }, { deviceId, leash });
+        const hal = live.hal;
         const timeout = options.timeout === undefined ? {} : { timeoutMs: options.timeout };
         const executor =
           choice.profile === 'primitives'
@@ -291,6 +299,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         }
         return { outcome: run, pose, guard: guardReport(guard) };
       });
+      await live?.close();
       sampling.abort();
       const recorded = await recorder?.close();
       const summary = {
@@ -323,6 +332,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         );
       }
     } finally {
+      await live?.close().catch(() => undefined);
       sampling.abort();
       await recorder?.close().catch(() => undefined);
       await local?.dispose().catch(() => undefined);

@@ -148,6 +148,7 @@ export async function startLiveView(
       hostOption: '--foxglove-host',
     });
   }
+  let closed = false;
   const open = plan.token === undefined ? server.url : `${server.url}/?token=<token>`;
   // progress on stderr: a command's stdout (hal agent's run, hal mcp's protocol) stays its own
   if (global().json) io.err(`${JSON.stringify({ event: 'foxglove', url: server.url })}\n`);
@@ -156,6 +157,8 @@ export async function startLiveView(
     hal: server.hal,
     url: server.url,
     close: async () => {
+      if (closed) return;
+      closed = true;
       const stats = server.stats();
       await server.close();
       if (stats.dropped === 0) return;
