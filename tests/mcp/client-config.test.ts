@@ -12,9 +12,10 @@ interface ClientConfig {
   mcpServers: Record<string, { command: string; args: string[]; cwd?: string }>;
 }
 const root = REPO_ROOT.replace(/\/$/, '');
-const configs = fencedBlocks(readFileSync(`${root}/docs/mcp.md`, 'utf8'), 'json').map(
-  (text) => JSON.parse(text.replaceAll('/path/to/repo', root)) as ClientConfig,
-);
+// the JSON blocks that configure a client (others show what a resource holds)
+const configs = fencedBlocks(readFileSync(`${root}/docs/mcp.md`, 'utf8'), 'json')
+  .map((text) => JSON.parse(text.replaceAll('/path/to/repo', root)) as Partial<ClientConfig>)
+  .filter((json): json is ClientConfig => json.mcpServers !== undefined);
 
 describe("docs/mcp.md's MCP client configurations", () => {
   it('show the checkout first, the packed tarballs next, and npx only as the published form', () => {
