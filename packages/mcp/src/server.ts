@@ -9,24 +9,18 @@ import {
   SubscribeRequestSchema,
   UnsubscribeRequestSchema,
 } from '@modelcontextprotocol/sdk/types.js';
-import { errorResult, robotConfigOf, toMcpTools } from '@hal/tools';
+import { toMcpTools } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { decide } from './approval.js';
-import type { Summarize } from './approval.js';
 import { asks, DEFAULT_APPROVAL_TIMEOUT_MS, policyText } from './approval-policy.js';
 import type { ApprovalPolicy } from './approval-policy.js';
-import { inCall } from './call-context.js';
-import type { CallContext } from './call-context.js';
-import { elicitApproval } from './elicit.js';
 import { RobotEvents } from './events.js';
 import type { RobotEventSources } from './events.js';
-import { summarizeMotion } from './motion-words.js';
-import { DEFAULT_PROGRESS_PERIOD_MS, watchProgress } from './progress.js';
-import type { ProgressWatch } from './progress.js';
+import { serveLive } from './live.js';
+import { DEFAULT_PROGRESS_PERIOD_MS } from './progress.js';
 import { robotResources, stateOf } from './resources.js';
 import type { RobotWorld } from './resources.js';
-import { serveLive } from './live.js';
+import { toolCalls } from './tool-calls.js';
 
 /** The server's name and version, as MCP clients show them. */
 export const SERVER_INFO = { name: 'hal-robot', version: '0.1.0' } as const;
@@ -66,13 +60,6 @@ export interface RobotMcpOptions {
   statePeriodMs?: number;
 }
 
-const isHalTool = (tool: AgentTool) => typeof (tool as { call?: unknown }).call === 'string';
-
-const argsOf = (raw: unknown): Record<string, unknown> =>
-  typeof raw === 'object' && raw !== null && !Array.isArray(raw)
-    ? (raw as Record<string, unknown>)
-    : {};
-
 /**
  * An MCP server for one HAL: its tools run through `offered` (an executor: validation, timeouts,
  * the leash; or a profile whose skills call such an executor), and its state, capabilities, map,
@@ -89,7 +76,6 @@ export function createRobotMcpServer(
   options: RobotMcpOptions = {},
 ): Server {
   const policy = options.approve ?? 'none';
-  const timeoutMs = options.approvalTimeoutMs ?? DEFAULT_APPROVAL_TIMEOUT_MS;
   const monitor = options.monitor ?? hal;
   const events = options.events ?? new RobotEvents(monitor, options.eventSources ?? {});
   const server = new Server(SERVER_INFO, {
@@ -108,81 +94,21 @@ export function createRobotMcpServer(
     state: () => stateOf(monitor),
   });
 
-  let stops = new AbortController();
-  const summarize: Summarize = async (tool, args) => {
-    try {
-      const pose = await hal.locomotion.getPose();
-      const start = { x: pose.position.x, y: pose.position.y, yaw: pose.rotation.yaw };
-      return summarizeMotion(tool, args, start, robotConfigOf(hal));
-    } catch {
-      // no pose: ask about it as one whose length is not known
-      return tool.motion
-        ? {
-            words: `run ${tool.name} ${JSON.stringify(args)}`,
-            distanceM: undefined,
-            progress: { unit: 'm' as const },
-          }
-        : undefined;
-    }
-  };
-
   server.setRequestHandler(ListToolsRequestSchema, () => ({ tools: toMcpTools(offered.tools) }));
-
-  server.setRequestHandler(CallToolRequestSchema, async (request, extra) => {
-    const { name } = request.params;
-    const args = argsOf(request.params.arguments);
-    const tool = offered.tools.find((t) => t.name === name);
-    if (tool?.safety !== undefined) {
-      // a stop withdraws the questions open: what was asked about before it does not run after it
-      stops.abort();
-      stops = new AbortController();
-    }
-    if (tool?.safety === 'estop') events.expect('estop');
-    if (name === 'reset_emergency_stop') events.expect('reset');
-    const context: CallContext = {
-      tool: name,
+  server.setRequestHandler(
+    CallToolRequestSchema,
+    toolCalls({
+      server,
+      hal,
+      monitor,
+      offered,
+      events,
+      live,
       policy,
-      ask: elicitApproval(server, extra, timeoutMs, () => stops.signal),
-      summarize,
-      approved: false,
-      hookConsulted: false,
-    };
-    const token = request.params._meta?.progressToken;
-    let watch: ProgressWatch | undefined;
-    if (token !== undefined && tool?.motion === true) {
-      const summary = await summarize(tool, args);
-      if (summary !== undefined) {
-        watch = watchProgress(
-          monitor,
-          summary,
-          (report) =>
-            extra.sendNotification({
-              method: 'notifications/progress',
-              params: { progressToken: token, ...report },
-            }),
-          options.progressPeriodMs ?? DEFAULT_PROGRESS_PERIOD_MS,
-        );
-      }
-    }
-    const result = await inCall(context, async () => {
-      // a skill makes HAL calls of its own: the user approves it once, here, before it starts
-      if (tool !== undefined && !isHalTool(tool)) {
-        const decision = await decide(context, tool, args, summarize);
-        if (!decision.allow) return errorResult('DENIED', `${name}: denied: ${decision.reason}`);
-      }
-      return offered.execute({ name, arguments: request.params.arguments });
-    });
-    await watch?.finish(!result.isError);
-    if (tool?.safety !== undefined || name === 'reset_emergency_stop') events.check();
-    if (tool !== undefined && isHalTool(tool) && tool.motion && !result.isError) {
-      live.checkHooked(context);
-    }
-    return {
-      content: result.content,
-      isError: result.isError,
-      ...(result.structured === undefined ? {} : { structuredContent: result.structured }),
-    };
-  });
+      approvalTimeoutMs: options.approvalTimeoutMs ?? DEFAULT_APPROVAL_TIMEOUT_MS,
+      progressPeriodMs: options.progressPeriodMs ?? DEFAULT_PROGRESS_PERIOD_MS,
+    }),
+  );
 
   server.setRequestHandler(ListResourcesRequestSchema, () => ({
     resources: resources().map(({ uri, name, description, mimeType }) => ({
