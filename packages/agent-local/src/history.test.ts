@@ -94,6 +94,14 @@ describe('fitHistory with worked examples', () => {
     ]);
   });
 
+  it("ends a turn of results as the examples' turns end, with the last result and no reminder", () => {
+    const { history } = fitHistory(conversation, 'SYSTEM', 1000, words, [example]);
+    // the examples' results are followed by the answer: a reminder quoting the goal after the
+    // results here is what a tiny model answered back
+    expect(history.at(-2)).toEqual({ type: 'user', text: 'Result of get_pose: x 0.1' });
+    expect(history.at(-1)).toEqual({ type: 'model', response: [] });
+  });
+
   it('counts the examples in the budget that must fit, and says so when they do not', () => {
     expect(() => fitHistory(conversation.slice(0, 2), 'SYSTEM', 30, words, [example])).toThrow(
       /the system prompt, its examples and goal need about \d+ tokens/,

@@ -133,8 +133,10 @@ export function fitHistory(
   const goalText = goal === undefined ? '' : itemOf(goal, toolNames).text;
   if (goal !== undefined) push('user', goalText);
   for (const item of items.slice(start)) push(item.type, item.text);
-  // after results, remind the model of the goal and how to finish (small models repeat a call)
-  if (history[history.length - 1]?.type === 'user' && items.length > start)
+  // after results, remind the model of the goal and how to finish (small models repeat a call);
+  // with worked examples, whose results are followed by nothing, the turn keeps their form (a
+  // tiny model answers the reminder's quoted goal back instead of reading the result)
+  if (examples.length === 0 && history[history.length - 1]?.type === 'user' && items.length > start)
     push('user', `${NEXT}${JSON.stringify(goalText)}. ${AFTER}`);
   history.push({ type: 'model', response: [] });
   return { history, droppedMessages: start, promptTokens: total };
