@@ -22,6 +22,8 @@ export interface Received {
   /** The message's log time, ns. */
   at: bigint;
   value: Record<string, unknown>;
+  /** When the viewer had it, ms since the epoch (to the microsecond). */
+  receivedAtMs: number;
 }
 
 export interface Viewer {
@@ -80,8 +82,9 @@ export async function connectViewer(
   });
   client.on('message', (event) => {
     const topic = bySubscription.get(event.subscriptionId) ?? '?';
+    const receivedAtMs = performance.timeOrigin + performance.now();
     const value = JSON.parse(decoder.decode(event.data)) as Record<string, unknown>;
-    received.push({ topic, at: event.timestamp, value });
+    received.push({ topic, at: event.timestamp, value, receivedAtMs });
     wake();
   });
   const info = await new Promise<ServerInfo>((resolve, reject) => {

@@ -69,7 +69,7 @@ export function liveNames(namespace?: string): {
 /** A Foxglove time from ms since the epoch. */
 export function foxgloveTimeOfMs(ms: number): { sec: number; nsec: number } {
   const sec = Math.floor(ms / 1000);
-  return { sec, nsec: Math.round((ms - sec * 1000) * 1e6) };
+  return { sec, nsec: Math.min(999_999_999, Math.round((ms - sec * 1000) * 1e6)) };
 }
 
 /** The quaternion of a REP-103 yaw, pitch and roll (radians, ZYX). */
