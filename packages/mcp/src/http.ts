@@ -5,6 +5,7 @@ import type { AddressInfo } from 'node:net';
 import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { StreamableHTTPServerTransport } from '@modelcontextprotocol/sdk/server/streamableHttp.js';
 import { browserRefusal, isLoopback } from '@hal/types';
+import { DEFAULT_MAX_SESSIONS, httpSessions } from './http-sessions.js';
 
 /** Where and how the streamable HTTP endpoint listens. */
 export interface HttpOptions {
@@ -16,6 +17,14 @@ export interface HttpOptions {
   token?: string;
   /** Path of the endpoint, default `/mcp`. */
   path?: string;
+  /**
+   * Sessions (`Mcp-Session-Id`): a client's server lasts from its initialize to its DELETE, and
+   * can ask it questions (approval), send progress, resource updates and log lines. Default
+   * false: stateless, every POST a complete exchange answered as one JSON response.
+   */
+  sessions?: boolean;
+  /** With sessions: how many may be open at once (default 16); one more is refused 503. */
+  maxSessions?: number;
 }
 
 /** A listening endpoint. */
@@ -55,8 +64,9 @@ function gate(req: IncomingMessage, options: Required<Pick<HttpOptions, 'path'>>
 }
 
 /**
- * Serves MCP over streamable HTTP, stateless: each request gets a fresh server from `create`
- * (all of them drive the same HAL). Refuses to start on a non-loopback address without a token.
+ * Serves MCP over streamable HTTP: stateless (each request gets a fresh server from `create`), or
+ * with `sessions` (a server per session); all of them drive the same HAL. Refuses to start on a
+ * non-loopback address without a token.
  */
 export async function serveHttp(
   create: () => Server,
@@ -70,9 +80,20 @@ export async function serveHttp(
         'any other address than 127.0.0.1 needs --token',
     );
   }
+  const sessions =
+    options.sessions === true
+      ? httpSessions(create, refuse, options.maxSessions ?? DEFAULT_MAX_SESSIONS)
+      : undefined;
   const http: HttpServer = createServer((req, res) => {
     const refusal = gate(req, settings);
     if (refusal !== undefined) return refuse(res, refusal[0], refusal[1]);
+    if (sessions !== undefined) {
+      sessions.handle(req, res).catch((error: unknown) => {
+        if (!res.headersSent)
+          refuse(res, 500, error instanceof Error ? error.message : String(error));
+      });
+      return;
+    }
     if (req.method !== 'POST') return refuse(res, 405, 'this endpoint is stateless: POST only');
     const server = create();
     // no sessionIdGenerator: stateless, every request stands alone
@@ -100,10 +121,12 @@ export async function serveHttp(
   return {
     url: `http://${shown}:${port}${settings.path}`,
     port,
-    close: () =>
-      new Promise<void>((resolve) => {
+    close: async () => {
+      await sessions?.closeAll();
+      await new Promise<void>((resolve) => {
         http.closeAllConnections();
         http.close(() => resolve());
-      }),
+      });
+    },
   };
 }
