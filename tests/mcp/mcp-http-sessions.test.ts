@@ -1,6 +1,8 @@
 // Streamable HTTP with sessions, with the SDK's own client: a session's server asks its client
 // to approve a motion (declined: nothing moves; accepted: it moves, with progress), and tells a
 // subscribed client of an e-stop pressed elsewhere; an unknown session is 404, an ended one too.
+// And `hal mcp --http --approve motion` as a process: its client is asked.
+import { spawn } from 'node:child_process';
 import { request } from 'node:http';
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StreamableHTTPClientTransport } from '@modelcontextprotocol/sdk/client/streamableHttp.js';
@@ -14,6 +16,7 @@ import type { HttpEndpoint, RobotEvent } from '@hal/mcp';
 import { SimulationHAL } from '@hal/simulation';
 import { createToolExecutor } from '@hal/tools';
 import { afterEach, describe, expect, it } from 'vitest';
+import { callTool, serverCommand } from './client.js';
 
 const open: Array<{ close(): Promise<void> }> = [];
 afterEach(async () => {
@@ -134,5 +137,39 @@ describe('hal mcp over streamable HTTP with sessions (the SDK client)', () => {
     expect(await postIn(endpoint.url, id!)).toBe(200);
     await transport.terminateSession();
     expect(await postIn(endpoint.url, id!)).toBe(404);
+  });
+
+  it('hal mcp --http --approve motion asks its client, and nothing moves when it says no', async () => {
+    const command = serverCommand(['--http', '--port', '0', '--approve', 'motion']);
+    const child = spawn(command.command, command.args, {
+      cwd: command.cwd,
+      stdio: ['ignore', 'ignore', 'pipe'],
+    });
+    open.push({
+      close: () =>
+        new Promise<void>((resolve) => {
+          if (child.exitCode !== null) return resolve();
+          child.once('exit', () => resolve());
+          child.kill('SIGINT');
+        }),
+    });
+    const url = await new Promise<string>((resolve, reject) => {
+      let said = '';
+      child.stderr.on('data', (chunk: Buffer) => {
+        said += chunk.toString();
+        const found = /MCP over HTTP at (http:\/\/\S+)/.exec(said);
+        if (found?.[1] !== undefined) resolve(found[1]);
+      });
+      child.once('exit', (code) => reject(new Error(`hal mcp exited ${code}: ${said}`)));
+    });
+    const { client, asked } = await connect(url, ['decline']);
+    const declined = await client.callTool({
+      name: 'move_forward',
+      arguments: { distanceCm: 20 },
+    });
+    expect(declined.isError).toBe(true);
+    expect(asked).toHaveLength(1);
+    const pose = await callTool(client, 'get_pose');
+    expect((pose.json['position'] as { x: number }).x).toBe(0);
   });
 });

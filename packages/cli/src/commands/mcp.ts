@@ -151,9 +151,11 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
         );
       }
       if (options.http) {
+        // with sessions: a client's server can ask it, and tell it of progress and events
         const endpoint = await serveHttp(create, {
           host: options.host,
           port: options.port,
+          sessions: true,
           ...(options.token === undefined ? {} : { token: options.token }),
         }).catch((error: unknown) => {
           throw listenError(error, {

@@ -29,7 +29,7 @@ describe('hal mcp options', () => {
     expect(parseCli(['--http', '--port', '0'])).toMatchObject({ http: true, port: 0 });
   });
 
-  it('takes who approves motions: motion, over:DISTANCE, none; refuses the rest and HTTP', () => {
+  it('takes who approves motions: motion, over:DISTANCE, none (over HTTP too); refuses the rest', () => {
     expect(parseCli(['--approve', 'motion'])).toMatchObject({ approve: 'motion' });
     expect(parseCli(['--approve', 'over:30cm'])).toMatchObject({ approve: { overM: 0.3 } });
     expect(parseCli(['--approve', 'over:0.5'])).toMatchObject({ approve: { overM: 0.5 } });
@@ -42,8 +42,10 @@ describe('hal mcp options', () => {
         /"--approve" must be motion, none or over:DISTANCE/,
       );
     }
-    expect(() => parseCli(['--approve', 'motion', '--http'])).toThrow(usage);
-    expect(() => parseCli(['--approve', 'motion', '--http'])).toThrow(/needs stdio/);
+    expect(parseCli(['--approve', 'motion', '--http'])).toMatchObject({
+      approve: 'motion',
+      http: true,
+    });
     expect(() => parseCli(['--approval-timeout', '10'])).toThrow(/--approval-timeout/);
   });
 

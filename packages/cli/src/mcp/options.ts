@@ -161,11 +161,6 @@ export function mcpOptions(
       `"--host" ${o.host} is reachable from other machines: give --http-token (16+ characters, or $HAL_MCP_TOKEN)`,
     );
   }
-  if (o.http && o.approve !== 'none') {
-    throw usageError(
-      '"--approve" needs stdio: the HTTP endpoint is stateless and cannot ask its client (give --approve none, or drop --http)',
-    );
-  }
   return {
     target,
     ...(o.world === undefined ? {} : { world: o.world }),
