@@ -79,7 +79,7 @@ export function addMcpOptions(command: Command): Command {
         'with --sim: the world the simulator starts in, in the eval task format ({ map, start, objects })',
       ),
     )
-    .option('--http', 'serve streamable HTTP instead of stdio', false)
+    .option('--http', 'serve streamable HTTP (a session per client) instead of stdio', false)
     .option('--host <address>', 'HTTP address; any but loopback needs --http-token', '127.0.0.1')
     .addOption(
       new Option('--port <port>', 'HTTP port (0: any free one)')
