@@ -121,7 +121,7 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     const stopEvents = events.open();
     let close: () => Promise<void> = async () => undefined;
     try {
-      // once for the run: over HTTP each request has a server of its own, the skills one memory
+      // once for the run: over HTTP each session has a server of its own, the skills one memory
       const offered = offeredTools(hal, {
         profile: options.profile,
         leash: options.leash,

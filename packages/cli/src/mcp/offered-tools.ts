@@ -1,5 +1,5 @@
 // The tools `hal mcp --tools` offers: the HAL's calls through the executor (the leash, timeouts),
-// the skills over that same executor, or both. Built once per server: over HTTP every request gets
+// the skills over that same executor, or both. Built once per run: over HTTP every session gets
 // a fresh MCP server, but the skills' memory of what the robot saw lasts the whole run.
 import { approveOverMcp } from '@hal/mcp';
 import type { ApprovalPolicy, OfferedTools } from '@hal/mcp';
