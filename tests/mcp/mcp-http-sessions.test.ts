@@ -23,13 +23,15 @@ afterEach(async () => {
   for (const thing of open.splice(0).reverse()) await thing.close();
 });
 
-async function serve(): Promise<{ endpoint: HttpEndpoint; hal: SimulationHAL }> {
+async function serve(
+  maxSessions?: number,
+): Promise<{ endpoint: HttpEndpoint; hal: SimulationHAL }> {
   const hal = new SimulationHAL();
   await hal.initialize();
   const executor = createToolExecutor(hal, { leash: { approve: approveOverMcp } });
   const endpoint = await serveHttp(
     () => createRobotMcpServer(hal, executor, {}, { approve: 'motion' }),
-    { port: 0, sessions: true },
+    { port: 0, sessions: true, ...(maxSessions === undefined ? {} : { maxSessions }) },
   );
   open.push(endpoint, { close: () => hal.cleanup() });
   return { endpoint, hal };
@@ -137,6 +139,17 @@ describe('hal mcp over streamable HTTP with sessions (the SDK client)', () => {
     expect(await postIn(endpoint.url, id!)).toBe(200);
     await transport.terminateSession();
     expect(await postIn(endpoint.url, id!)).toBe(404);
+  });
+
+  it('closes the session used least recently to make room for a new one', async () => {
+    const { endpoint } = await serve(2);
+    const first = await connect(endpoint.url, []);
+    const second = await connect(endpoint.url, []);
+    await first.client.listTools(); // the first is now the more recent
+    const third = await connect(endpoint.url, []);
+    expect(await postIn(endpoint.url, second.transport.sessionId!)).toBe(404);
+    expect(await postIn(endpoint.url, first.transport.sessionId!)).toBe(200);
+    expect(await postIn(endpoint.url, third.transport.sessionId!)).toBe(200);
   });
 
   it('hal mcp --http --approve motion asks its client, and nothing moves when it says no', async () => {

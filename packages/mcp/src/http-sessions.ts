@@ -7,7 +7,7 @@ import type { IncomingMessage, ServerResponse } from 'node:http';
 import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { StreamableHTTPServerTransport } from '@modelcontextprotocol/sdk/server/streamableHttp.js';
 
-/** How many sessions may be open at once, by default. */
+/** How many sessions may be open at once, by default; one more closes the least recently used. */
 export const DEFAULT_MAX_SESSIONS = 16;
 
 type Refuse = (res: ServerResponse, status: number, message: string) => void;
@@ -17,8 +17,16 @@ interface Session {
   server: Server;
 }
 
-/** The sessions of one endpoint: `handle` answers a request that passed the gate. */
+/** Closes a session's server (and so its transport); never throws. */
+const end = (session: Session) => session.server.close().catch(() => undefined);
+
+/**
+ * The sessions of one endpoint: `handle` answers a request that passed the gate. A client that
+ * goes away without ending its session leaves it open: when `maxSessions` are open, a new one
+ * closes the session used least recently.
+ */
 export function httpSessions(create: () => Server, refuse: Refuse, maxSessions: number) {
+  // in the order of their last use, the least recent first
   const sessions = new Map<string, Session>();
 
   async function open(req: IncomingMessage, res: ServerResponse): Promise<void> {
@@ -46,21 +54,25 @@ export function httpSessions(create: () => Server, refuse: Refuse, maxSessions: 
       if (id !== undefined) {
         const session = sessions.get(id);
         if (session === undefined) return refuse(res, 404, 'no such session: initialize again');
+        sessions.delete(id);
+        sessions.set(id, session); // used now: the most recent
         return session.transport.handleRequest(req, res);
       }
       if (req.method !== 'POST') {
         return refuse(res, 400, 'a session starts with an initialize request (POST)');
       }
-      if (sessions.size >= maxSessions) {
-        return refuse(res, 503, `at most ${maxSessions} sessions at once: end one (DELETE)`);
+      while (sessions.size >= maxSessions) {
+        const [oldest, session] = sessions.entries().next().value as [string, Session];
+        sessions.delete(oldest);
+        await end(session);
       }
       return open(req, res);
     },
     /** Ends every session. */
     async closeAll(): Promise<void> {
-      const open = [...sessions.values()];
+      const all = [...sessions.values()];
       sessions.clear();
-      await Promise.all(open.map((s) => s.server.close().catch(() => undefined)));
+      await Promise.all(all.map(end));
     },
   };
 }

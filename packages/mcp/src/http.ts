@@ -23,7 +23,7 @@ export interface HttpOptions {
    * false: stateless, every POST a complete exchange answered as one JSON response.
    */
   sessions?: boolean;
-  /** With sessions: how many may be open at once (default 16); one more is refused 503. */
+  /** With sessions: how many may be open at once (default 16); a new one closes the least recently used. */
   maxSessions?: number;
 }
 
