@@ -50,6 +50,8 @@ describe('hal agent --foxglove', () => {
     });
     const viewer = await connectViewer(url);
     try {
+      // the agent's perception (the simulator has a camera) is on the view too
+      expect(viewer.channels.map((c) => c.topic)).toContain('/perception/detections');
       await viewer.subscribe('/hal/pose');
       await viewer.until(() => viewer.on('/hal/pose').length >= 2);
       const publish = viewer.publisher('/cmd_vel', 'geometry_msgs/Twist');

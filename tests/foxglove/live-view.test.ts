@@ -4,6 +4,8 @@
 // messages, counted, while the others do not.
 import { serveFoxglove } from '@hal/foxglove';
 import type { FoxgloveLiveServer } from '@hal/foxglove';
+import { OccupancyGrid } from '@hal/navigation';
+import { Perception } from '@hal/perception';
 import { SimulationHAL } from '@hal/simulation';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { connectViewer } from './viewer.js';
@@ -100,6 +102,30 @@ describe('topics', () => {
       event: 'cleared',
       emergency_stopped: false,
     });
+  });
+});
+
+describe('perception', () => {
+  it('shows each look: its detections and remembered objects as SceneUpdates, and the grid', async () => {
+    const perception = new Perception(hal, { grid: new OccupancyGrid({ widthM: 2, heightM: 2 }) });
+    server = await serveFoxglove(hal, { port: 0, perception });
+    const viewer = await viewerOf(server.url);
+    const schemas = Object.fromEntries(viewer.channels.map((c) => [c.topic, c.schemaName]));
+    expect(schemas).toMatchObject({
+      '/perception/detections': 'foxglove.SceneUpdate',
+      '/perception/objects': 'foxglove.SceneUpdate',
+      '/perception/grid': 'foxglove.Grid',
+    });
+    await viewer.subscribe(
+      ...viewer.channels.map((c) => c.topic).filter((t) => t.startsWith('/perception/')),
+    );
+    await perception.look();
+    await viewer.until(() => viewer.on('/perception/objects').length >= 1);
+    expect(viewer.on('/perception/detections')).toHaveLength(1);
+    expect(viewer.on('/perception/objects')[0]!.value).toHaveProperty('entities');
+    // the look laid free space into the grid: the grid, changed, follows
+    await viewer.until(() => viewer.on('/perception/grid').length >= 1);
+    expect(viewer.on('/perception/grid')[0]!.value).toMatchObject({ frame_id: 'world' });
   });
 });
 

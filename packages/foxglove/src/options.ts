@@ -1,3 +1,4 @@
+import type { RecordablePerception } from '@hal/recorder';
 import type { Leash } from '@hal/tools';
 import type { HardwareAbstractionLayer, Logger } from '@hal/types';
 
@@ -19,6 +20,13 @@ export interface FoxgloveServeOptions {
    * no origin, or `file://`) are trusted; any other page is refused with HTTP 403.
    */
   allowedOrigins?: readonly string[];
+  /**
+   * Perception running on the robot (a @hal/perception `Perception`): after each look, its
+   * sightings (`/perception/detections`) and remembered objects (`/perception/objects`) as
+   * foxglove.SceneUpdate, and its grid (`/perception/grid`, foxglove.Grid) when it changed, as a
+   * recording has them.
+   */
+  perception?: RecordablePerception;
   /** The leash on what a viewer drives (teleop): caps, geofence, approval. Default none. */
   leash?: Leash;
   /** Pose and /tf messages per second. Default 10. */

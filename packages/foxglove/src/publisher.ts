@@ -7,7 +7,7 @@ import type { FoxgloveServer } from '@foxglove/ws-protocol';
 import type { SafetyEvent } from '@hal/recorder';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { telemetryOf } from './telemetry.js';
-import type { RobotNamespace } from '@hal/recorder';
+import type { NamedJsonSchema, RobotNamespace } from '@hal/recorder';
 import { LIVE_SCHEMAS, foxgloveTimeOfMs, quaternionOf } from './topics.js';
 import type { LiveTopic } from './topics.js';
 
@@ -28,6 +28,7 @@ export class LivePublisher {
   readonly #rates: PublisherRates;
   readonly #channels = new Map<LiveTopic, number>();
   readonly #topicOfChannel = new Map<number, string>();
+  readonly #extra = new Map<string, number>();
   readonly #subscribed = new Set<number>();
   readonly #timers: Array<ReturnType<typeof setInterval>> = [];
   readonly #telemetry: ReturnType<typeof telemetryOf>;
@@ -64,6 +65,27 @@ export class LivePublisher {
     }
     server.on('subscribe', (id) => this.#subscribed.add(id));
     server.on('unsubscribe', (id) => this.#subscribed.delete(id));
+  }
+
+  /** Advertises one more JSON topic (another package's, as perception's); once per topic. */
+  addTopic(topic: string, schema: NamedJsonSchema): void {
+    if (this.#extra.has(topic)) return;
+    const id = this.#server.addChannel({
+      topic,
+      encoding: 'json',
+      schemaName: schema.name,
+      schema: JSON.stringify(schema.schema),
+      schemaEncoding: 'jsonschema',
+    });
+    this.#extra.set(topic, id);
+    this.#topicOfChannel.set(id, topic);
+  }
+
+  /** Sends `value` on a topic of {@link addTopic} to its subscribers, logged at `atNs`. */
+  sendOn(topic: string, value: unknown, atNs: bigint): void {
+    const id = this.#extra.get(topic);
+    if (id === undefined || !this.#subscribed.has(id)) return;
+    this.#server.sendMessage(id, atNs, encoder.encode(JSON.stringify(value)));
   }
 
   /** The topic of a channel id (undefined for none of ours). */

@@ -19,6 +19,7 @@ import type {
   FoxgloveStats,
   ViewerDrops,
 } from './options.js';
+import { livePerception } from './perception.js';
 import { LivePublisher } from './publisher.js';
 import { controlServices } from './services.js';
 import { driveOnce, powersOfTwist } from './teleop.js';
@@ -256,6 +257,10 @@ export async function serveFoxglove(
   const urlHost = host.includes(':') ? `[${host}]` : host;
   const url = `ws://${urlHost}:${bound.port}`;
   publisher.start();
+  const perception =
+    options.perception === undefined
+      ? undefined
+      : livePerception(publisher, options.perception, options.namespace);
   log('info', `live view of ${deviceId} on ${url} (foxglove.websocket.v1)`);
 
   let closed: Promise<void> | undefined;
@@ -281,6 +286,7 @@ export async function serveFoxglove(
     close: () => {
       closed ??= (async () => {
         publisher.stop();
+        perception?.stop();
         const open = [...viewers.keys()];
         for (const ws of open) ws.close(1001, 'server closing');
         // a viewer that does not answer the close (a stalled one) is cut off after a moment

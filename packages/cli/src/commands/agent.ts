@@ -231,12 +231,17 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
         const { hal: guarded, guard } = guardFromOptions(robot, options, io, json, target);
         recordGuard(guard, recorder);
         // scan answers from the range sensors and the camera, as the robot can know
-        const { hal: opened } = seeingFrom(guarded, robot, recorder, target);
+        const { hal: opened, perception } = seeingFrom(guarded, robot, recorder, target);
         const recorded = recorder
           ? recordHal(opened, recorder, { signal: sampling.signal, deviceId })
           : opened;
         // a viewer watches the run and may drive under the same leash
-        live = await startLiveView(recorded, foxglove, { io, global }, { deviceId, leash });
+        live = await startLiveView(
+          recorded,
+          foxglove,
+          { io, global },
+          { deviceId, leash, ...(perception === undefined ? {} : { perception }) },
+        );
         const hal = live.hal;
         const timeout = options.timeout === undefined ? {} : { timeoutMs: options.timeout };
         const executor =

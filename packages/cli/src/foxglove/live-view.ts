@@ -11,6 +11,7 @@ import type { Command } from 'commander';
 import { FOXGLOVE_DEFAULTS, serveFoxglove } from '@hal/foxglove';
 import type { FoxgloveLiveServer, FoxgloveServeOptions } from '@hal/foxglove';
 import { checkBinding } from '@hal/remote/server';
+import type { RecordablePerception } from '@hal/recorder';
 import type { Leash } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { CliError } from '../cli-error.js';
@@ -128,7 +129,7 @@ export async function startLiveView(
   hal: HardwareAbstractionLayer,
   plan: FoxgloveServeOptions | undefined,
   { io, global }: CommandContext,
-  extra: { deviceId?: string; leash?: Leash } = {},
+  extra: { deviceId?: string; leash?: Leash; perception?: RecordablePerception } = {},
 ): Promise<LiveView> {
   if (plan === undefined) return { hal, url: undefined, close: async () => undefined };
   const logger = cliLogger(io, global().json);
@@ -139,6 +140,7 @@ export async function startLiveView(
       logger,
       ...(extra.deviceId === undefined ? {} : { deviceId: extra.deviceId }),
       ...(extra.leash === undefined ? {} : { leash: extra.leash }),
+      ...(extra.perception === undefined ? {} : { perception: extra.perception }),
     });
   } catch (error) {
     throw listenError(error, {
