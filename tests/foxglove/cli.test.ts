@@ -65,7 +65,7 @@ describe('hal serve --foxglove', () => {
     }
   });
 
-  it('refuses a non-loopback live view without a token, and --foxglove-* without --foxglove', async () => {
+  it('refuses a non-loopback live view without a token, --foxglove-* without --foxglove, --host without --ws-port', async () => {
     const open = await runHalProcess([
       'serve',
       '--sim',
@@ -86,5 +86,11 @@ describe('hal serve --foxglove', () => {
     ]);
     expect(stray.code).not.toBe(0);
     expect(stray.stderr).toMatch(/"--foxglove-token" needs --foxglove/);
+    // beside --foxglove alone, the WebSocket options still want --ws-port
+    const host = await runHalProcess(['serve', '--sim', '--foxglove', '0', '--host', '127.0.0.1']);
+    expect(host.code).not.toBe(0);
+    expect(host.stderr).toMatch(/"--host" needs --ws-port/);
+    const nowhere = await runHalProcess(['serve', '--sim']);
+    expect(nowhere.stderr).toMatch(/--foxglove \[port\] for a live view/);
   });
 });

@@ -146,8 +146,15 @@ function planOf(
   env: Readonly<Record<string, string | undefined>>,
   foxglove: FoxgloveServeOptions | undefined,
 ): ServePlan {
-  if (foxglove === undefined || options.nats !== undefined || options.wsPort !== undefined) {
-    return servePlan(options, env);
+  if (options.nats !== undefined || options.wsPort !== undefined) return servePlan(options, env);
+  // neither NATS nor WebSocket: the NATS options without --nats are refused there first, as
+  // before (the WebSocket plan it makes for the check is not used)
+  servePlan({ ...options, wsPort: 0 }, env);
+  if (foxglove === undefined) {
+    throw new CliError(
+      'USAGE',
+      'say where to serve: --nats <servers> for NATS, --ws-port <port> for WebSocket, --foxglove [port] for a live view, or several',
+    );
   }
   for (const [value, name] of [
     [options.host, '--host'],
@@ -157,9 +164,7 @@ function planOf(
   ] as const) {
     if (value !== undefined) throw new CliError('USAGE', `"${name}" needs --ws-port`);
   }
-  // the NATS options without --nats are refused there; the WebSocket plan it makes is not used
-  const { nats } = servePlan({ ...options, wsPort: 0 }, env);
-  return nats === undefined ? {} : { nats };
+  return {};
 }
 
 /** Opens the robot, serves it until Ctrl-C, then stops serving and lets it go. */
