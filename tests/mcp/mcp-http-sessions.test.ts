@@ -141,6 +141,27 @@ describe('hal mcp over streamable HTTP with sessions (the SDK client)', () => {
     expect(await postIn(endpoint.url, id!)).toBe(404);
   });
 
+  it("withdraws one session's open question when another session stops the robot", async () => {
+    const { endpoint, hal } = await serve();
+    const asking = await connect(endpoint.url, []);
+    let asked!: () => void;
+    const question = new Promise<void>((resolve) => (asked = resolve));
+    asking.client.setRequestHandler(ElicitRequestSchema, () => {
+      asked();
+      return new Promise<ElicitResult>(() => undefined); // the person is away
+    });
+    const moving = asking.client.callTool({
+      name: 'move_forward',
+      arguments: { distanceCm: 20 },
+    });
+    await question;
+    const other = await connect(endpoint.url, []);
+    expect((await other.client.callTool({ name: 'stop', arguments: {} })).isError).toBe(false);
+    const result = await moving;
+    expect(JSON.stringify(result.content)).toMatch(/a stop came while the question was open/);
+    expect((await hal.locomotion.getPose()).position.x).toBe(0);
+  });
+
   it('closes the session used least recently to make room for a new one', async () => {
     const { endpoint } = await serve(2);
     const first = await connect(endpoint.url, []);

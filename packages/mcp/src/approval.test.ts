@@ -139,6 +139,26 @@ describe('approval by elicitation (--approve)', () => {
     expect(await x(hal)).toBe(0);
   });
 
+  it('withdraws the open question when the e-stop is pressed elsewhere', async () => {
+    let asked!: () => void;
+    const question = new Promise<void>((resolve) => (asked = resolve));
+    const person: Person = {
+      asked: [],
+      answer: () => {
+        asked();
+        return new Promise<ElicitResult>(() => undefined);
+      },
+    };
+    const { client: c, sim: hal } = await connect('motion', person);
+    const moving = c.callTool({ name: 'move_forward', arguments: { distanceCm: 30 } });
+    await question;
+    // another handle on the same robot, not a call through the server
+    await hal.safety.emergencyStop('pressed by the operator');
+    const result = await moving;
+    expect(textOf(result)).toMatch(/a stop came while the question was open/);
+    expect(await x(hal)).toBe(0);
+  });
+
   it('never holds stop and emergency_stop, nor asks about reads', async () => {
     const person: Person = { asked: [], answer: async () => ({ action: 'decline' }) };
     const { client: c, sim: hal } = await connect('motion', person);

@@ -102,6 +102,8 @@ export class RobotEvents {
   #link: string | undefined;
   /** E-stops and resets asked for by an MCP client, not yet seen in the status. */
   #pending = { estop: 0, reset: 0 };
+  /** Aborted at the next stop of the robot (a stop or e-stop call, an e-stop seen latching). */
+  #stops = new AbortController();
 
   constructor(
     hal: HardwareAbstractionLayer,
@@ -159,6 +161,21 @@ export class RobotEvents {
   /** An MCP client asked for an e-stop (or a reset): the latch change it brings is its own. */
   expect(what: 'estop' | 'reset'): void {
     this.#pending[what] += 1;
+  }
+
+  /**
+   * The signal of the robot's next stop: a stop or an e-stop through any server of the robot
+   * ({@link stopped}), or an e-stop seen latching from elsewhere. What waits on a person's
+   * answer gives up at it.
+   */
+  nextStop(): AbortSignal {
+    return this.#stops.signal;
+  }
+
+  /** The robot was told to stop: whatever waits for {@link nextStop} gives up. */
+  stopped(): void {
+    this.#stops.abort();
+    this.#stops = new AbortController();
   }
 
   /** Reads the status now (after a safety call), rather than at the next tick. */
@@ -269,6 +286,7 @@ export class RobotEvents {
     const who = byClient ? 'by an MCP client' : 'from elsewhere (not through this MCP server)';
     const details = faults.length === 0 ? {} : { details: { faults } };
     if (latched) {
+      if (!byClient) this.stopped();
       const reason = status.emergencyStopReason;
       this.add({
         type: 'emergency_stop',
@@ -313,4 +331,22 @@ export class RobotEvents {
       this.log({ level: 'warn', logger: 'guard', message: event.message });
     }
   }
+}
+
+const feeds = new WeakMap<HardwareAbstractionLayer, RobotEvents>();
+
+/**
+ * The one feed of `hal`, made with `sources` the first time it is asked for: every server of one
+ * robot shares it (its events, and a stop in one session withdrawing the questions of all).
+ */
+export function eventsOf(
+  hal: HardwareAbstractionLayer,
+  sources: RobotEventSources = {},
+): RobotEvents {
+  let feed = feeds.get(hal);
+  if (feed === undefined) {
+    feed = new RobotEvents(hal, sources);
+    feeds.set(hal, feed);
+  }
+  return feed;
 }

@@ -7,7 +7,7 @@ export type { HttpEndpoint, HttpOptions } from './http.js';
 export { approveOverMcp } from './approval.js';
 export { DEFAULT_APPROVAL_TIMEOUT_MS, parseApprovalPolicy, policyText } from './approval-policy.js';
 export type { ApprovalPolicy } from './approval-policy.js';
-export { RobotEvents } from './events.js';
+export { eventsOf, RobotEvents } from './events.js';
 export type {
   GuardEventLike,
   RobotEvent,

@@ -14,8 +14,8 @@ import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { asks, DEFAULT_APPROVAL_TIMEOUT_MS, policyText } from './approval-policy.js';
 import type { ApprovalPolicy } from './approval-policy.js';
-import { RobotEvents } from './events.js';
-import type { RobotEventSources } from './events.js';
+import { eventsOf } from './events.js';
+import type { RobotEvents, RobotEventSources } from './events.js';
 import { serveLive } from './live.js';
 import { DEFAULT_PROGRESS_PERIOD_MS } from './progress.js';
 import { robotResources, stateOf } from './resources.js';
@@ -45,9 +45,9 @@ export interface RobotMcpOptions {
   approve?: ApprovalPolicy;
   /** How long the user has to answer, ms; unanswered is declined. Default 30000. */
   approvalTimeoutMs?: number;
-  /** The robot's events, shared by every server of the robot; default one of this server's own. */
+  /** The robot's events; default the one feed of `monitor` every server of it shares. */
   events?: RobotEvents;
-  /** Where this server's own feed reads events from besides the safety status. */
+  /** Where that default feed reads events from besides the safety status (its first server's). */
   eventSources?: RobotEventSources;
   /** How often a motion's progress is read, ms. Default 200. */
   progressPeriodMs?: number;
@@ -77,7 +77,7 @@ export function createRobotMcpServer(
 ): Server {
   const policy = options.approve ?? 'none';
   const monitor = options.monitor ?? hal;
-  const events = options.events ?? new RobotEvents(monitor, options.eventSources ?? {});
+  const events = options.events ?? eventsOf(monitor, options.eventSources);
   const server = new Server(SERVER_INFO, {
     capabilities: { tools: {}, resources: { subscribe: true }, logging: {} },
     instructions:

@@ -53,7 +53,6 @@ const argsOf = (raw: unknown): Record<string, unknown> =>
 /** The tools/call handler of one server. */
 export function toolCalls(deps: ToolCallDeps) {
   const { server, hal, monitor, offered, events, live, policy } = deps;
-  let stops = new AbortController();
 
   const summarize: Summarize = async (tool, args) => {
     try {
@@ -101,17 +100,15 @@ export function toolCalls(deps: ToolCallDeps) {
     const { name } = request.params;
     const args = argsOf(request.params.arguments);
     const tool = offered.tools.find((t) => t.name === name);
-    if (tool?.safety !== undefined) {
-      // a stop withdraws the questions open: what was asked about before it does not run after it
-      stops.abort();
-      stops = new AbortController();
-    }
+    // a stop withdraws the questions open (in every session): what was asked about before it
+    // does not run after it
+    if (tool?.safety !== undefined) events.stopped();
     if (tool?.safety === 'estop') events.expect('estop');
     if (name === 'reset_emergency_stop') events.expect('reset');
     const context: CallContext = {
       tool: name,
       policy,
-      ask: elicitApproval(server, extra, deps.approvalTimeoutMs, () => stops.signal),
+      ask: elicitApproval(server, extra, deps.approvalTimeoutMs, () => events.nextStop()),
       summarize,
       approved: false,
       hookConsulted: false,
