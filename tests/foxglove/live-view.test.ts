@@ -168,6 +168,21 @@ describe('teleop and services', () => {
     expect(await viewer.call('/hal/stop')).toMatchObject({ success: true });
   });
 
+  it('stops the robot for a viewer that leaves while its drive runs', async () => {
+    const lines: string[] = [];
+    const logger = { log: (_level: string, _ns: string, message: string) => lines.push(message) };
+    // a drive of 2 s: the viewer leaves long before it ends
+    server = await serveFoxglove(hal, { port: 0, teleopHoldMs: 2000, logger });
+    const viewer = await viewerOf(server.url);
+    const publish = viewer.publisher('/cmd_vel', 'geometry_msgs/Twist');
+    publish(twist(0.02));
+    // a round trip after the message: the server has taken it
+    await viewer.subscribe('/hal/pose');
+    viewer.close();
+    await viewer.until(() => lines.some((l) => l.includes('left while driving')));
+    expect(lines).toContain('viewer-1 left while driving: stopping the robot');
+  });
+
   it('refuses a teleop message that is no Twist, with a status saying what one is', async () => {
     server = await serveFoxglove(hal, { port: 0 });
     const viewer = await viewerOf(server.url);

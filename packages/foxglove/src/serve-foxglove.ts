@@ -3,7 +3,7 @@
 // docs/live.md.
 import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { FoxgloveServer, ServerCapability, StatusLevel } from './ws-protocol.js';
+import { FoxgloveServer, ServerCapability } from './ws-protocol.js';
 import type { ServiceCallRequest } from '@foxglove/ws-protocol';
 import { checkBinding } from '@hal/remote/server';
 import { createToolExecutor, robotConfigOf, toolBackedHal } from '@hal/tools';
@@ -22,25 +22,18 @@ import type {
 import { livePerception } from './perception.js';
 import { LivePublisher } from './publisher.js';
 import { controlServices } from './services.js';
-import { driveOnce, powersOfTwist } from './teleop.js';
+import { acceptTeleop } from './teleop-channel.js';
 import { tapHal } from './tap.js';
 import { liveNames } from './topics.js';
 import { ViewerSocket } from './viewer-socket.js';
 
 const NS = 'hal:foxglove';
-/** Teleop messages of one viewer on their way at once, at most; more are skipped. */
-const MAX_TELEOP_IN_FLIGHT = 2;
 /** How long a viewer has to answer the server's close before it is cut off, ms. */
 const CLOSE_GRACE_MS = 500;
 
 interface Viewer {
   name: string;
   socket: ViewerSocket;
-  /** Teleop channels it advertised. */
-  teleopChannels: Set<number>;
-  teleopInFlight: number;
-  /** When it last drove, ms (performance.now). */
-  droveAt: number | undefined;
 }
 
 function rate(name: string, value: number, min: number, max: number): number {
@@ -122,69 +115,17 @@ export async function serveFoxglove(
     tapped,
     createToolExecutor(tapped, { leash: options.leash ?? {} }).execute,
   );
-  const config = robotConfigOf(hal);
+  const teleop = acceptTeleop(protocol, {
+    topic: names.control.teleop,
+    leashed,
+    robot: hal,
+    config: robotConfigOf(hal),
+    holdMs,
+    log,
+  });
   const viewers = new Map<WebSocket, Viewer>();
-  const teleop = { driven: 0, refused: 0 };
   const gone: ViewerDrops[] = [];
   let nextViewer = 1;
-  const viewerOf = (socket: unknown) => [...viewers.values()].find((v) => v.socket === socket);
-
-  // A viewer that leaves while its last drive still runs has the robot stopped on its behalf.
-  const stopFor = (viewer: Viewer) => {
-    log('warn', `${viewer.name} left while driving: stopping the robot`);
-    hal.locomotion.stop().then(
-      (result) => {
-        if (!result.success) log('error', `the stop for ${viewer.name} failed: ${result.error}`);
-      },
-      (error: unknown) => log('error', `the stop for ${viewer.name} failed: ${String(error)}`),
-    );
-  };
-
-  protocol.on('advertise', (channel) => {
-    const viewer = viewerOf(channel.client.connection);
-    if (viewer === undefined || channel.topic !== names.control.teleop) return;
-    if (channel.encoding !== 'json') {
-      protocol.sendStatus(
-        {
-          level: StatusLevel.ERROR,
-          message: `teleop on ${channel.topic} must be published as json, not ${channel.encoding}`,
-        },
-        viewer.socket,
-      );
-      return;
-    }
-    viewer.teleopChannels.add(channel.id);
-  });
-  protocol.on('unadvertise', ({ client, channelId }) => {
-    viewerOf(client.connection)?.teleopChannels.delete(channelId);
-  });
-  protocol.on('message', ({ client, channel, data }) => {
-    const viewer = viewerOf(client.connection);
-    if (viewer === undefined || !viewer.teleopChannels.has(channel.id)) return;
-    const refuse = (code: string, error: string) => {
-      teleop.refused += 1;
-      protocol.sendStatus(
-        { level: StatusLevel.WARNING, message: `teleop refused (${code}): ${error}`, id: 'teleop' },
-        viewer.socket,
-      );
-      log('warn', `teleop from ${viewer.name} refused (${code}): ${error}`);
-    };
-    let powers: { left: number; right: number };
-    try {
-      powers = powersOfTwist(JSON.parse(new TextDecoder().decode(data)), config);
-    } catch (error) {
-      refuse('INVALID_PARAMETER', error instanceof HalError ? error.message : 'not JSON');
-      return;
-    }
-    if (viewer.teleopInFlight >= MAX_TELEOP_IN_FLIGHT) return;
-    viewer.droveAt = performance.now();
-    viewer.teleopInFlight += 1;
-    void driveOnce(leashed, powers, holdMs).then((outcome) => {
-      viewer.teleopInFlight -= 1;
-      if (outcome.driven) teleop.driven += 1;
-      else refuse(outcome.code, outcome.error);
-    });
-  });
 
   const services = controlServices(protocol, tapped, leashed, names.control, log);
   protocol.on('serviceCallRequest', (request: ServiceCallRequest, connection) => {
@@ -222,14 +163,9 @@ export async function serveFoxglove(
       firstDrop: (topic) =>
         log('warn', `${name} cannot keep up: dropping its messages on ${topic} (counted)`),
     });
-    const viewer: Viewer = {
-      name,
-      socket,
-      teleopChannels: new Set(),
-      teleopInFlight: 0,
-      droveAt: undefined,
-    };
+    const viewer: Viewer = { name, socket };
     viewers.set(ws, viewer);
+    teleop.joined(socket, name);
     ws.on('close', () => {
       viewers.delete(ws);
       const drops = dropsOf(viewer);
@@ -237,9 +173,7 @@ export async function serveFoxglove(
         gone.push(drops);
         log('info', `${name} left; ${drops.dropped} messages were dropped for it`, drops.byTopic);
       }
-      if (viewer.droveAt !== undefined && performance.now() - viewer.droveAt < holdMs) {
-        stopFor(viewer);
-      }
+      teleop.left(socket);
     });
     ws.on('error', (e) => log('warn', `${name} socket error: ${e.message}`));
     protocol.handleConnection(socket, name);
@@ -280,7 +214,7 @@ export async function serveFoxglove(
         sent,
         dropped: drops.reduce((n, d) => n + d.dropped, 0),
         drops,
-        teleop: { ...teleop },
+        teleop: teleop.counts(),
       };
     },
     close: () => {
