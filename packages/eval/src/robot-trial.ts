@@ -68,10 +68,11 @@ export function runsOnRobot(task: Task, robot?: EvalRobot): boolean {
 const message = (error: unknown) => (error instanceof Error ? error.message : String(error));
 
 /**
- * Runs one trial of `task` on `robot`, scored from the robot's own reports (its odometry). The
- * robot starts where it stands; the link's knobs (loss, latency) apply, the simulator's body and
- * sensor knobs do not: the robot has its own. An e-stop left latched is reset after the trial, so
- * the next one starts free.
+ * Runs one trial of `task` on `robot`. A robot that can be staged in the task's world runs it
+ * there, judged from its body's true pose ({@link EvalRobot.stage}); any other is scored from
+ * its own reports (its odometry), starting where it stands. The link's knobs (loss, latency)
+ * apply, the simulator's body and sensor knobs do not: the robot has its own. An e-stop left
+ * latched is reset after the trial, so the next one starts free.
  */
 export async function runRobotTrial(
   task: Task,
@@ -82,67 +83,49 @@ export async function runRobotTrial(
 ): Promise<{ score: TrialScore; timing: TrialTiming }> {
   const started = performance.now();
   const stage = robot.stage?.bind(robot);
-  if (stage !== undefined) return await runStagedTrial(task, seed, agent, robot, stage, options);
+  if (stage !== undefined) {
+    // staged in the seed's variant of the world, its start included
+    const variant = realiseTask(task, seed);
+    const staged = await reach(robot, () => stage(variant));
+    const judged = stagedBody(staged.hal, staged, variant, robot.timeScale ?? 1);
+    try {
+      return await conductOnRobot(
+        { task, seed, agent, robot, options, started, variant },
+        {
+          raw: staged.hal,
+          // its scan answers from the camera, as the simulator's does without range sensors
+          seeing: (under) => withCameraScan(under, new Perception(staged.hal)),
+          body: () => Promise.resolve(judged.body),
+          collisions: judged.collisions,
+        },
+      );
+    } finally {
+      judged.close();
+      await staged.close();
+    }
+  }
   if (!runsOnRobot(task))
     throw new EvalError(
       'CONFIG',
       `${task.id} cannot run on ${robot.name}: its checks need the simulator's ground truth`,
     );
-  const linkReality = linkRealityOf(options, task);
-  const variant = realiseAtOrigin(task, seed);
-  let raw: HardwareAbstractionLayer;
+  const raw = await reach(robot, () => robot.open());
+  return await conductOnRobot(
+    { task, seed, agent, robot, options, started, variant: realiseAtOrigin(task, seed) },
+    {
+      raw,
+      body: () => reportedBody(raw, robot.timeScale ?? 1),
+      collisions: () => 0,
+    },
+  );
+}
+
+/** What the robot answers, or ROBOT naming it. */
+async function reach<T>(robot: EvalRobot, open: () => Promise<T>): Promise<T> {
   try {
-    raw = await robot.open();
+    return await open();
   } catch (error) {
     throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
-  }
-  let body: TrialBody | undefined;
-  /** Whether a latch at the end is this trial's own (an injected or the agent's e-stop). */
-  let latchedByTrial = false;
-  // the guard sits under the agent's tools (and under a recorder: what is recorded is the agent's)
-  const guard = options.guard === false ? undefined : guardHal(raw, options.guard ?? {});
-  const instrumented = await options.instrument?.(guard ?? raw, {
-    task,
-    variant,
-    seed,
-    trial: options.trial ?? 0,
-    agent: agent.name,
-    on: robot.name,
-    nowUs: () => body?.nowUs() ?? 0,
-  });
-  const hal = instrumented?.hal ?? guard ?? raw;
-  try {
-    try {
-      await hal.initialize();
-      body = await reportedBody(raw, robot.timeScale ?? 1);
-    } catch (error) {
-      throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
-    }
-    // a latch the harness did not set is someone's: it is not reset here
-    if (raw.safety.isEmergencyStopped())
-      throw new EvalError(
-        'ROBOT',
-        `${robot.name}: the emergency stop is engaged; reset it on the robot before the run`,
-      );
-    latchedByTrial = true;
-    return await conductTrial({
-      task,
-      seed,
-      agent,
-      variant,
-      hal,
-      body,
-      reality: linkReality,
-      options,
-      collisions: () => 0,
-      started,
-      guard,
-    });
-  } finally {
-    if (latchedByTrial && raw.isReady() && raw.safety.isEmergencyStopped())
-      await raw.safety.resetEmergencyStop().catch(() => undefined);
-    await hal.cleanup().catch(() => undefined);
-    await instrumented?.close();
   }
 }
 
@@ -157,48 +140,56 @@ function linkRealityOf(options: TrialOptions, task: Task) {
   };
 }
 
-/**
- * A trial on a robot staged in the task's world (the seed's variant, its start included),
- * judged from the body's true pose as a simulated trial is from the simulator's. Its scan
- * answers from the camera, as the simulator's does for a robot without range sensors.
- */
-async function runStagedTrial(
-  task: Task,
-  seed: number,
-  agent: EvalAgent,
-  robot: EvalRobot,
-  stage: (variant: TaskVariant) => Promise<StagedRobot>,
-  options: TrialOptions,
+/** One trial on a robot: what it is, and where. */
+interface RobotTrial {
+  task: Task;
+  seed: number;
+  agent: EvalAgent;
+  robot: EvalRobot;
+  options: TrialOptions;
+  started: number;
+  variant: TaskVariant;
+}
+
+/** How a robot is seen and judged in a trial. */
+interface RobotJudging {
+  /** The robot's own HAL, not yet initialised. */
+  raw: HardwareAbstractionLayer;
+  /** What the agent's tools see through, over the guard. Default the guard itself. */
+  seeing?: (under: HardwareAbstractionLayer) => HardwareAbstractionLayer;
+  /** The body the checks read, made once the robot is initialised. */
+  body: () => Promise<TrialBody>;
+  collisions: () => number;
+}
+
+/** Runs the agent on the robot under the guard and the tools, and scores it. */
+async function conductOnRobot(
+  t: RobotTrial,
+  j: RobotJudging,
 ): Promise<{ score: TrialScore; timing: TrialTiming }> {
-  const started = performance.now();
-  const variant = realiseTask(task, seed);
-  let staged: StagedRobot;
-  try {
-    staged = await stage(variant);
-  } catch (error) {
-    throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
-  }
-  const raw = staged.hal;
-  const judged = stagedBody(raw, staged, variant, robot.timeScale ?? 1);
+  const { task, robot, options, raw } = { ...t, ...j };
+  let body: TrialBody | undefined;
+  /** Whether a latch at the end is this trial's own (an injected or the agent's e-stop). */
   let latchedByTrial = false;
+  // the guard sits under the agent's tools (and under a recorder: what is recorded is the agent's)
   const guard = options.guard === false ? undefined : guardHal(raw, options.guard ?? {});
-  const seeing = withCameraScan(guard ?? raw, new Perception(raw));
+  const seeing = j.seeing?.(guard ?? raw) ?? guard ?? raw;
   const instrumented = await options.instrument?.(seeing, {
     task,
-    variant,
-    seed,
+    variant: t.variant,
+    seed: t.seed,
     trial: options.trial ?? 0,
-    agent: agent.name,
+    agent: t.agent.name,
     on: robot.name,
-    nowUs: () => judged.body.nowUs(),
+    nowUs: () => body?.nowUs() ?? 0,
   });
   const hal = instrumented?.hal ?? seeing;
   try {
-    try {
+    body = await reach(robot, async () => {
       await hal.initialize();
-    } catch (error) {
-      throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
-    }
+      return await j.body();
+    });
+    // a latch the harness did not set is someone's: it is not reset here
     if (raw.safety.isEmergencyStopped())
       throw new EvalError(
         'ROBOT',
@@ -207,15 +198,15 @@ async function runStagedTrial(
     latchedByTrial = true;
     return await conductTrial({
       task,
-      seed,
-      agent,
-      variant,
+      seed: t.seed,
+      agent: t.agent,
+      variant: t.variant,
       hal,
-      body: judged.body,
+      body,
       reality: linkRealityOf(options, task),
       options,
-      collisions: judged.collisions,
-      started,
+      collisions: j.collisions,
+      started: t.started,
       guard,
     });
   } finally {
@@ -223,7 +214,5 @@ async function runStagedTrial(
       await raw.safety.resetEmergencyStop().catch(() => undefined);
     await hal.cleanup().catch(() => undefined);
     await instrumented?.close();
-    judged.close();
-    await staged.close();
   }
 }

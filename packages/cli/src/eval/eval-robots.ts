@@ -4,6 +4,7 @@
 // this command starts is put into each task's world (staged-emulator.ts) and runs every task.
 import type { EvalRobot } from '@hal/eval';
 import { PhysicalHAL } from '@hal/physical';
+import { z } from 'zod';
 import { CliError } from '../cli-error.js';
 import { WHEEL_REPORT_MS } from '../emulate/emulate-options.js';
 import { startEmulatorProcess, WheelsEventSchema } from '../emulate/emulator-process.js';
@@ -90,6 +91,13 @@ function udpRobot(
   };
 }
 
+/** The wheel positions in the emulator's `move_finished` event. */
+const MoveFinishedPositionsSchema = z.object({
+  event: z.literal('move_finished'),
+  left_position: z.number().int(),
+  right_position: z.number().int(),
+});
+
 /** The wheels an emulator tells in its `wheels` events, and the handler of its events. */
 function wheelsTold(): { wheels: EmulatorWheels; told: (event: Record<string, unknown>) => void } {
   let now = { left: 0, right: 0 };
@@ -105,7 +113,8 @@ function wheelsTold(): { wheels: EmulatorWheels; told: (event: Record<string, un
       },
     },
     told: (event) => {
-      const wheels = WheelsEventSchema.safeParse(event);
+      // a finished motion tells where the wheels stopped at once; a wheels report comes later
+      const wheels = WheelsEventSchema.or(MoveFinishedPositionsSchema).safeParse(event);
       if (!wheels.success) return;
       now = { left: wheels.data.left_position, right: wheels.data.right_position };
       at = performance.now();

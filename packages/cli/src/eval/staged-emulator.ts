@@ -20,20 +20,28 @@ export interface EmulatorWheels {
   lastReportAt(): number;
 }
 
-/** A quiet of this many report periods means the wheels stood still when it began. */
-const QUIET_REPORTS = 3;
 /** The longest a settle waits, ms. */
-const SETTLE_LIMIT_MS = 1000;
+const SETTLE_LIMIT_MS = 2000;
+/** How often a settle looks again, ms. */
+const SETTLE_POLL_MS = 5;
 
-/** Resolves once no wheels report has come for a few periods (at most {@link SETTLE_LIMIT_MS}). */
-async function settled(wheels: EmulatorWheels): Promise<void> {
-  const quietMs = QUIET_REPORTS * WHEEL_REPORT_MS;
+/**
+ * Resolves once the wheel reports have caught up with the counters the robot last reported over
+ * its link (`reportedSteps`): the two are the same emulator's, told on two channels (its stdout
+ * and UDP), so when a motion's result has come back its last wheel report may still be on the
+ * way. Without a report over the link yet, once no wheel report has come for a few periods.
+ * At most {@link SETTLE_LIMIT_MS}.
+ */
+async function settled(wheels: EmulatorWheels, hal?: PhysicalHAL): Promise<void> {
   const until = performance.now() + SETTLE_LIMIT_MS;
-  for (;;) {
-    const wait = wheels.lastReportAt() + quietMs - performance.now();
-    if (wait <= 0 || performance.now() >= until) return;
-    await new Promise((resolve) => setTimeout(resolve, Math.min(wait, until - performance.now())));
-  }
+  const caughtUp = () => {
+    const told = hal?.reportedSteps();
+    if (told === undefined) return performance.now() - wheels.lastReportAt() >= 3 * WHEEL_REPORT_MS;
+    const now = wheels.now();
+    return now.left === told.leftSteps && now.right === told.rightSteps;
+  };
+  while (!caughtUp() && performance.now() < until)
+    await new Promise((resolve) => setTimeout(resolve, SETTLE_POLL_MS));
 }
 
 /** The emulator at 127.0.0.1:`udpPort`, staged in each trial's world. */
@@ -73,11 +81,12 @@ export function stagedEmulator(
         world: { map: variant.map, objects: variant.objects, start: variant.start },
         wheels: () => wheels.now(),
       });
+      const staged = hal(camera.url, variant.start);
       return {
-        hal: hal(camera.url, variant.start),
+        hal: staged,
         truePose: () => camera.pose(),
         onTruePose: (listener) => wheels.onReport(() => listener(camera.pose())),
-        settle: () => settled(wheels),
+        settle: () => settled(wheels, staged),
         close: () => camera.close(),
       };
     },
