@@ -2,7 +2,7 @@
 // reset_emergency_stop. Stop and the e-stop go straight to the robot, never refused or held;
 // the reset goes through the leash (its approval) like any other call. Each answers the HAL's
 // result as JSON: {success, error?, code?, emergency_stopped}.
-import { StatusLevel } from './ws-protocol.js';
+import { StatusLevel, bytesOf } from './ws-protocol.js';
 import type { FoxgloveServer, IWebSocket, ServiceCallRequest } from '@foxglove/ws-protocol';
 import type { HALToolResult, HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import type { ControlNames } from './topics.js';
@@ -67,7 +67,7 @@ export function controlServices(
       if (service === undefined) return;
       let body: Record<string, unknown> = {};
       try {
-        const text = decoder.decode(request.data);
+        const text = decoder.decode(bytesOf(request.data));
         const parsed: unknown = text.trim() === '' ? {} : JSON.parse(text);
         if (typeof parsed === 'object' && parsed !== null) body = parsed as Record<string, unknown>;
       } catch {

@@ -7,7 +7,7 @@ import type { FoxgloveServer, IWebSocket } from '@foxglove/ws-protocol';
 import { HalError } from '@hal/types';
 import type { HardwareAbstractionLayer, LogLevel, RobotConfig } from '@hal/types';
 import { driveOnce, powersOfTwist } from './teleop.js';
-import { StatusLevel } from './ws-protocol.js';
+import { StatusLevel, bytesOf } from './ws-protocol.js';
 
 /** Teleop messages of one viewer on their way at once, at most; more are skipped. */
 const MAX_IN_FLIGHT = 2;
@@ -78,7 +78,7 @@ export function acceptTeleop(
     };
     let powers: { left: number; right: number };
     try {
-      powers = powersOfTwist(JSON.parse(decoder.decode(data)), config);
+      powers = powersOfTwist(JSON.parse(decoder.decode(bytesOf(data))), config);
     } catch (error) {
       refuse('INVALID_PARAMETER', error instanceof HalError ? error.message : 'not JSON');
       return;

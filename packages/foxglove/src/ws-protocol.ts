@@ -9,3 +9,8 @@ type WsProtocol = typeof WsProtocolModule;
 const wsProtocol = createRequire(import.meta.url)('@foxglove/ws-protocol') as WsProtocol;
 
 export const { FoxgloveServer, ServerCapability, StatusLevel } = wsProtocol;
+
+/** A message's bytes (the protocol hands an ArrayBufferView) as what every TextDecoder takes. */
+export function bytesOf(view: ArrayBufferView): Uint8Array {
+  return new Uint8Array(view.buffer, view.byteOffset, view.byteLength);
+}
