@@ -73,11 +73,11 @@ export interface ViewerDrops {
 export interface FoxgloveStats {
   /** Viewers connected now. */
   clients: number;
-  /** Messages handed to viewers' sockets, by topic. */
+  /** Messages handed to the sockets of the viewers connected now, by topic. */
   sent: Record<string, number>;
   /** Messages dropped for a slow viewer, in all. */
   dropped: number;
-  /** The drops of each viewer connected now, and of those gone (`client` is their name). */
+  /** The drops of each viewer connected now, and of the last 100 gone that lost any. */
   drops: ViewerDrops[];
   /** Teleop messages driven, and refused (leash, guard, e-stop). */
   teleop: { driven: number; refused: number };

@@ -30,6 +30,8 @@ import { ViewerSocket } from './viewer-socket.js';
 const NS = 'hal:foxglove';
 /** How long a viewer has to answer the server's close before it is cut off, ms. */
 const CLOSE_GRACE_MS = 500;
+/** Viewers gone whose drops stats() still lists, at most (the total counts them all). */
+const MAX_GONE = 100;
 
 interface Viewer {
   name: string;
@@ -125,6 +127,7 @@ export async function serveFoxglove(
   });
   const viewers = new Map<WebSocket, Viewer>();
   const gone: ViewerDrops[] = [];
+  let droppedByGone = 0;
   let nextViewer = 1;
 
   const services = controlServices(protocol, tapped, leashed, names.control, log);
@@ -170,7 +173,10 @@ export async function serveFoxglove(
       viewers.delete(ws);
       const drops = dropsOf(viewer);
       if (drops.dropped > 0) {
+        droppedByGone += drops.dropped;
         gone.push(drops);
+        // the latest ones only: a server up for weeks keeps no list that grows with it
+        if (gone.length > MAX_GONE) gone.shift();
         log('info', `${name} left; ${drops.dropped} messages were dropped for it`, drops.byTopic);
       }
       teleop.left(socket);
@@ -205,6 +211,7 @@ export async function serveFoxglove(
     stats: (): FoxgloveStats => {
       const current = [...viewers.values()].map(dropsOf);
       const drops = [...current, ...gone];
+      const droppedNow = current.reduce((n, d) => n + d.dropped, 0);
       const sent: Record<string, number> = {};
       for (const v of viewers.values()) {
         for (const [topic, n] of v.socket.counts.sent) sent[topic] = (sent[topic] ?? 0) + n;
@@ -212,7 +219,7 @@ export async function serveFoxglove(
       return {
         clients: viewers.size,
         sent,
-        dropped: drops.reduce((n, d) => n + d.dropped, 0),
+        dropped: droppedNow + droppedByGone,
         drops,
         teleop: teleop.counts(),
       };
