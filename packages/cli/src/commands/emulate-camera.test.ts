@@ -50,6 +50,10 @@ async function emulateWithCamera(args: string[], env: Record<string, string> = {
       '--no-announce',
       '--time-scale',
       '10',
+      // the longest host timeout: at 10x the 2 s default is 200 ms of real time, which this
+      // process (rendering the frames and driving the robot) can miss on a loaded machine
+      '--host-timeout-ms',
+      '10000',
       '--camera',
       '0',
       ...args,
