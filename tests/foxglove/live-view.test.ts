@@ -168,6 +168,18 @@ describe('teleop and services', () => {
     expect(await viewer.call('/hal/stop')).toMatchObject({ success: true });
   });
 
+  it('lets a viewer that joined with ?role=watch stop the robot, not drive it', async () => {
+    server = await serveFoxglove(hal, { port: 0 });
+    const viewer = await viewerOf(`${server.url}/?role=watch`);
+    const publish = viewer.publisher('/cmd_vel', 'geometry_msgs/Twist');
+    const start = await hal.locomotion.getPose();
+    publish(twist(0.02));
+    await viewer.until(() => viewer.statuses.length > 0);
+    expect(viewer.statuses[0]!.message).toMatch(/NOT_CONTROLLER.*role=watch/);
+    expect((await hal.locomotion.getPose()).position.x).toBe(start.position.x);
+    expect(await viewer.call('/hal/emergency_stop')).toMatchObject({ success: true });
+  });
+
   it('stops the robot for a viewer that leaves while its drive runs', async () => {
     const lines: string[] = [];
     const logger = { log: (_level: string, _ns: string, message: string) => lines.push(message) };

@@ -2,6 +2,7 @@
 // for Foxglove and Lichtblick: the recorder's topics and schemas, teleop and stop services. See
 // docs/live.md.
 import { createServer } from 'node:http';
+import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { FoxgloveServer, ServerCapability } from './ws-protocol.js';
 import type { ServiceCallRequest } from '@foxglove/ws-protocol';
@@ -160,7 +161,7 @@ export async function serveFoxglove(
     }
     wss.handleUpgrade(request, socket, head, (ws) => wss.emit('connection', ws, request));
   });
-  wss.on('connection', (ws: WebSocket) => {
+  wss.on('connection', (ws: WebSocket, request: IncomingMessage) => {
     const name = `viewer-${nextViewer++}`;
     const socket = new ViewerSocket(ws, maxQueuedBytes, (id) => publisher.topicOf(id), {
       firstDrop: (topic) =>
@@ -168,7 +169,9 @@ export async function serveFoxglove(
     });
     const viewer: Viewer = { name, socket };
     viewers.set(ws, viewer);
-    teleop.joined(socket, name);
+    // `?role=watch`: a viewer that only watches (and stops), as on hal serve's WebSocket door
+    const role = new URL(request.url ?? '/', 'http://localhost').searchParams.get('role');
+    teleop.joined(socket, name, role === 'watch');
     ws.on('close', () => {
       viewers.delete(ws);
       const drops = dropsOf(viewer);

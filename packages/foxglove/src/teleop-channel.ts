@@ -14,6 +14,8 @@ const MAX_IN_FLIGHT = 2;
 
 interface Driver {
   name: string;
+  /** Joined with `?role=watch`: it sees, stops and e-stops, but does not drive. */
+  watchOnly: boolean;
   /** Teleop channels it advertised. */
   channels: Set<number>;
   inFlight: number;
@@ -38,7 +40,7 @@ export function acceptTeleop(
   server: FoxgloveServer,
   options: TeleopOptions,
 ): {
-  joined(connection: IWebSocket, name: string): void;
+  joined(connection: IWebSocket, name: string, watchOnly: boolean): void;
   left(connection: IWebSocket): void;
   counts(): { driven: number; refused: number };
 } {
@@ -76,6 +78,13 @@ export function acceptTeleop(
       );
       log('warn', `teleop from ${driver.name} refused (${code}): ${error}`);
     };
+    if (driver.watchOnly) {
+      refuse(
+        'NOT_CONTROLLER',
+        'this viewer joined with ?role=watch: it may watch and stop, not drive',
+      );
+      return;
+    }
     let powers: { left: number; right: number };
     try {
       powers = powersOfTwist(JSON.parse(decoder.decode(bytesOf(data))), config);
@@ -94,8 +103,14 @@ export function acceptTeleop(
   });
 
   return {
-    joined: (connection, name) =>
-      drivers.set(connection, { name, channels: new Set(), inFlight: 0, droveAt: undefined }),
+    joined: (connection, name, watchOnly) =>
+      drivers.set(connection, {
+        name,
+        watchOnly,
+        channels: new Set(),
+        inFlight: 0,
+        droveAt: undefined,
+      }),
     left(connection) {
       const driver = drivers.get(connection);
       drivers.delete(connection);
