@@ -4,13 +4,7 @@ import type { AgentTool, ApprovalDecision, HalTool } from '@hal/tools';
 import { needsApproval } from './approval-policy.js';
 import { currentCall } from './call-context.js';
 import type { CallContext } from './call-context.js';
-import type { MotionSummary } from './motion-words.js';
-
-/** What a motion call will do, read at the moment it is asked about (the pose now). */
-export type Summarize = (
-  tool: AgentTool,
-  args: Record<string, unknown>,
-) => Promise<MotionSummary | undefined>;
+import type { Summarize } from './motion-words.js';
 
 const ALLOW: ApprovalDecision = { allow: true };
 

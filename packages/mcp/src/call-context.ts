@@ -4,7 +4,7 @@
 import { AsyncLocalStorage } from 'node:async_hooks';
 import type { ApprovalDecision } from '@hal/tools';
 import type { ApprovalPolicy } from './approval-policy.js';
-import type { Summarize } from './approval.js';
+import type { Summarize } from './motion-words.js';
 
 /** One tool call a client made. */
 export interface CallContext {

@@ -19,6 +19,12 @@ export interface MotionSummary {
   progress: { unit: ProgressUnit; total?: number };
 }
 
+/** What a motion call will do, read at the moment it is asked about (the pose now). */
+export type Summarize = (
+  tool: AgentTool,
+  args: Record<string, unknown>,
+) => Promise<MotionSummary | undefined>;
+
 const m = (v: number) => `${v.toFixed(2)} m`;
 const speed = (v: number) => `${v.toFixed(2)} m/s`;
 const deg = (v: number) => `${Math.round(v)}°`;

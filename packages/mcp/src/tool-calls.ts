@@ -14,7 +14,7 @@ import { errorResult, robotConfigOf } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { decide } from './approval.js';
-import type { Summarize } from './approval.js';
+import type { Summarize } from './motion-words.js';
 import type { ApprovalPolicy } from './approval-policy.js';
 import { inCall } from './call-context.js';
 import type { CallContext } from './call-context.js';
