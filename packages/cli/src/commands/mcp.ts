@@ -14,6 +14,8 @@ import { CAPABILITIES, hasCapability } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import type { CliIO } from '../io.js';
 import { listenError } from '../listen-error.js';
+import { addFoxgloveOptions, foxglovePlan, startLiveView } from '../foxglove/live-view.js';
+import type { FoxgloveCliOptions, LiveView } from '../foxglove/live-view.js';
 import { addGuardOptions, guardFromOptions, recordGuard } from '../guard-options.js';
 import { seeingFrom } from '../seeing.js';
 import type { GuardCliOptions } from '../guard-options.js';
@@ -51,15 +53,18 @@ function outStream(io: CliIO): Writable {
   });
 }
 
-export const registerMcp: RegisterCommand = (program, { io }) => {
+export const registerMcp: RegisterCommand = (program, { io, global }) => {
   const command = new Command('mcp').description(
     'MCP server for a robot: the HAL tools or the skills (--tools), its state, capabilities and ' +
       'map as resources (the robot the target options name; the embedded simulator when none is named)',
   );
   addMcpOptions(command);
   addGuardOptions(command);
-  command.action(async (raw: McpCliOptions & GuardCliOptions) => {
+  addFoxgloveOptions(command);
+  command.action(async (raw: McpCliOptions & GuardCliOptions & FoxgloveCliOptions) => {
     const options = mcpOptions(raw, io.env);
+    // a live view that cannot be served as asked is refused before the robot is touched
+    const foxglove = foxglovePlan(raw, io.env);
     const { target } = options;
     const stdin = io.stdin as Readable | undefined;
     if (!options.http && stdin === undefined) {
@@ -100,7 +105,7 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     const { hal: guarded, guard } = guardFromOptions(robot, raw, io, false, target);
     recordGuard(guard, recorder);
     // scan answers from the range sensors and the camera, as the robot can know
-    const { hal: seeing } = seeingFrom(guarded, robot, recorder, target);
+    const { hal: seeing, perception } = seeingFrom(guarded, robot, recorder, target);
     const recorded =
       recorder === undefined
         ? seeing
@@ -113,14 +118,27 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
                 ? { map: { name: target.map } }
                 : {}),
           });
-    // the log lines the tools write also go to the MCP client, as logging notifications
-    const { hal, logs } = tapLog(recorded);
-    // once for the run, as the tools are: what happens to the robot, for every server of it;
-    // watched on the robot itself, so that a recording does not hold every look
-    const events = new RobotEvents(robot, mcpEventSources(robot, guard, logs));
-    const stopEvents = events.open();
+    let live: LiveView | undefined;
+    let stopEvents = (): void => undefined;
     let close: () => Promise<void> = async () => undefined;
     try {
+      // a viewer watches what the MCP client does, and may drive under the same leash
+      live = await startLiveView(
+        recorded,
+        foxglove,
+        { io, global },
+        {
+          deviceId: opened.deviceId,
+          leash: options.leash,
+          ...(perception === undefined ? {} : { perception }),
+        },
+      );
+      // the log lines the tools write also go to the MCP client, as logging notifications
+      const { hal, logs } = tapLog(live.hal);
+      // once for the run, as the tools are: what happens to the robot, for every server of it;
+      // watched on the robot itself, so that a recording does not hold every look
+      const events = new RobotEvents(robot, mcpEventSources(robot, guard, logs));
+      stopEvents = events.open();
       // once for the run: over HTTP each session has a server of its own, the skills one memory
       const offered = offeredTools(hal, {
         profile: options.profile,
@@ -178,6 +196,8 @@ export const registerMcp: RegisterCommand = (program, { io }) => {
     } finally {
       await close().catch(() => undefined);
       stopEvents();
+      // the live view closes before the robot is let go
+      await live?.close().catch(() => undefined);
       // the HAL's own cleanup, through the recorder when there is one (it stops the motors)
       if (recorder !== undefined) await recorded.cleanup().catch(() => undefined);
       await opened.close();
