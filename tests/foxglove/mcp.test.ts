@@ -1,6 +1,7 @@
 // `hal mcp --foxglove 0` as an MCP client starts it: the client drives the robot over stdio while
 // a Foxglove viewer (the `@foxglove/ws-protocol` client) watches it move, and the protocol's
 // stdout carries nothing of the live view.
+import type { Stream } from 'node:stream';
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StdioClientTransport } from '@modelcontextprotocol/sdk/client/stdio.js';
 import { describe, expect, it } from 'vitest';
@@ -8,7 +9,7 @@ import { callTool, serverCommand } from '../mcp/client.js';
 import { connectViewer } from './viewer.js';
 
 /** Resolves with the first line of `stream` that `pattern` matches (at most 30 s). */
-function lineOf(stream: NodeJS.ReadableStream, pattern: RegExp): Promise<RegExpMatchArray> {
+function lineOf(stream: Stream, pattern: RegExp): Promise<RegExpMatchArray> {
   return new Promise((resolve, reject) => {
     let text = '';
     const timer = setTimeout(

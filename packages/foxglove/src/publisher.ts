@@ -4,10 +4,9 @@
 // rate; log lines and safety events as they happen. A read still on its way when the next tick
 // comes skips that tick, so a slow robot makes fewer messages, never a backlog.
 import type { FoxgloveServer } from '@foxglove/ws-protocol';
-import type { SafetyEvent } from '@hal/recorder';
+import { linkTelemetry } from '@hal/recorder';
+import type { LinkTelemetry, NamedJsonSchema, RobotNamespace, SafetyEvent } from '@hal/recorder';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
-import { telemetryOf } from './telemetry.js';
-import type { NamedJsonSchema, RobotNamespace } from '@hal/recorder';
 import { LIVE_SCHEMAS, foxgloveTimeOfMs, quaternionOf } from './topics.js';
 import type { LiveTopic } from './topics.js';
 
@@ -31,7 +30,7 @@ export class LivePublisher {
   readonly #extra = new Map<string, number>();
   readonly #subscribed = new Set<number>();
   readonly #timers: Array<ReturnType<typeof setInterval>> = [];
-  readonly #telemetry: ReturnType<typeof telemetryOf>;
+  readonly #telemetry: LinkTelemetry;
   #posing = false;
   #capturing = false;
   #latched: boolean | undefined;
@@ -46,7 +45,7 @@ export class LivePublisher {
     this.#hal = hal;
     this.#space = names.space;
     this.#rates = rates;
-    this.#telemetry = telemetryOf(hal);
+    this.#telemetry = linkTelemetry(hal);
     const offered: LiveTopic[] = ['pose', 'tf', 'halPose', 'log', 'safety'];
     if (rates.cameraRateHz > 0) offered.push('camera');
     if (this.#telemetry.steps !== undefined) offered.push('steps');

@@ -34,6 +34,8 @@ export type {
   SafetyEvent,
   WheelSteps,
 } from './messages.js';
+export { linkTelemetry } from './link-telemetry.js';
+export type { LinkTelemetry } from './link-telemetry.js';
 export { robotNamespace } from './namespace.js';
 export type { RobotNamespace, RobotTopics } from './namespace.js';
 export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
