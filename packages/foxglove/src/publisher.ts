@@ -4,10 +4,10 @@
 // rate; log lines and safety events as they happen. A read still on its way when the next tick
 // comes skips that tick, so a slow robot makes fewer messages, never a backlog.
 import type { FoxgloveServer } from '@foxglove/ws-protocol';
-import { linkTelemetry } from '@hal/recorder';
+import { linkTelemetry, quaternionFromEuler } from '@hal/recorder';
 import type { LinkTelemetry, NamedJsonSchema, RobotNamespace, SafetyEvent } from '@hal/recorder';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
-import { LIVE_SCHEMAS, foxgloveTimeOfMs, quaternionOf } from './topics.js';
+import { LIVE_SCHEMAS, foxgloveTimeOfMs } from './topics.js';
 import type { LiveTopic } from './topics.js';
 
 const LOG_LEVEL: Readonly<Record<string, number>> = { debug: 1, info: 2, warn: 3, error: 4 };
@@ -215,7 +215,7 @@ export class LivePublisher {
   #pose(pose: Pose): void {
     const { x, y, z } = pose.position;
     const { yaw, pitch, roll } = pose.rotation;
-    const orientation = quaternionOf(yaw, pitch, roll);
+    const orientation = quaternionFromEuler(yaw, pitch, roll);
     this.#send('pose', (at) => ({
       timestamp: foxgloveTimeOfMs(at),
       frame_id: 'world',

@@ -71,20 +71,3 @@ export function foxgloveTimeOfMs(ms: number): { sec: number; nsec: number } {
   const sec = Math.floor(ms / 1000);
   return { sec, nsec: Math.min(999_999_999, Math.round((ms - sec * 1000) * 1e6)) };
 }
-
-/** The quaternion of a REP-103 yaw, pitch and roll (radians, ZYX). */
-export function quaternionOf(
-  yaw: number,
-  pitch: number,
-  roll: number,
-): { x: number; y: number; z: number; w: number } {
-  const [cy, sy] = [Math.cos(yaw / 2), Math.sin(yaw / 2)];
-  const [cp, sp] = [Math.cos(pitch / 2), Math.sin(pitch / 2)];
-  const [cr, sr] = [Math.cos(roll / 2), Math.sin(roll / 2)];
-  return {
-    x: sr * cp * cy - cr * sp * sy,
-    y: cr * sp * cy + sr * cp * sy,
-    z: cr * cp * sy - sr * sp * cy,
-    w: cr * cp * cy + sr * sp * sy,
-  };
-}

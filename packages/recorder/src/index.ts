@@ -38,7 +38,13 @@ export { linkTelemetry } from './link-telemetry.js';
 export type { LinkTelemetry } from './link-telemetry.js';
 export { robotNamespace } from './namespace.js';
 export type { RobotNamespace, RobotTopics } from './namespace.js';
-export { COMPRESSED_IMAGE, FRAME_TRANSFORM, LOG, POSE_IN_FRAME } from './foxglove-schemas.js';
+export {
+  COMPRESSED_IMAGE,
+  FRAME_TRANSFORM,
+  LOG,
+  POSE_IN_FRAME,
+  quaternionFromEuler,
+} from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
 export { GRID, SCENE_UPDATE } from './foxglove-scene-schemas.js';
 export { MAX_PENDING_LOOKS, PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
