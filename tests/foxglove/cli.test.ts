@@ -2,7 +2,9 @@
 // `@foxglove/ws-protocol` client) that sees the robot's pose and e-stops it, and the options'
 // refusals before any robot is touched.
 import { afterAll, describe, expect, it } from 'vitest';
-import { runHalProcess, startHalProcess, stopAllHal } from '../helpers/hal-process.js';
+import { runHal } from '@hal/cli';
+import { captureIO } from '../cli/capture-io.js';
+import { startHalProcess, stopAllHal } from '../helpers/hal-process.js';
 import { connectViewer } from './viewer.js';
 
 interface ServeEvent {
@@ -66,31 +68,23 @@ describe('hal serve --foxglove', () => {
   });
 
   it('refuses a non-loopback live view without a token, --foxglove-* without --foxglove, --host without --ws-port', async () => {
-    const open = await runHalProcess([
-      'serve',
-      '--sim',
-      '--foxglove',
-      '0',
-      '--foxglove-host',
-      '0.0.0.0',
-    ]);
-    expect(open.code).not.toBe(0);
+    // usage errors, before any robot is opened: the command as the launcher runs it, in-process
+    const refusal = async (args: string[]) => {
+      const io = captureIO();
+      return { code: await runHal(args, io), stderr: io.stderr() };
+    };
+    const open = await refusal(['serve', '--sim', '--foxglove', '0', '--foxglove-host', '0.0.0.0']);
+    expect(open.code).toBe(2);
     expect(open.stderr).toMatch(/needs a token.*--foxglove-token/);
-    const stray = await runHalProcess([
-      'serve',
-      '--sim',
-      '--ws-port',
-      '0',
-      '--foxglove-token',
-      'x',
-    ]);
-    expect(stray.code).not.toBe(0);
+    const stray = await refusal(['serve', '--sim', '--ws-port', '0', '--foxglove-token', 'x']);
+    expect(stray.code).toBe(2);
     expect(stray.stderr).toMatch(/"--foxglove-token" needs --foxglove/);
     // beside --foxglove alone, the WebSocket options still want --ws-port
-    const host = await runHalProcess(['serve', '--sim', '--foxglove', '0', '--host', '127.0.0.1']);
-    expect(host.code).not.toBe(0);
+    const host = await refusal(['serve', '--sim', '--foxglove', '0', '--host', '127.0.0.1']);
+    expect(host.code).toBe(2);
     expect(host.stderr).toMatch(/"--host" needs --ws-port/);
-    const nowhere = await runHalProcess(['serve', '--sim']);
+    const nowhere = await refusal(['serve', '--sim']);
+    expect(nowhere.code).toBe(2);
     expect(nowhere.stderr).toMatch(/--foxglove \[port\] for a live view/);
   });
 });

@@ -2,35 +2,16 @@
 // loopback programs and trusted pages), plus the desktop viewers. Foxglove and Lichtblick on the
 // desktop are Electron apps whose pages load from `file://`, and send that as their Origin; no web
 // page can send it (a browser sends `null` for a file or sandboxed page, which stays refused).
-import { createHash, timingSafeEqual } from 'node:crypto';
 import type { IncomingMessage } from 'node:http';
+import { presentedToken, tokenMatches } from '@hal/remote/server';
+import type { DoorRefusal } from '@hal/remote/server';
 import { browserRefusal } from '@hal/types';
 
 /** The Origin the desktop apps send. */
 export const DESKTOP_ORIGIN = 'file://';
 
 /** Why an upgrade is refused: its HTTP status and a sentence for the viewer. */
-export interface FoxgloveDoorRefusal {
-  status: 401 | 403;
-  reason: string;
-}
-
-/** The token a viewer presented: `?token=` in its URL, else `Authorization: Bearer ...`. */
-function presentedToken(request: IncomingMessage): string | undefined {
-  const url = new URL(request.url ?? '/', 'http://localhost');
-  const query = url.searchParams.get('token');
-  if (query !== null) return query;
-  const match = /^Bearer\s+(\S+)$/i.exec(request.headers.authorization ?? '');
-  return match?.[1];
-}
-
-/** Constant-time comparison (digests of equal length, whatever the inputs' lengths). */
-function tokenMatches(expected: string, presented: string | undefined): boolean {
-  if (presented === undefined) return false;
-  const a = createHash('sha256').update(expected).digest();
-  const b = createHash('sha256').update(presented).digest();
-  return timingSafeEqual(a, b);
-}
+export type FoxgloveDoorRefusal = DoorRefusal;
 
 /** Undefined when `request` may connect, else why not. */
 export function foxgloveDoorRefusal(

@@ -6,7 +6,7 @@ import type { IncomingMessage } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { FoxgloveServer, ServerCapability } from './ws-protocol.js';
 import type { ServiceCallRequest } from '@foxglove/ws-protocol';
-import { checkBinding } from '@hal/remote/server';
+import { checkBinding, refuseUpgrade } from '@hal/remote/server';
 import { createToolExecutor, robotConfigOf, toolBackedHal } from '@hal/tools';
 import { HalError, scoped, silentLogger, trustedOrigin } from '@hal/types';
 import type { HardwareAbstractionLayer, LogLevel } from '@hal/types';
@@ -150,13 +150,7 @@ export async function serveFoxglove(
         from: request.socket.remoteAddress,
         origin: request.headers.origin,
       });
-      const body = `${refused.reason}\n`;
-      socket.end(
-        `HTTP/1.1 ${refused.status} ${refused.status === 401 ? 'Unauthorized' : 'Forbidden'}\r\n` +
-          'Content-Type: text/plain; charset=utf-8\r\n' +
-          `Content-Length: ${Buffer.byteLength(body)}\r\n` +
-          `Connection: close\r\n\r\n${body}`,
-      );
+      refuseUpgrade(socket, refused);
       return;
     }
     wss.handleUpgrade(request, socket, head, (ws) => wss.emit('connection', ws, request));

@@ -1,5 +1,6 @@
 import { createHash, timingSafeEqual } from 'node:crypto';
 import type { IncomingMessage } from 'node:http';
+import type { Duplex } from 'node:stream';
 import { HalError, browserRefusal, isLoopback, trustedOrigin } from '@hal/types';
 
 /** Refuses to serve beyond this machine without a token. */
@@ -41,6 +42,17 @@ export function tokenMatches(expected: string, presented: string | undefined): b
 export interface DoorRefusal {
   status: 401 | 403;
   reason: string;
+}
+
+/** Answers a refused WebSocket upgrade with its HTTP status and reason, and closes the socket. */
+export function refuseUpgrade(socket: Duplex, refused: DoorRefusal): void {
+  const body = `${refused.reason}\n`;
+  socket.end(
+    `HTTP/1.1 ${refused.status} ${refused.status === 401 ? 'Unauthorized' : 'Forbidden'}\r\n` +
+      'Content-Type: text/plain; charset=utf-8\r\n' +
+      `Content-Length: ${Buffer.byteLength(body)}\r\n` +
+      `Connection: close\r\n\r\n${body}`,
+  );
 }
 
 /**

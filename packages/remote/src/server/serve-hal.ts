@@ -25,7 +25,7 @@ import {
   readRequestId,
 } from '../protocol.js';
 import type { MessageSchema, Role } from '../protocol.js';
-import { checkBinding, doorRefusal } from './auth.js';
+import { checkBinding, doorRefusal, refuseUpgrade } from './auth.js';
 import type { ClientSession } from './client-session.js';
 import { SERVE_DEFAULTS } from './options.js';
 import type { HalServer, ServeHalOptions } from './options.js';
@@ -213,13 +213,7 @@ export async function serveHal(
       log('warn', `refused a connection (HTTP ${refused.status}): ${refused.reason}`, {
         from: request.socket.remoteAddress,
       });
-      const body = `${refused.reason}\n`;
-      socket.end(
-        `HTTP/1.1 ${refused.status} ${refused.status === 401 ? 'Unauthorized' : 'Forbidden'}\r\n` +
-          'Content-Type: text/plain; charset=utf-8\r\n' +
-          `Content-Length: ${Buffer.byteLength(body)}\r\n` +
-          `Connection: close\r\n\r\n${body}`,
-      );
+      refuseUpgrade(socket, refused);
       return;
     }
     wss.handleUpgrade(request, socket, head, (ws) => wss.emit('connection', ws, request));
