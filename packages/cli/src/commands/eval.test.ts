@@ -85,8 +85,8 @@ describe('hal eval', () => {
     );
     expect(code, io.stderr()).toBe(0);
     expect(io.stdout()).toMatch(/^agent\s+robustness\s+overall/);
-    expect(io.stdout()).toMatch(/\noracle\s+100% 7\/7\s+100%/);
-    expect(io.stderr()).toMatch(/\[#+\] 7\/7 oracle robustness\/leash-other-room seed 1: pass/);
+    expect(io.stdout()).toMatch(/\noracle\s+100% 8\/8\s+100%/);
+    expect(io.stderr()).toMatch(/\[#+\] 8\/8 oracle robustness\/lossy-link seed 1: pass/);
   });
 
   it('exits 1 when an agent scores below --min-success, naming it', async () => {
