@@ -91,6 +91,19 @@ function udpRobot(
   };
 }
 
+/** The firmware's host timeout: its default and its largest, ms. */
+const HOST_TIMEOUT = { default: 2000, max: 10_000 } as const;
+
+/**
+ * The host timeout of the emulator `hal eval` starts, its own ms: the firmware's 2 s of real time
+ * as far as its limit of 10 s allows. The timeout guards a real-time link; a clock sped up N times
+ * would leave the host 2/N s (200 ms at 10x) to be heard, which a loaded machine misses, and the
+ * emulator then stops a motion that a robot at 1x would finish.
+ */
+export function emulatorHostTimeoutMs(timeScale: number): number {
+  return Math.min(HOST_TIMEOUT.max, Math.max(HOST_TIMEOUT.default, Math.round(2000 * timeScale)));
+}
+
 /** The wheel positions in the emulator's `move_finished` event. */
 const MoveFinishedPositionsSchema = z.object({
   event: z.literal('move_finished'),
@@ -152,6 +165,7 @@ export async function openPlaces(
         const args = ['--udp-port', '0', '--bind', '127.0.0.1', '--device-id', 'cube-emulator'];
         args.push('--no-pty', '--time-scale', String(timeScale));
         args.push('--report-wheels-ms', String(WHEEL_REPORT_MS));
+        args.push('--host-timeout-ms', String(emulatorHostTimeoutMs(timeScale)));
         const wheels = wheelsTold();
         emulator = await startEmulatorProcess(path, args, wheels.told);
         robots.push(stagedEmulator(emulator.ready.udp_port, timeScale, wheels.wheels));
