@@ -96,7 +96,10 @@ describe('apps/sim-demo Remote robot card in Chromium', () => {
     await page.locator('#remote-connect').click();
     await connection('connected');
     expect((await remoteState())?.role).toBe('controller');
-    await expect(page.locator('#remote-badge').textContent()).resolves.toBe('CONNECTED');
+    // the card draws its badge once it has read the robot's pose, after its state changed
+    await expect
+      .poll(() => page.locator('#remote-badge').textContent(), { timeout: 5000 })
+      .toBe('CONNECTED');
 
     await page.locator('[data-remote="forward"]').click();
     await page.waitForFunction(
