@@ -55,6 +55,23 @@ export function refuseUpgrade(socket: Duplex, refused: DoorRefusal): void {
   );
 }
 
+/** What a door says in its refusals, and which origins it takes for programs. */
+export interface DoorWords {
+  /** The 401 to a client that presented no token: how to present one. */
+  tokenRequired: string;
+  /** The remedy for a page of a refused origin (as browsers write it). */
+  trustOrigin: (origin: string) => string;
+  /** Origins no web page can send, that programs do (a desktop app's): let in as no page. */
+  programOrigins?: ReadonlySet<string>;
+}
+
+/** `hal serve`'s WebSocket door. */
+const SERVE_DOOR: DoorWords = {
+  tokenRequired: 'a token is required (Authorization: Bearer TOKEN, or ?token=TOKEN)',
+  trustOrigin: (origin) =>
+    `trust it with hal serve --allow-origin ${origin} (serveHal's allowedOrigins)`,
+};
+
 /**
  * Who may open the door. With a token, whoever presents it (401 otherwise), from any page or
  * program. Without one (so on loopback), programs, and web pages served from this machine or
@@ -65,23 +82,26 @@ export function doorRefusal(
   request: IncomingMessage,
   token: string | undefined,
   allowedOrigins: ReadonlySet<string>,
+  words: DoorWords = SERVE_DOOR,
 ): DoorRefusal | undefined {
   if (token !== undefined) {
     const presented = presentedToken(request);
     if (tokenMatches(token, presented)) return undefined;
     return {
       status: 401,
-      reason:
-        presented === undefined
-          ? 'a token is required (Authorization: Bearer TOKEN, or ?token=TOKEN)'
-          : 'the token is wrong',
+      reason: presented === undefined ? words.tokenRequired : 'the token is wrong',
     };
   }
-  const refused = browserRefusal(request.headers, allowedOrigins);
+  const { host, origin } = request.headers;
+  const fromProgram = origin !== undefined && words.programOrigins?.has(origin) === true;
+  const refused = browserRefusal(
+    { host, origin: fromProgram ? undefined : origin },
+    allowedOrigins,
+  );
   if (refused === undefined) return undefined;
   const remedy =
     refused.header === 'origin'
-      ? `trust it with hal serve --allow-origin ${originOf(refused.value)} (serveHal's allowedOrigins), or serve with a token`
+      ? `${words.trustOrigin(originOf(refused.value))}, or serve with a token`
       : 'connect to 127.0.0.1 or localhost, or serve with a token';
   return { status: 403, reason: `${refused.reason}: ${remedy}` };
 }
