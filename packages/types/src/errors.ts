@@ -88,14 +88,18 @@ export function isHalError(value: unknown): value is HalError {
   return typeof code === 'string' && (HAL_ERROR_CODES as readonly string[]).includes(code);
 }
 
+/** The message of anything thrown: an Error's message, else its string form. */
+export function errorMessage(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
+
 /**
  * Turns anything thrown into a HalError: a HalError passes through, anything else becomes a
  * HARDWARE_ERROR that keeps the original as its cause.
  */
 export function toHalError(value: unknown): HalError {
   if (isHalError(value)) return value;
-  const message = value instanceof Error ? value.message : String(value);
-  return new HalError('HARDWARE_ERROR', message, { cause: value });
+  return new HalError('HARDWARE_ERROR', errorMessage(value), { cause: value });
 }
 
 /**

@@ -3,6 +3,7 @@ export {
   HalError,
   HalErrorCodeSchema,
   deviceOfflineError,
+  errorMessage,
   isHalError,
   toHalError,
 } from './errors.js';
@@ -168,7 +169,16 @@ export { TypedEmitter } from './vocabulary/typed-emitter.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
 export { nextTurn } from './vocabulary/next-turn.js';
-export { withTimeout } from './vocabulary/with-timeout.js';
+export {
+  backoffMs,
+  deadline,
+  delay,
+  raceTimer,
+  realTimers,
+  timeoutError,
+  withTimeout,
+} from './vocabulary/time.js';
+export type { RetryPolicy, Timers } from './vocabulary/time.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
 
 // The server side shared by every server of a HAL (WebSocket, NATS).
