@@ -1,28 +1,12 @@
+import { TOOL_CATALOG } from '@hal/tools';
 import { parseJsonText, readTextFile, refuse } from './task-file-io.js';
 import { answerProblem } from './task-answers.js';
 import { placementProblem } from './task-bounds.js';
 import { ANY_MOTION, TaskFileSchema } from './task-schema.js';
 import type { Task } from './task-schema.js';
 
-const TOOL_NAMES = new Set([
-  'move_forward',
-  'move_backward',
-  'rotate',
-  'move_to',
-  'drive',
-  'stop',
-  'emergency_stop',
-  'reset_emergency_stop',
-  'get_pose',
-  'capture_frame',
-  'get_distance_sensors',
-  'scan',
-  'get_imu',
-  'get_safety_status',
-  'is_emergency_stopped',
-  'set_led',
-  'log',
-]);
+// every tool of the call table; a call added there is a tool a fault may name
+const TOOL_NAMES: ReadonlySet<string> = new Set(TOOL_CATALOG.map((tool) => tool.name));
 
 /** Refuses a task whose checks or faults name something its world or leash lacks. */
 function checkReferences(file: string, task: Task, at: string): void {
@@ -55,7 +39,11 @@ function checkReferences(file: string, task: Task, at: string): void {
   });
   task.faults.forEach((fault, i) => {
     if (fault.kind !== 'estop' && fault.tool !== ANY_MOTION && !TOOL_NAMES.has(fault.tool))
-      refuse(file, `${at}.faults.${i}.tool`, `names "${fault.tool}", which is no tool`);
+      refuse(
+        file,
+        `${at}.faults.${i}.tool`,
+        `names "${fault.tool}", which is no tool (tools: ${[...TOOL_NAMES].join(', ')}, or "${ANY_MOTION}")`,
+      );
   });
   const misplaced = placementProblem(task);
   if (misplaced !== undefined) refuse(file, `${at}.${misplaced.field}`, misplaced.why);
