@@ -185,7 +185,7 @@ describe('OpenAICompatibleProvider', () => {
     expect(await provider(s.baseUrl).decide(context(), signal())).toEqual(valid);
     expect(s.requests).toHaveLength(2);
     const [first, second] = s.requests;
-    // the provider's own pause after a first failure is 250 ms: 700 comes from the header
+    // the provider's own pause after a first failure is at most 250 ms: 700 comes from the header
     expect((second?.at ?? 0) - (first?.at ?? 0)).toBeGreaterThanOrEqual(650);
   });
 

@@ -1,7 +1,8 @@
+import { backoffMs, delay } from '@hal/types';
+import type { RetryPolicy } from '@hal/types';
 import { AgentError, errorWithCauses } from './errors.js';
 import type { RetryListener } from './chat-provider.js';
-import { backoffMs, pause, retryableStatus, retryAfterMs } from './retry.js';
-import type { RetryPolicy } from './retry.js';
+import { retryableStatus, retryAfterMs } from './retry.js';
 
 /**
  * One OpenAI-compatible chat-completions endpoint: where it is, the key, and how requests to it
@@ -66,7 +67,7 @@ export async function postChatCompletion<T>(
       reason: outcome.error.message,
       ...(typeof status === 'number' ? { status } : {}),
     });
-    await pause(delayMs, signal);
+    await delay(delayMs, signal);
   }
 }
 

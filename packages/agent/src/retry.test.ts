@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { backoffMs, DEFAULT_RETRY, retryableStatus, retryAfterMs } from './retry.js';
+import { retryableStatus, retryAfterMs } from './retry.js';
 
 describe('retryAfterMs', () => {
   it('reads retry-after-ms first, then Retry-After in seconds or as an HTTP date', () => {
@@ -15,16 +15,6 @@ describe('retryAfterMs', () => {
     expect(retryAfterMs(new Headers())).toBeUndefined();
     expect(retryAfterMs(new Headers({ 'retry-after': '-1' }))).toBeUndefined();
     expect(retryAfterMs(new Headers({ 'retry-after': 'soon' }))).toBeUndefined();
-  });
-});
-
-describe('backoffMs', () => {
-  it('doubles per attempt, between half and all of it, and never passes maxDelayMs', () => {
-    const policy = { ...DEFAULT_RETRY, baseDelayMs: 100, maxDelayMs: 1000 };
-    expect(backoffMs(policy, 1, () => 0)).toBe(50);
-    expect(backoffMs(policy, 1, () => 1)).toBe(100);
-    expect(backoffMs(policy, 3, () => 1)).toBe(400);
-    expect(backoffMs(policy, 10, () => 1)).toBe(1000);
   });
 });
 

@@ -1,16 +1,13 @@
-/** How the loop retries a request that failed with HTTP 408, 429, 5xx, a network error or a timeout. */
-export interface RetryPolicy {
-  /** Attempts after the first, per model request. Default 3. */
-  maxRetries: number;
-  /** The first wait, ms; it doubles per attempt (with jitter). Default 500. */
-  baseDelayMs: number;
-  /**
-   * The longest wait, ms. A server that asks (Retry-After) for a longer wait ends the run with
-   * the error instead of keeping it waiting past this. Default 30000.
-   */
-  maxDelayMs: number;
-}
+import type { RetryPolicy } from '@hal/types';
 
+/**
+ * How the loop retries a request that failed with HTTP 408, 429, 5xx, a network error or a
+ * timeout: the one retry policy of `@hal/types` (exponential backoff with jitter, a cap on the
+ * wait a server may ask for), re-exported here for the agent's users.
+ */
+export type { RetryPolicy };
+
+/** Three retries, the first after 250-500 ms, doubling; a server may ask for up to 30 s. */
 export const DEFAULT_RETRY: RetryPolicy = Object.freeze({
   maxRetries: 3,
   baseDelayMs: 500,
@@ -35,31 +32,4 @@ export function retryAfterMs(headers: Headers, now: number = Date.now()): number
   if (Number.isFinite(seconds)) return seconds >= 0 ? seconds * 1000 : undefined;
   const date = Date.parse(value);
   return Number.isFinite(date) ? Math.max(0, date - now) : undefined;
-}
-
-/** The backoff before attempt `attempt + 1`: base x 2^(attempt-1), between half and all of it. */
-export function backoffMs(
-  policy: RetryPolicy,
-  attempt: number,
-  random: () => number = Math.random,
-): number {
-  const full = Math.min(policy.maxDelayMs, policy.baseDelayMs * 2 ** (attempt - 1));
-  return Math.round(full * (0.5 + 0.5 * random()));
-}
-
-/** Waits `ms`, or less when `signal` aborts (it resolves either way). */
-export function pause(ms: number, signal: AbortSignal): Promise<void> {
-  return new Promise((resolve) => {
-    if (signal.aborted) {
-      resolve();
-      return;
-    }
-    const done = () => {
-      clearTimeout(timer);
-      signal.removeEventListener('abort', done);
-      resolve();
-    };
-    const timer = setTimeout(done, ms);
-    signal.addEventListener('abort', done, { once: true });
-  });
 }

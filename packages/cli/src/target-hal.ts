@@ -5,7 +5,7 @@ import { calibratedGeometry, calibrationSource, PhysicalHAL } from '@hal/physica
 import type { CalibrationSource } from '@hal/physical';
 import { RemoteHAL } from '@hal/remote';
 import { SimulationHAL, World } from '@hal/simulation';
-import { HalError, isHalError } from '@hal/types';
+import { deadline, HalError, isHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { CliIO } from './io.js';
 import { cliLogger } from './logger.js';
@@ -46,20 +46,9 @@ const CLOSE_TIMEOUT_MS = 5000;
 /** How often to try again for control of a WebSocket HAL. */
 const CONTROL_RETRY_MS = 200;
 
-/** Resolves `promise`, or settles with `onTimeout()`'s error after `ms`. */
-function within<T>(promise: Promise<T>, ms: number, onTimeout: () => Error): Promise<T> {
-  let timer: NodeJS.Timeout | undefined;
-  const timeout = new Promise<never>((_, reject) => {
-    timer = setTimeout(() => reject(onTimeout()), ms);
-  });
-  return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
-}
-
 /** Runs `close`, bounded, swallowing its failure (the command's own outcome is what matters). */
 async function bounded(close: () => Promise<void>): Promise<void> {
-  await within(close(), CLOSE_TIMEOUT_MS, () => new Error('close timed out')).catch(
-    () => undefined,
-  );
+  await deadline(close(), CLOSE_TIMEOUT_MS, 'closing the HAL').catch(() => undefined);
 }
 
 /** Builds the HAL for `target` (not yet initialised) and its release. */
@@ -208,13 +197,13 @@ async function openOnce(target: Target, io: CliIO, options: OpenTargetOptions): 
   const timeoutMs = options.connectTimeoutMs ?? DEFAULT_CONNECT_TIMEOUT_MS;
   const name = describeTarget(target);
   const physical = target.kind === 'udp' || target.kind === 'serial';
-  const { hal, release } = await within(build(target, io, options), timeoutMs, () =>
+  const { hal, release } = await deadline(build(target, io, options), timeoutMs, () =>
     unanswered(target, timeoutMs),
   );
   try {
     // PhysicalHAL bounds its own hello by the timeout and says why it failed (silence, a wrong
     // key); the margin lets that verdict arrive before this one
-    await within(hal.initialize(), timeoutMs + (physical ? PHYSICAL_VERDICT_MS : 0), () =>
+    await deadline(hal.initialize(), timeoutMs + (physical ? PHYSICAL_VERDICT_MS : 0), () =>
       unanswered(target, timeoutMs),
     );
   } catch (error) {

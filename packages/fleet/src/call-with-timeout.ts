@@ -1,4 +1,4 @@
-import { HalError, failureResult } from '@hal/types';
+import { failureResult, HalError, raceTimer } from '@hal/types';
 import type { HALMode, HALToolResult } from '@hal/types';
 import type { FleetScheduler } from './scheduler.js';
 
@@ -14,34 +14,26 @@ export function callWithTimeout(
 ): Promise<HALToolResult> {
   const { mode, device, timeoutMs, scheduler } = options;
   const startedAt = scheduler.now();
-  return new Promise<HALToolResult>((resolve) => {
-    let settled = false;
-    const settle = (result: HALToolResult): void => {
-      if (settled) return;
-      settled = true;
-      scheduler.clearTimeout(timer);
-      resolve(result);
-    };
-    const timer = scheduler.setTimeout(() => {
-      const error = new HalError(
-        'TIMEOUT',
-        `device "${device}" did not answer within ${timeoutMs} ms`,
-        {
+  const failed = (thrown: unknown): HALToolResult =>
+    failureResult(mode, Date.now(), thrown, scheduler.now() - startedAt);
+  // the timer is set before the call starts, as the call may set timers on the same scheduler
+  let begin: (work: Promise<HALToolResult>) => void = () => undefined;
+  const work = new Promise<HALToolResult>((resolve) => (begin = resolve));
+  const answer = raceTimer(
+    work,
+    timeoutMs,
+    () =>
+      failed(
+        new HalError('TIMEOUT', `device "${device}" did not answer within ${timeoutMs} ms`, {
           details: { device, timeoutMs },
-        },
-      );
-      settle(failureResult(mode, Date.now(), error, scheduler.now() - startedAt));
-    }, timeoutMs);
-    let pending: Promise<HALToolResult>;
-    try {
-      pending = start();
-    } catch (thrown) {
-      pending = Promise.reject(thrown);
-    }
-    pending.then(
-      (result) => settle(result),
-      (thrown: unknown) =>
-        settle(failureResult(mode, Date.now(), thrown, scheduler.now() - startedAt)),
-    );
-  });
+        }),
+      ),
+    scheduler,
+  );
+  try {
+    begin(start().catch(failed));
+  } catch (thrown) {
+    begin(Promise.resolve(failed(thrown)));
+  }
+  return answer;
 }

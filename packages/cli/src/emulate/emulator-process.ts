@@ -3,6 +3,7 @@
 // started with --exit-on-stdin-eof, so it also ends when `hal` itself dies.
 import { spawn } from 'node:child_process';
 import { createInterface } from 'node:readline';
+import { deadline } from '@hal/types';
 import { z } from 'zod';
 import { CliError } from '../cli-error.js';
 
@@ -77,31 +78,21 @@ export async function startEmulatorProcess(
       clearTimeout(timer);
     }
   };
-  let timer: NodeJS.Timeout | undefined;
+  const exitedFirst = exited.then((how): never => {
+    throw new CliError(
+      'FAILED',
+      `cube-emulator exited (${how.code ?? how.signal}) before it was ready: ${how.stderr.trim()}`,
+    );
+  });
   try {
-    const ready = await Promise.race([
-      readyLine,
-      exited.then((how) => {
-        throw new CliError(
-          'FAILED',
-          `cube-emulator exited (${how.code ?? how.signal}) before it was ready: ${how.stderr.trim()}`,
-        );
-      }),
-      new Promise<never>((_, reject) => {
-        timer = setTimeout(
-          () =>
-            reject(
-              new CliError('FAILED', `cube-emulator was not ready within ${readyTimeoutMs} ms`),
-            ),
-          readyTimeoutMs,
-        );
-      }),
-    ]);
+    const ready = await deadline(
+      Promise.race([readyLine, exitedFirst]),
+      readyTimeoutMs,
+      () => new CliError('FAILED', `cube-emulator was not ready within ${readyTimeoutMs} ms`),
+    );
     return { ready, exited, stop };
   } catch (error) {
     await stop(500);
     throw error;
-  } finally {
-    clearTimeout(timer);
   }
 }

@@ -1,6 +1,14 @@
 import { openConnection } from '@hal/nats';
 import type { NatsConnectionSource } from '@hal/nats';
-import { HalError, forwardCalls, scoped, silentLogger, toHalError, TypedEmitter } from '@hal/types';
+import {
+  deadline,
+  forwardCalls,
+  HalError,
+  scoped,
+  silentLogger,
+  toHalError,
+  TypedEmitter,
+} from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import { Fleet } from '../fleet.js';
 import type { FleetOptions } from '../fleet.js';
@@ -10,7 +18,9 @@ import { parseDeviceConfig, parseFleetConfig } from './device-config.js';
 import type { DeviceConfig, FleetConfig, FleetConfigInput } from './device-config.js';
 import type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
 import { OfflineGuardHAL } from './offline-guard.js';
-import { boundedWait } from './bounded-wait.js';
+
+/** How long releasing a device's HAL may take before the manager moves on, ms. */
+const CLEANUP_TIMEOUT_MS = 5000;
 
 export interface DeviceManagerOptions {
   /** Builders of the simulated and physical devices (NATS devices need none). */
@@ -120,7 +130,9 @@ export class DeviceManager {
     if (managed === undefined) return false;
     this.#devices.delete(id);
     this.fleet.remove(id);
-    await boundedWait(managed.raw.cleanup(), 5000).catch(() => undefined);
+    await deadline(managed.raw.cleanup(), CLEANUP_TIMEOUT_MS, `cleanup of "${id}"`).catch(
+      () => undefined,
+    );
     return true;
   }
 
@@ -197,9 +209,11 @@ export class DeviceManager {
     await this.fleet.formation?.stop();
     await Promise.all(
       [...this.#devices.values()].map((m) =>
-        boundedWait(m.raw.cleanup(), 5000).catch((e: unknown) => {
-          this.#log.warn('cleanup failed', { device: m.config.id, error: toHalError(e).message });
-        }),
+        deadline(m.raw.cleanup(), CLEANUP_TIMEOUT_MS, `cleanup of "${m.config.id}"`).catch(
+          (e: unknown) => {
+            this.#log.warn('cleanup failed', { device: m.config.id, error: toHalError(e).message });
+          },
+        ),
       ),
     );
     this.#options.devices?.released?.();
@@ -268,10 +282,14 @@ export class DeviceManager {
         m.initializing ??= m.raw.initialize().finally(() => {
           m.initializing = undefined;
         });
-        await boundedWait(m.initializing, waitMs);
+        await deadline(m.initializing, waitMs, `initialize of "${m.config.id}"`);
         m.initialized = true;
       }
-      const pose = await boundedWait(m.device.locomotion.getPose(), waitMs);
+      const pose = await deadline(
+        m.device.locomotion.getPose(),
+        waitMs,
+        `getPose of "${m.config.id}"`,
+      );
       if (!m.device.isReady()) throw new HalError('NOT_CONNECTED', 'the HAL is not ready');
       const safety = m.device.safety.getSafetyStatus();
       const telemetry: DeviceTelemetry = {

@@ -1,3 +1,4 @@
+import { withTimeout } from '@hal/types';
 import type { DecisionContext } from '../decision/provider.js';
 import { parseDecision } from '../decision/schema.js';
 import type { NavigationDecision } from '../decision/schema.js';
@@ -5,7 +6,6 @@ import { errorMessage, NavigationError } from '../errors.js';
 import type { BridgeContext } from './bridge-context.js';
 import { failed, stopRequested } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';
-import { TIMED_OUT, withTimeout } from './timeouts.js';
 
 /**
  * Asks the provider for a decision, bounded by `decisionTimeoutMs` (its signal aborts when the run
@@ -27,17 +27,17 @@ export async function askProvider(
       ? stopRequested()
       : failed('PROVIDER_ERROR', `${provider.name} gave no decision${why}`),
   });
-  let answer: NavigationDecision | typeof TIMED_OUT;
+  let answer: { value: NavigationDecision } | undefined;
   try {
     answer = await withTimeout(provider.decide(context, signal), decisionTimeoutMs);
   } catch (error) {
     return noDecision(`: ${errorMessage(error)}`);
   }
-  if (answer === TIMED_OUT) {
+  if (answer === undefined) {
     timeout.abort(new NavigationError('TIMEOUT', 'decision timed out'));
     return noDecision(` within ${decisionTimeoutMs} ms`);
   }
-  const parsed = parseDecision(answer);
+  const parsed = parseDecision(answer.value);
   if (!parsed.ok) {
     return {
       terminal: failed(

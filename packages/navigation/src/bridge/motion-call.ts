@@ -4,6 +4,7 @@ import {
   isHalError,
   maxLinearSpeedMPerS,
   motionCall,
+  withTimeout,
 } from '@hal/types';
 import type { CallMotion, HALToolResult } from '@hal/types';
 import type { ActionReport } from '../decision/provider.js';
@@ -12,7 +13,6 @@ import type { Acted, BridgeContext, RunState } from './bridge-context.js';
 import type { BridgeSettings } from './bridge-options.js';
 import { checkMotionResult } from './result-check.js';
 import { stopWheels } from './sensing.js';
-import { TIMED_OUT, withTimeout } from './timeouts.js';
 import { markGuardedObstacle } from './world-updates.js';
 
 const DEG = Math.PI / 180;
@@ -41,7 +41,7 @@ export async function runMotion(
     const named = motion === 'point' ? { ...args, z: 0, speed: ctx.settings.speed } : args;
     const invoked = invokeSpec(ctx.hal, spec, argsFromObject(spec, named));
     const answer = await withTimeout(invoked as Promise<HALToolResult>, timeoutMs);
-    if (answer === TIMED_OUT) {
+    if (answer === undefined) {
       await stopWheels(ctx);
       result = {
         success: false,
@@ -51,7 +51,7 @@ export async function runMotion(
         mode: ctx.hal.mode,
       };
     } else {
-      result = answer;
+      result = answer.value;
     }
   } catch (error) {
     // A HAL must not throw from a motion call; treat it as a hardware error if one does.

@@ -1,4 +1,4 @@
-import { scoped, silentLogger, TypedEmitter } from '@hal/types';
+import { scoped, silentLogger, TypedEmitter, withTimeout } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { distance } from '../grid/geometry.js';
 import type { Point } from '../grid/geometry.js';
@@ -13,7 +13,6 @@ import type { NavigationEvents } from './navigation-events.js';
 import { failed } from './navigation-outcome.js';
 import type { NavigationOutcome, Terminal } from './navigation-outcome.js';
 import { stopWheels } from './sensing.js';
-import { withTimeout } from './timeouts.js';
 
 /**
  * The navigation loop over any HAL: each cycle reads the pose and the range sensors (updating

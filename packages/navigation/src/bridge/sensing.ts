@@ -1,11 +1,10 @@
-import { isHalError } from '@hal/types';
+import { isHalError, withTimeout } from '@hal/types';
 import type { Pose2D } from '../grid/geometry.js';
 import type { RangeReadings } from '../grid/range-sensor-update.js';
 import { errorMessage } from '../errors.js';
 import type { BridgeContext } from './bridge-context.js';
 import { failed } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';
-import { TIMED_OUT, withTimeout } from './timeouts.js';
 import type { WorldObservation, WorldObserver } from './world-observer.js';
 
 // The bridge's reads of the robot, each bounded by the sensor timeout.
@@ -17,10 +16,11 @@ export async function readPose(
   const timeoutMs = ctx.settings.sensorTimeoutMs;
   try {
     const answer = await withTimeout(ctx.hal.locomotion.getPose(), timeoutMs);
-    if (answer === TIMED_OUT) {
+    if (answer === undefined) {
       return { terminal: failed('TIMEOUT', `getPose gave no answer within ${timeoutMs} ms`) };
     }
-    const pose = { x: answer.position.x, y: answer.position.y, yaw: answer.rotation.yaw };
+    const { position, rotation } = answer.value;
+    const pose = { x: position.x, y: position.y, yaw: rotation.yaw };
     if (![pose.x, pose.y, pose.yaw].every(Number.isFinite)) {
       return { terminal: failed('HAL_ERROR', 'getPose returned a non-finite pose') };
     }
@@ -46,16 +46,17 @@ export async function readRanges(
       ctx.hal.vision.getDistanceSensors(),
       ctx.settings.sensorTimeoutMs,
     );
-    if (answer === TIMED_OUT) {
+    if (answer === undefined) {
       ctx.logger.warn('navigation: range sensors gave no answer in time');
       return undefined;
     }
-    if (answer.source === 'unavailable') {
+    const readings = answer.value;
+    if (readings.source === 'unavailable') {
       ctx.sensorsAvailable = false;
       return undefined;
     }
-    ctx.grid.integrateRangeReadings(pose, answer, model);
-    return answer;
+    ctx.grid.integrateRangeReadings(pose, readings, model);
+    return readings;
   } catch (error) {
     if (isHalError(error) && error.code === 'NOT_IMPLEMENTED') {
       ctx.sensorsAvailable = false;
@@ -75,7 +76,7 @@ export async function readRanges(
 export async function captureFrame(ctx: BridgeContext): Promise<string | undefined> {
   try {
     const answer = await withTimeout(ctx.hal.vision.captureFrame(), ctx.settings.sensorTimeoutMs);
-    return answer === TIMED_OUT ? undefined : answer;
+    return answer?.value;
   } catch (error) {
     ctx.logger.warn('navigation: no camera frame', { error: errorMessage(error) });
     return undefined;
@@ -104,7 +105,7 @@ export async function observeWorld(
       Promise.resolve().then(() => observer(observation)),
       timeoutMs,
     );
-    if (done === TIMED_OUT) {
+    if (done === undefined) {
       ctx.logger.warn('navigation: the world observer did not finish in time', { timeoutMs });
     }
   } catch (error) {

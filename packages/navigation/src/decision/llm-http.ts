@@ -1,5 +1,6 @@
 import { AgentError, postChatCompletion, retryableStatus } from '@hal/agent';
 import type { ChatEndpoint } from '@hal/agent';
+import type { RetryPolicy } from '@hal/types';
 import { AttemptError } from './llm-attempt-error.js';
 import type { LlmSettings, ResponseFormatMode } from './llm-options.js';
 import { requestBody } from './llm-prompt.js';
@@ -8,6 +9,15 @@ import { replyContent } from './llm-reply.js';
 
 /** The longest wait a server may ask for (Retry-After) before the provider gives up on it, ms. */
 export const MAX_RETRY_AFTER_MS = 30_000;
+
+/**
+ * How the provider asks again: the one retry policy of `@hal/types` (the agent's too), with the
+ * provider's own attempts and a first wait of 125-250 ms. The provider runs the attempts itself,
+ * so a reply that breaks the schema counts among them; the endpoint makes one request per call.
+ */
+export function decisionRetry(maxAttempts: number): RetryPolicy {
+  return { maxRetries: maxAttempts - 1, baseDelayMs: 250, maxDelayMs: MAX_RETRY_AFTER_MS };
+}
 
 /**
  * One chat-completions endpoint, reached through `@hal/agent`'s OpenAI-compatible client with one
@@ -30,7 +40,7 @@ export class ChatCompletionsClient {
       url: settings.url,
       apiKey: settings.apiKey,
       requestTimeoutMs: settings.timeoutMs,
-      retry: { maxRetries: 0, baseDelayMs: 0, maxDelayMs: MAX_RETRY_AFTER_MS },
+      retry: { ...decisionRetry(settings.maxAttempts), maxRetries: 0 },
       fetch: settings.fetch,
     };
   }

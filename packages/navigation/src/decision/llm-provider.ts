@@ -1,7 +1,8 @@
-import { errorMessage, NavigationError } from '../errors.js';
+import { backoffMs, delay, errorMessage } from '@hal/types';
 import type { ScopedLogger } from '@hal/types';
+import { NavigationError } from '../errors.js';
 import { AttemptError } from './llm-attempt-error.js';
-import { ChatCompletionsClient, MAX_RETRY_AFTER_MS } from './llm-http.js';
+import { ChatCompletionsClient, decisionRetry } from './llm-http.js';
 import { resolveLlmSettings } from './llm-options.js';
 import type { LlmSettings, OpenAICompatibleOptions } from './llm-options.js';
 import { decisionBounds, SYSTEM_PROMPT, userContent } from './llm-prompt.js';
@@ -10,19 +11,6 @@ import { parseReply } from './llm-reply.js';
 import type { DecisionContext, DecisionProvider } from './provider.js';
 import { decisionJsonSchema } from './schema.js';
 import type { NavigationDecision } from './schema.js';
-
-/** Waits `ms`, or less when `signal` aborts. */
-function pause(ms: number, signal: AbortSignal): Promise<void> {
-  return new Promise((resolve) => {
-    const done = () => {
-      clearTimeout(timer);
-      signal.removeEventListener('abort', done);
-      resolve();
-    };
-    const timer = setTimeout(done, ms);
-    signal.addEventListener('abort', done, { once: true });
-  });
-}
 
 /**
  * A decision provider backed by any OpenAI-compatible chat-completions endpoint (OpenAI, vLLM,
@@ -53,6 +41,7 @@ export class OpenAICompatibleProvider implements DecisionProvider {
 
   async decide(context: DecisionContext, signal: AbortSignal): Promise<NavigationDecision> {
     const { maxAttempts } = this.#settings;
+    const retry = decisionRetry(maxAttempts);
     const bounds = decisionBounds(context.grid.spec);
     const schema = decisionJsonSchema(bounds);
     const messages: ChatMessage[] = [
@@ -84,9 +73,9 @@ export class OpenAICompatibleProvider implements DecisionProvider {
         });
         if (!failure.retryable) break;
         const asked = failure.retryAfterMs;
-        if (asked !== undefined && asked > MAX_RETRY_AFTER_MS) {
+        if (asked !== undefined && asked > retry.maxDelayMs) {
           problems.push(
-            `the server asks to wait ${Math.round(asked)} ms, more than ${MAX_RETRY_AFTER_MS}`,
+            `the server asks to wait ${Math.round(asked)} ms, more than ${retry.maxDelayMs}`,
           );
           break;
         }
@@ -96,8 +85,8 @@ export class OpenAICompatibleProvider implements DecisionProvider {
           if (last?.role === 'user' && typeof last.content === 'string') messages.splice(-2, 2);
           messages.push({ role: 'assistant', content: reply.slice(0, 2000) });
           messages.push({ role: 'user', content: failure.feedback });
-        } else if (attempt < maxAttempts) {
-          await pause(asked ?? 250 * attempt, signal);
+        } else if (attempt <= retry.maxRetries) {
+          await delay(asked ?? backoffMs(retry, attempt), signal);
         }
       }
     }
