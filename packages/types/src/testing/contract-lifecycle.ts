@@ -2,45 +2,65 @@ import { describe, expect, it } from 'vitest';
 import type { HardwareAbstractionLayer } from '../interfaces.js';
 import { SafetyStatusSchema } from '../pose.js';
 import type { HALToolResult } from '../result.js';
+import type { CallSpec } from '../schemas/call-table.js';
+import { callMethod, invokeSpec } from '../schemas/invoke-call.js';
 import type { ContractContext } from './contract-expect.js';
 import { expectFailedResult, expectRejected, settle } from './contract-expect.js';
+import { sampledCalls } from './contract-samples.js';
 
 type Hal = HardwareAbstractionLayer;
 
-/** Every call that answers with a result, with valid arguments. */
-const RESULT_CALLS: Array<[string, (h: Hal) => Promise<HALToolResult>]> = [
-  ['drive', (h) => h.locomotion.drive(100, 100, 200)],
-  ['moveTo', (h) => h.locomotion.moveTo(0.05, 0, 0)],
-  ['rotate', (h) => h.locomotion.rotate('left', 10)],
-  ['moveForward', (h) => h.locomotion.moveForward(1)],
-  ['moveBackward', (h) => h.locomotion.moveBackward(1)],
-  ['stop', (h) => h.locomotion.stop()],
-  ['speak', (h) => h.communication.speak('hello')],
-  ['setLED', (h) => h.communication.setLED(0, 255, 0, 'solid')],
-  ['playSound', (h) => h.communication.playSound('beep')],
-  // emergencyStop is left to the e-stop group: a stop is never refused for its circumstances
-  ['resetEmergencyStop', (h) => h.safety.resetEmergencyStop()],
-];
+/**
+ * What each call must do before `initialize()` and after `cleanup()`, read from its table entry:
+ * a result call fails NOT_READY, a value call rejects NOT_READY, a cached read answers (a safety
+ * check cannot fail), `log` (void) never throws, and the e-stop is left to the e-stop group (it
+ * is never refused, whatever the HAL's state).
+ */
+export type NotReadyRule = 'fails' | 'rejects' | 'answers' | 'never throws' | 'never refused';
 
-/** Every call that answers with a value, with valid arguments. */
-const READ_CALLS: Array<[string, (h: Hal) => Promise<unknown>]> = [
-  ['getPose', (h) => h.locomotion.getPose()],
-  ['captureFrame', (h) => h.vision.captureFrame()],
-  ['scan', (h) => h.vision.scan('quick')],
-  ['getDistanceSensors', (h) => h.vision.getDistanceSensors()],
-  ['getLineSensors', (h) => h.vision.getLineSensors()],
-  ['getIMU', (h) => h.vision.getIMU()],
-];
+/** The rule of `spec` before `initialize()` and after `cleanup()` (see {@link NotReadyRule}). */
+export function notReadyRule(spec: CallSpec): NotReadyRule {
+  if (spec.tool.safety === 'estop') return 'never refused';
+  switch (spec.kind) {
+    case 'motion':
+    case 'result':
+      return 'fails';
+    case 'value':
+      return spec.cached ? 'answers' : 'rejects';
+    case 'void':
+      return 'never throws';
+  }
+}
 
 /** Asserts that every call is refused NOT_READY, and the safety reads still answer. */
 async function expectAllNotReady(hal: Hal, when: string): Promise<void> {
-  for (const [name, run] of RESULT_CALLS) {
-    expectFailedResult(await run(hal), 'NOT_READY', undefined, `${name} ${when}:`);
+  for (const [spec, args] of sampledCalls()) {
+    const label = `${spec.name} ${when}:`;
+    switch (notReadyRule(spec)) {
+      case 'fails':
+        expectFailedResult(
+          (await invokeSpec(hal, spec, args)) as HALToolResult,
+          'NOT_READY',
+          undefined,
+          label,
+        );
+        break;
+      case 'rejects':
+        expectRejected(
+          await settle(() => invokeSpec(hal, spec, args)),
+          'NOT_READY',
+          undefined,
+          label,
+        );
+        break;
+      case 'answers':
+      case 'never throws':
+        expect(() => callMethod(hal, spec, args), label).not.toThrow();
+        break;
+      case 'never refused':
+        break;
+    }
   }
-  for (const [name, run] of READ_CALLS) {
-    expectRejected(await settle(() => run(hal)), 'NOT_READY', undefined, `${name} ${when}:`);
-  }
-  expect(() => hal.communication.log(`a message ${when}`, 'info')).not.toThrow();
   expect(() => hal.communication.log(`a message ${when}`, 'bogus' as 'info')).not.toThrow();
   const stopped = hal.safety.isEmergencyStopped();
   expect(typeof stopped).toBe('boolean');

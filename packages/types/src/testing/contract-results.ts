@@ -2,55 +2,29 @@ import { describe, expect, it } from 'vitest';
 import { isHalError } from '../errors.js';
 import { HALToolResultSchema } from '../result.js';
 import type { HALToolResult } from '../result.js';
-import { HAL_CALL_TABLE } from '../schemas/call-table.js';
-import type { CallName } from '../schemas/calls.js';
-import { invokeCall } from '../schemas/invoke-call.js';
+import { CAPABILITIES } from '../capabilities.js';
+import type { CallSpec } from '../schemas/call-table.js';
+import { invokeSpec } from '../schemas/invoke-call.js';
 import type { ContractContext } from './contract-expect.js';
+import { CALL_SAMPLES, sampledCalls, tableCallNames } from './contract-samples.js';
 
 /**
- * Valid arguments for every call, in the order the suite makes them: motions, commands, reads,
- * then the e-stop, the reads while it is latched, and its reset. A call added to the table needs
- * its sample here (the type says so), and so is checked on every HAL.
+ * The order the suite makes the calls in: every call outside the safety subsystem in the table's
+ * order, then the e-stop, the cached safety reads while it is latched, and the rest (its reset).
  */
-const SAMPLES: ReadonlyArray<readonly [CallName, readonly unknown[]]> = [
-  ['moveForward', [2]],
-  ['moveBackward', [2]],
-  ['rotate', ['left', 10]],
-  ['moveTo', [0.01, 0, 0]],
-  ['drive', [60, 60, 100]],
-  ['stop', []],
-  ['setLED', [10, 20, 30, 'blink']],
-  ['speak', ['hello']],
-  ['playSound', ['beep']],
-  ['log', ['the result contract', 'info']],
-  ['getPose', []],
-  ['captureFrame', []],
-  ['scan', ['quick']],
-  ['getDistanceSensors', []],
-  ['getLineSensors', []],
-  ['getIMU', []],
-  ['emergencyStop', ['result contract']],
-  ['isEmergencyStopped', []],
-  ['getSafetyStatus', []],
-  ['resetEmergencyStop', []],
-];
+function resultOrder(): ReadonlyArray<readonly [CallSpec, readonly unknown[]]> {
+  const rank = (spec: CallSpec): number =>
+    spec.subsystem !== 'safety' ? 0 : spec.tool.safety === 'estop' ? 1 : spec.cached ? 2 : 3;
+  return [...sampledCalls()].sort(([a], [b]) => rank(a) - rank(b));
+}
 
-/** The calls every HAL answers with success (the others may fail NOT_IMPLEMENTED instead). */
-const ALWAYS: ReadonlySet<CallName> = new Set<CallName>([
-  'moveForward',
-  'moveBackward',
-  'rotate',
-  'moveTo',
-  'drive',
-  'stop',
-  'log',
-  'getPose',
-  'getIMU',
-  'emergencyStop',
-  'isEmergencyStopped',
-  'getSafetyStatus',
-  'resetEmergencyStop',
-]);
+/**
+ * Whether every HAL must answer `spec` with success: the calls that need no capability beyond the
+ * wheels every HAL has (the others may fail NOT_IMPLEMENTED instead).
+ */
+function always(spec: CallSpec): boolean {
+  return spec.tool.requires === undefined || spec.tool.requires === CAPABILITIES.differentialDrive;
+}
 
 function isResult(value: unknown): value is HALToolResult {
   return HALToolResultSchema.safeParse(value).success;
@@ -66,9 +40,7 @@ export function describeResultContract(ctx: ContractContext): void {
 
   describe('results match the call table', () => {
     it('has a sample for every call of the table', () => {
-      expect(SAMPLES.map(([name]) => name).sort()).toEqual(
-        HAL_CALL_TABLE.map((spec) => spec.name).sort(),
-      );
+      expect(Object.keys(CALL_SAMPLES).sort()).toEqual(tableCallNames());
     });
 
     it(
@@ -77,16 +49,15 @@ export function describeResultContract(ctx: ContractContext): void {
       async () => {
         const hal = await ctx.ready();
         const mismatches: string[] = [];
-        const answers = new Map<CallName, unknown>();
-        for (const [name, args] of SAMPLES) {
-          const spec = HAL_CALL_TABLE.find((entry) => entry.name === name);
-          if (spec === undefined) continue; // the first test reports it
+        const answers = new Map<string, unknown>();
+        for (const [spec, args] of resultOrder()) {
+          const name = spec.name;
           let answer: unknown;
           try {
-            answer = await invokeCall(hal, name, args);
+            answer = await invokeSpec(hal, spec, args);
           } catch (error) {
             const code = isHalError(error) ? error.code : String(error);
-            if (ALWAYS.has(name) || code !== 'NOT_IMPLEMENTED') {
+            if (always(spec) || code !== 'NOT_IMPLEMENTED') {
               mismatches.push(`${name}: rejected ${code}`);
             }
             continue;
@@ -98,7 +69,7 @@ export function describeResultContract(ctx: ContractContext): void {
               continue;
             }
             if (!answer.success) {
-              if (ALWAYS.has(name) || answer.code !== 'NOT_IMPLEMENTED') {
+              if (always(spec) || answer.code !== 'NOT_IMPLEMENTED') {
                 mismatches.push(`${name}: failed ${answer.code ?? ''} ${answer.error ?? ''}`);
               }
               continue;

@@ -9,10 +9,13 @@ import type { Pose } from '../pose.js';
 import { HALToolResultSchema } from '../result.js';
 import { angleDifference } from '../vocabulary/angle.js';
 import type { HALToolResult } from '../result.js';
+import { invokeSpec } from '../schemas/invoke-call.js';
 import { describeBoundaryContract } from './contract-boundary.js';
 import { describeCapabilityContract } from './contract-capabilities.js';
+import { describeCoverageContract } from './contract-coverage.js';
 import { describeLifecycleContract } from './contract-lifecycle.js';
 import { describeResultContract } from './contract-results.js';
+import { sampledCalls } from './contract-samples.js';
 
 /** How the contract suite gets, and gets rid of, the HAL under test. */
 export interface HalContractOptions {
@@ -212,10 +215,11 @@ export function describeHalContract(name: string, options: HalContractOptions): 
           expect(SafetyStatusSchema.parse(hal.safety.getSafetyStatus()).emergencyStopped).toBe(
             true,
           );
-          expectFailure(await hal.locomotion.moveForward(5), 'EMERGENCY_STOPPED');
-          expectFailure(await hal.locomotion.drive(100, 100, 500), 'EMERGENCY_STOPPED');
-          expectFailure(await hal.locomotion.rotate('left', 10), 'EMERGENCY_STOPPED');
-          expectFailure(await hal.locomotion.moveTo(0.1, 0, 0), 'EMERGENCY_STOPPED');
+          for (const [spec, args] of sampledCalls((entry) => entry.kind === 'motion')) {
+            const refused = (await invokeSpec(hal, spec, args)) as HALToolResult;
+            expect(refused.code, spec.name).toBe('EMERGENCY_STOPPED');
+            expectFailure(refused, 'EMERGENCY_STOPPED');
+          }
           expectSuccess(await hal.locomotion.stop());
           expect(hal.safety.isEmergencyStopped()).toBe(true);
           expect((await pose()).position.x).toBe(0);
@@ -324,5 +328,6 @@ export function describeHalContract(name: string, options: HalContractOptions): 
     describeLifecycleContract(groups);
     describeCapabilityContract(groups);
     describeResultContract(groups);
+    describeCoverageContract();
   });
 }
