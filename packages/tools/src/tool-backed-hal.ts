@@ -1,5 +1,11 @@
 import { HAL_CALL_TABLE, HAL_ERROR_CODES, HalError, objectFromArgs } from '@hal/types';
-import type { CallSpec, HALToolResult, HalErrorCode, HardwareAbstractionLayer } from '@hal/types';
+import type {
+  CallSpec,
+  CallSubsystem,
+  HALToolResult,
+  HalErrorCode,
+  HardwareAbstractionLayer,
+} from '@hal/types';
 import type { ToolCall } from './executor.js';
 import type { ToolResult } from './result.js';
 
@@ -35,9 +41,12 @@ function asValue<T>(result: ToolResult): T {
   throw new HalError(code, typeof s['error'] === 'string' ? s['error'] : code);
 }
 
-/** Calls that stay on the robot itself: synchronous reads, the log, and the e-stop (never refused). */
-const DIRECT = new Set(['getSafetyStatus', 'isEmergencyStopped', 'log', 'emergencyStop']);
-const SUBSYSTEMS = ['locomotion', 'vision', 'safety', 'manipulation', 'communication'] as const;
+/** Whether `spec` stays on the robot itself: a synchronous read, the log, the e-stop (never refused). */
+function direct(spec: CallSpec): boolean {
+  return spec.cached || spec.kind === 'void' || spec.tool.safety === 'estop';
+}
+/** The subsystems that have calls in the table; any other (an arm) is the HAL's own, untouched. */
+const SUBSYSTEMS: readonly CallSubsystem[] = [...new Set(HAL_CALL_TABLE.map((s) => s.subsystem))];
 
 /**
  * `hal` with every asynchronous call of its call table (motions, the e-stop's reset, reads, the
@@ -54,10 +63,10 @@ export function toolBackedHal(
 ): HardwareAbstractionLayer {
   const run = (spec: CallSpec, args: readonly unknown[]) =>
     execute({ name: spec.tool.name, arguments: objectFromArgs(spec, args) });
-  const routed = (subsystem: (typeof SUBSYSTEMS)[number]): object => {
+  const routed = (subsystem: CallSubsystem): object => {
     const target = (hal as unknown as Record<string, object>)[subsystem] ?? {};
     const specs = new Map(
-      HAL_CALL_TABLE.filter((s) => s.subsystem === subsystem && !DIRECT.has(s.method)).map((s) => [
+      HAL_CALL_TABLE.filter((s) => s.subsystem === subsystem && !direct(s)).map((s) => [
         s.method,
         s,
       ]),
