@@ -7,6 +7,7 @@ import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { errorMessage } from '@hal/types';
 import { EMULATOR_PATH } from '../tests/physical/emulator.js';
 
 const firmwareDir = fileURLToPath(new URL('../firmware', import.meta.url));
@@ -66,7 +67,7 @@ export function ensureEmulatorFor(dir: string, files: readonly string[]): void {
   try {
     ensureEmulator();
   } catch (error) {
-    console.error(error instanceof Error ? error.message : String(error));
+    console.error(errorMessage(error));
     process.exit(1);
   }
 }

@@ -12,7 +12,7 @@ import { COLOUR_NAMES, FramePerceiver, VisionModelDetector } from '@hal/percepti
 import type { ColourName, Percept, VisionModelDetectorOptions } from '@hal/perception';
 import { encodeJpeg, renderRobotView, SeededRandom, World } from '@hal/simulation';
 import type { WorldMapInput } from '@hal/simulation';
-import { V1_CAMERA } from '@hal/types';
+import { V1_CAMERA, errorMessage } from '@hal/types';
 import { percentile, reportFigure } from './report/figures.js';
 
 const BENCH = 'vlm-detector';
@@ -169,7 +169,7 @@ for (let seed = 1; seed <= SCENES; seed += 1) {
   } catch (error) {
     byModel.failures += 1;
     byModel.truths += truth.length;
-    failures.push(`scene ${seed}: ${error instanceof Error ? error.message : String(error)}`);
+    failures.push(`scene ${seed}: ${errorMessage(error)}`);
   }
 }
 for (const line of failures) console.log(line);

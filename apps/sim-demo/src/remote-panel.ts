@@ -1,7 +1,7 @@
 import { HybridHAL } from '@hal/hybrid';
 import type { DivergenceEvent } from '@hal/hybrid';
 import { RemoteHAL } from '@hal/remote';
-import { invokeSpec, motionCall } from '@hal/types';
+import { invokeSpec, motionCall, errorMessage } from '@hal/types';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { make } from './dom.js';
 import type { ResultsLog } from './results-log.js';
@@ -118,7 +118,7 @@ export class RemotePanel {
     } catch (e) {
       await remote.cleanup();
       this.state.connection = 'failed';
-      this.#log.note(`Remote robot: ${e instanceof Error ? e.message : String(e)}`);
+      this.#log.note(`Remote robot: ${errorMessage(e)}`);
       this.#render();
       return;
     }

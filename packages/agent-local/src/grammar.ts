@@ -1,4 +1,5 @@
 import type { GbnfJsonOneOfSchema, Llama, LlamaGrammar } from 'node-llama-cpp';
+import { errorMessage } from '@hal/types';
 import { LocalModelError } from './errors.js';
 
 /** Most digits after the decimal point a number may have (finer than any of the robot's steps). */
@@ -22,7 +23,7 @@ export function compactGrammar(grammar: string): string {
 
 /** llama.cpp's refusal of a grammar as a SCHEMA_UNSUPPORTED error (its own text is the cause). */
 function refused(cause: unknown): LocalModelError {
-  const said = cause instanceof Error ? cause.message : String(cause);
+  const said = errorMessage(cause);
   return new LocalModelError(
     'SCHEMA_UNSUPPORTED',
     `llama.cpp refused the grammar built from the tools' schemas (${said}); offer fewer tools with "offerTools"`,

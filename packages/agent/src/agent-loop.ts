@@ -1,6 +1,7 @@
+import { errorMessage } from '@hal/types';
 import type { ToolResult } from '@hal/tools';
 import type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
-import { AgentError, errorMessage } from './errors.js';
+import { AgentError } from './errors.js';
 import type { AgentDoneReason, AgentEvent, AgentEventListener } from './events.js';
 import type { AgentSettings, AgentToolExecutor } from './options.js';
 import { imagesMessage, resultImages, resultText } from './tool-turn.js';

@@ -1,3 +1,5 @@
+import { errorMessage } from '@hal/types';
+
 /** Why an agent run failed (see {@link AgentError}). */
 export type AgentErrorCode =
   /** An option is missing or wrong (no model, bad URL, a cap that is not a positive number). */
@@ -28,11 +30,6 @@ export class AgentError extends Error {
     this.code = code;
     this.details = options.details;
   }
-}
-
-/** The message of anything thrown: an Error's message, else its string form. */
-export function errorMessage(error: unknown): string {
-  return error instanceof Error ? error.message : String(error);
 }
 
 /**

@@ -10,7 +10,7 @@ import { Option } from 'commander';
 import type { Command } from 'commander';
 import { McapRecorder } from '@hal/recorder';
 import type { RecorderOptions } from '@hal/recorder';
-import { withTimeout } from '@hal/types';
+import { withTimeout, errorMessage } from '@hal/types';
 import { usageError } from './values.js';
 
 /** One place a command writes to. */
@@ -43,7 +43,7 @@ export function addOverwriteOption(command: Command, what: string): Command {
 
 function errnoOf(error: unknown): string {
   const code = (error as NodeJS.ErrnoException | undefined)?.code;
-  return code ?? (error instanceof Error ? error.message : String(error));
+  return code ?? errorMessage(error);
 }
 
 /** The nearest folder at or above `path` that exists (`path` itself when it is one). */

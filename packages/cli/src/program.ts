@@ -2,7 +2,7 @@
 // commands/index.ts. Built fresh per run so tests can run many in one process.
 import { createRequire } from 'node:module';
 import { Command, CommanderError } from 'commander';
-import { isHalError } from '@hal/types';
+import { isHalError, errorMessage } from '@hal/types';
 import { CliError } from './cli-error.js';
 import { COMMANDS } from './commands/index.js';
 import type { CliIO, GlobalOptions } from './io.js';
@@ -76,7 +76,7 @@ function describeError(error: unknown): { doc: ErrorDocument; exitCode: number }
       exitCode: 1,
     };
   }
-  const message = error instanceof Error ? error.message : String(error);
+  const message = errorMessage(error);
   return { doc: { error: { code: 'FAILED', message } }, exitCode: 1 };
 }
 

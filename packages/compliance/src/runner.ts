@@ -1,5 +1,5 @@
 import { CapabilityAnnouncementSchema, SCHEMAS } from '@hal/nats';
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import type { Check, Verdict } from './checks/check.js';
 import { CAMERA_CHECKS } from './checks/camera.js';
 import { MOTOR_CHECKS } from './checks/motor.js';
@@ -166,7 +166,7 @@ async function runOne(
   } catch (error) {
     verdict = {
       status: 'fail',
-      reason: `the check failed: ${error instanceof Error ? error.message : String(error)}`,
+      reason: `the check failed: ${errorMessage(error)}`,
     };
   }
   const durationMs = Math.round(performance.now() - started);

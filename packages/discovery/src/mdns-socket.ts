@@ -3,7 +3,7 @@
 // multicast-dns 'error' event without a listener, and an EventEmitter throws on such an event.
 import { EventEmitter } from 'node:events';
 import { Bonjour } from 'bonjour-service';
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 
 /** Where mDNS packets go: the standard 224.0.0.251:5353, on the default interface. */
 export interface MdnsOptions {
@@ -32,11 +32,7 @@ export function openMdns(options: MdnsOptions = {}): MdnsHandle {
   failed.catch(() => undefined); // observed by whoever races it
   const onError = (error: unknown) =>
     fail(
-      new HalError(
-        'NOT_CONNECTED',
-        `mDNS socket failed: ${error instanceof Error ? error.message : String(error)}`,
-        { cause: error },
-      ),
+      new HalError('NOT_CONNECTED', `mDNS socket failed: ${errorMessage(error)}`, { cause: error }),
     );
   const bonjour = new Bonjour(
     {

@@ -1,7 +1,7 @@
 // The TXT record of an announced robot (docs/discovery.md): checked with zod, the capability list
 // joined back from `caps`, `caps1`, `caps2`, ... and every capability string parsed.
 import { z } from 'zod';
-import { HALConfigSchema, parseCapability } from '@hal/types';
+import { HALConfigSchema, parseCapability, errorMessage } from '@hal/types';
 import { MAX_TXT_ENTRY_BYTES, TXT_VERSION } from './service.js';
 
 /** How a robot authenticates requests, as its `auth` TXT entry (and hello's `auth`) says. */
@@ -51,7 +51,7 @@ function joinCapabilities(txt: Record<string, unknown>): string[] | string {
     try {
       parseCapability(capability);
     } catch (error) {
-      return error instanceof Error ? error.message : String(error);
+      return errorMessage(error);
     }
   }
   return capabilities;

@@ -1,5 +1,6 @@
 import { guardHal, Perception, withCameraScan } from '@hal/perception';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { errorMessage } from '@hal/types';
 import type { EvalAgent } from './agent.js';
 import { reportedBody } from './bodies/reported-body.js';
 import { stagedBody } from './bodies/staged-body.js';
@@ -65,8 +66,6 @@ export function runsOnRobot(task: Task, robot?: EvalRobot): boolean {
   );
 }
 
-const message = (error: unknown) => (error instanceof Error ? error.message : String(error));
-
 /**
  * Runs one trial of `task` on `robot`. A robot that can be staged in the task's world runs it
  * there, judged from its body's true pose ({@link EvalRobot.stage}); any other is scored from
@@ -125,7 +124,7 @@ async function reach<T>(robot: EvalRobot, open: () => Promise<T>): Promise<T> {
   try {
     return await open();
   } catch (error) {
-    throw new EvalError('ROBOT', `${robot.name}: ${message(error)}`, { cause: error });
+    throw new EvalError('ROBOT', `${robot.name}: ${errorMessage(error)}`, { cause: error });
   }
 }
 

@@ -4,6 +4,7 @@ import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { ErrorCode, McpError } from '@modelcontextprotocol/sdk/types.js';
 import type { RequestId } from '@modelcontextprotocol/sdk/types.js';
 import type { ApprovalDecision } from '@hal/tools';
+import { errorMessage } from '@hal/types';
 
 /** Why nothing moves when the client cannot be asked. */
 export const NO_ELICITATION =
@@ -74,7 +75,7 @@ export function elicitApproval(
       if (request.signal.aborted) {
         return { allow: false, reason: 'the tool call was cancelled; nothing moved' };
       }
-      const why = thrown instanceof Error ? thrown.message : String(thrown);
+      const why = errorMessage(thrown);
       return { allow: false, reason: `the question failed: ${why}; nothing moved` };
     }
   };

@@ -4,7 +4,7 @@ import type { IncomingMessage, Server as HttpServer, ServerResponse } from 'node
 import type { AddressInfo } from 'node:net';
 import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { StreamableHTTPServerTransport } from '@modelcontextprotocol/sdk/server/streamableHttp.js';
-import { browserRefusal, isLoopback } from '@hal/types';
+import { browserRefusal, isLoopback, errorMessage } from '@hal/types';
 import { DEFAULT_MAX_SESSIONS, httpSessions } from './http-sessions.js';
 
 /** Where and how the streamable HTTP endpoint listens. */
@@ -89,8 +89,7 @@ export async function serveHttp(
     if (refusal !== undefined) return refuse(res, refusal[0], refusal[1]);
     if (sessions !== undefined) {
       sessions.handle(req, res).catch((error: unknown) => {
-        if (!res.headersSent)
-          refuse(res, 500, error instanceof Error ? error.message : String(error));
+        if (!res.headersSent) refuse(res, 500, errorMessage(error));
       });
       return;
     }
@@ -108,8 +107,7 @@ export async function serveHttp(
       .connect(transport)
       .then(() => transport.handleRequest(req, res))
       .catch((error: unknown) => {
-        if (!res.headersSent)
-          refuse(res, 500, error instanceof Error ? error.message : String(error));
+        if (!res.headersSent) refuse(res, 500, errorMessage(error));
       });
   });
   await new Promise<void>((resolve, reject) => {

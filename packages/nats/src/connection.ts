@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import { connect } from '@nats-io/transport-node';
 import type { ConnectionOptions, NatsConnection } from '@nats-io/transport-node';
 
@@ -51,7 +51,7 @@ export async function openConnection(options: NatsConnectOptions): Promise<NatsC
 /** The one error every command gives for a NATS server it could not connect to. */
 function unreachable(servers: string | string[], cause: unknown): HalError {
   const where = [servers].flat().join(',');
-  const why = cause instanceof Error ? cause.message : String(cause);
+  const why = errorMessage(cause);
   if (/authori[sz]ation|authentication/i.test(why)) {
     return new HalError('AUTH_FAILED', `NATS at ${where} refused the credentials: ${why}`, {
       cause,

@@ -38,8 +38,3 @@ export function positiveOption(name: string, value: number, integer = false): nu
   }
   return value;
 }
-
-/** The message of anything thrown: an Error's message, else its string form. */
-export function errorMessage(error: unknown): string {
-  return error instanceof Error ? error.message : String(error);
-}

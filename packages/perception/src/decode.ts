@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import jpeg from 'jpeg-js';
 import type { JpegDecoder, RgbaImage } from './image.js';
 import { loadSharpDecoder } from './sharp-decoder.js';
@@ -57,7 +57,7 @@ export async function decodeFrame(
   } catch (error) {
     throw new HalError(
       'INVALID_PARAMETER',
-      `the JPEG frame could not be decoded: ${error instanceof Error ? error.message : String(error)}`,
+      `the JPEG frame could not be decoded: ${errorMessage(error)}`,
     );
   }
 }

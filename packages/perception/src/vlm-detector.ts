@@ -1,6 +1,6 @@
 import { AgentError, postChatCompletion } from '@hal/agent';
 import type { ChatEndpoint } from '@hal/agent';
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import type { Detector, DetectorInput } from './detector.js';
 import type { Detection } from './project-object.js';
 import { vlmMessages, vlmRequestBody } from './vlm-prompt.js';
@@ -112,13 +112,9 @@ export class VisionModelDetector implements Detector {
               return replyEntries(replyText(reply));
             } catch (error) {
               // Unreadable: postChatCompletion asks again while it may.
-              throw new AgentError(
-                'BAD_REPLY',
-                error instanceof Error ? error.message : String(error),
-                {
-                  cause: error,
-                },
-              );
+              throw new AgentError('BAD_REPLY', errorMessage(error), {
+                cause: error,
+              });
             }
           },
           deadline,

@@ -1,5 +1,5 @@
 import { AgentError } from '@hal/agent';
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import type { HalErrorCode } from '@hal/types';
 
 /** Which way a vision model failed, as `details.failure` of the HalError. */
@@ -37,7 +37,7 @@ export function vlmFailure(error: unknown, context: VlmFailureContext): HalError
     return make('TIMEOUT', 'timeout', `no answer within ${timeoutMs} ms`, { timeoutMs });
   }
   if (!(error instanceof AgentError)) {
-    const message = error instanceof Error ? error.message : String(error);
+    const message = errorMessage(error);
     return make('HARDWARE_ERROR', 'network', `the request failed: ${message}`);
   }
   const status = error.details?.['status'];

@@ -1,5 +1,5 @@
 // What recordHal reads of a call's arguments, results and errors, and its option checks.
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 
 export function isPromiseLike(value: unknown): value is PromiseLike<unknown> {
   return (
@@ -44,7 +44,7 @@ export function errorOf(error: unknown): { code?: string; error: string } {
   const code = (error as { code?: unknown } | null)?.code;
   return {
     ...(typeof code === 'string' ? { code } : {}),
-    error: error instanceof Error ? error.message : String(error),
+    error: errorMessage(error),
   };
 }
 

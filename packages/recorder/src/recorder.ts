@@ -1,4 +1,4 @@
-import { scoped, silentLogger, withTimeout } from '@hal/types';
+import { scoped, silentLogger, withTimeout, errorMessage } from '@hal/types';
 import type { ScopedLogger } from '@hal/types';
 import { BackgroundWork } from './background-work.js';
 import { period } from './call-values.js';
@@ -409,7 +409,7 @@ export class McapRecorder {
 
   #fail(error: unknown): void {
     if (this.#failure !== undefined) return;
-    this.#failure = `the recording's disk failed: ${error instanceof Error ? error.message : String(error)}`;
+    this.#failure = `the recording's disk failed: ${errorMessage(error)}`;
     this.#log.warn(`${this.#failure}; the robot goes on, records are dropped and counted`);
   }
 

@@ -1,5 +1,6 @@
 import { MCAP_MAGIC, McapRecordBuilder, McapStreamReader } from '@mcap/core';
 import type { McapTypes } from '@mcap/core';
+import { errorMessage } from '@hal/types';
 import { DECOMPRESS_HANDLERS } from './compression.js';
 import type { RecordingBuilder } from './recording-builder.js';
 import { RecordingReadError } from './recording-read-error.js';
@@ -42,10 +43,6 @@ export interface KnownChannels {
 const CHUNK_OPCODE = 0x06;
 /** A chunk's fixed fields: start and end time, uncompressed size, CRC, compression length. */
 const CHUNK_FIXED_BYTES = 8 + 8 + 8 + 4 + 4;
-
-function messageOf(error: unknown): string {
-  return error instanceof Error ? error.message : String(error);
-}
 
 /** One reader over part of the file, after the schema and channel records it must know. */
 class Segment {
@@ -195,7 +192,7 @@ export function recoverRecords(
         return {
           end: 'error',
           offset: inChunk && chunkAt !== undefined ? chunkAt : before,
-          reason: messageOf(error),
+          reason: errorMessage(error),
         };
       }
     }

@@ -1,4 +1,4 @@
-import { HalError, scoped, TypedEmitter } from '@hal/types';
+import { HalError, scoped, TypedEmitter, errorMessage } from '@hal/types';
 import type { Logger, RobotConfig } from '@hal/types';
 import { parseMap } from './map.js';
 import type { WorldMap, WorldMapInput } from './map.js';
@@ -383,7 +383,7 @@ export function listenerSafeEmitter<Events extends { [K in keyof Events]: unknow
   return new TypedEmitter<Events>((event, error) =>
     log.error('event listener threw', {
       event,
-      error: error instanceof Error ? error.message : String(error),
+      error: errorMessage(error),
     }),
   );
 }

@@ -2,7 +2,7 @@ import type { Point } from '@hal/navigation';
 import { errorResult, parseArguments } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolResult } from '@hal/tools';
 import type { HardwareAbstractionLayer } from '@hal/types';
-import { isHalError } from '@hal/types';
+import { isHalError, errorMessage } from '@hal/types';
 import { exploreSkill } from './explore.js';
 import { faceSkill, findSkill } from './find-face.js';
 import { goBackSkill, goToPoint, goToThing } from './go-to.js';
@@ -134,7 +134,7 @@ export function createSkills(
       } catch (error) {
         // a sensor that failed (no frame, no pose): the skill could not go on
         const code = isHalError(error) ? error.code : 'HARDWARE_ERROR';
-        const why = error instanceof Error ? error.message : String(error);
+        const why = errorMessage(error);
         return errorResult(code, `${name}: ${why}`);
       } finally {
         running = undefined;

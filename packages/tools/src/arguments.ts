@@ -1,3 +1,4 @@
+import { errorMessage } from '@hal/types';
 /** Parsed tool arguments, or why they could not be parsed. */
 export type ParsedArguments =
   { ok: true; args: Record<string, unknown> } | { ok: false; message: string };
@@ -14,7 +15,7 @@ export function parseArguments(raw: string | Record<string, unknown> | undefined
     try {
       value = JSON.parse(raw);
     } catch (error) {
-      const why = error instanceof Error ? error.message : String(error);
+      const why = errorMessage(error);
       return { ok: false, message: `arguments are not valid JSON (${why}); send a JSON object` };
     }
   }

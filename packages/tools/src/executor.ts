@@ -1,4 +1,4 @@
-import { HAL_CALL_TABLE, HalBoundary, withTimeout } from '@hal/types';
+import { HAL_CALL_TABLE, HalBoundary, withTimeout, errorMessage } from '@hal/types';
 import type {
   CallName,
   CallTable,
@@ -185,7 +185,7 @@ export function createToolExecutor(
         decision = await leash.approve({ tool, args: checked.args });
       } catch (thrown) {
         // fail closed: a hook that breaks has not approved anything
-        const why = thrown instanceof Error ? thrown.message : String(thrown);
+        const why = errorMessage(thrown);
         return errorResult('DENIED', `${tool.name}: the approval hook failed: ${why}`);
       }
       if (!decision.allow) return errorResult('DENIED', `${tool.name}: denied: ${decision.reason}`);

@@ -1,4 +1,4 @@
-import { isHalError } from '@hal/types';
+import { isHalError, errorMessage } from '@hal/types';
 import type { HALToolResult } from '@hal/types';
 
 /** One piece of a tool result: text, or an image where the format has images. */
@@ -67,5 +67,5 @@ export function fromValue(value: unknown): ToolResult {
 /** A read call's rejection (always a HalError from a HAL) as a result. */
 export function fromThrown(thrown: unknown): ToolResult {
   if (isHalError(thrown)) return errorResult(thrown.code, thrown.message);
-  return errorResult('HARDWARE_ERROR', thrown instanceof Error ? thrown.message : String(thrown));
+  return errorResult('HARDWARE_ERROR', errorMessage(thrown));
 }

@@ -2,6 +2,7 @@ import { runAgent } from '@hal/agent';
 import type { AgentEvent } from '@hal/agent';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import './agent-panel.css';
+import { errorMessage } from '@hal/types';
 import { loadAgentSettings, saveAgentSettings } from './agent-settings.js';
 
 /** How many event lines the panel keeps. */
@@ -133,7 +134,7 @@ export class AgentPanel {
     } catch (error) {
       // Only bad settings get here (runAgent reports endpoint failures as events).
       this.#add({
-        text: error instanceof Error ? error.message : String(error),
+        text: errorMessage(error),
         className: 'fail',
       });
       this.#state('Check the settings');

@@ -3,7 +3,7 @@ import type { Look } from '@hal/perception';
 import type { OccupancyGrid } from '@hal/navigation';
 import type { SimulationHAL, WorldMap } from '@hal/simulation';
 import type { WorldScene } from '@hal/simulation/three';
-import { V1_CAMERA } from '@hal/types';
+import { V1_CAMERA, errorMessage } from '@hal/types';
 import type { CameraModel } from '@hal/types';
 import { make } from '../dom.js';
 import { CameraBoxes } from './camera-boxes.js';
@@ -129,7 +129,7 @@ export class PerceptionView {
     } catch (error) {
       this.#state = {
         ...this.#state,
-        error: error instanceof Error ? error.message : String(error),
+        error: errorMessage(error),
       };
       this.#options.list.replaceChildren(
         make('li', { className: 'fail' }, `cannot look: ${this.#state.error}`),

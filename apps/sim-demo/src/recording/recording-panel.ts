@@ -1,5 +1,6 @@
 import type { SimulationHAL } from '@hal/simulation';
 import type { WorldScene } from '@hal/simulation/three';
+import { errorMessage } from '@hal/types';
 import { make } from '../dom.js';
 import type { StatusLine } from '../status-line.js';
 import { Playback } from './playback.js';
@@ -168,7 +169,7 @@ export class RecordingPanel {
         );
       }
     } catch (error) {
-      this.#say(`The recording failed: ${messageOf(error)}`, true);
+      this.#say(`The recording failed: ${errorMessage(error)}`, true);
     } finally {
       this.#busy = false;
       this.#render();
@@ -222,7 +223,7 @@ export class RecordingPanel {
       this.#say(
         error instanceof RecordingFileError
           ? error.message
-          : `Could not read ${file.name}: ${messageOf(error)}`,
+          : `Could not read ${file.name}: ${errorMessage(error)}`,
         true,
       );
     } finally {
@@ -292,10 +293,6 @@ export class RecordingPanel {
     this.#message.className = `recording-message${bad ? ' bad' : ''}`;
     this.#message.role = bad ? 'alert' : 'status';
   }
-}
-
-function messageOf(error: unknown): string {
-  return error instanceof Error ? error.message : String(error);
 }
 
 function seconds(ms: number): string {

@@ -1,3 +1,4 @@
+import { errorMessage } from '@hal/types';
 import { make } from '../dom.js';
 import type { StatusLine } from '../status-line.js';
 import { MAX_ROBOTS } from './palette.js';
@@ -69,7 +70,7 @@ export class RobotsCard {
     try {
       await action();
     } catch (error) {
-      this.#status.set(error instanceof Error ? error.message : String(error), 'bad');
+      this.#status.set(errorMessage(error), 'bad');
     }
   }
 

@@ -4,6 +4,7 @@
 import { Command } from 'commander';
 import { readRecordingFile, RecordingReadError, summarizeRecording } from '@hal/recorder';
 import type { RecordingSummary } from '@hal/recorder';
+import { errorMessage } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { emit } from '../io.js';
 import type { RegisterCommand } from './context.js';
@@ -45,10 +46,7 @@ export async function readForCommand(file: string) {
     if (error instanceof RecordingReadError) throw new CliError('FAILED', error.message);
     const code = (error as { code?: unknown }).code;
     if (code === 'ENOENT') throw new CliError('NOT_FOUND', `no recording at ${file}`);
-    throw new CliError(
-      'FAILED',
-      `cannot read ${file}: ${error instanceof Error ? error.message : String(error)}`,
-    );
+    throw new CliError('FAILED', `cannot read ${file}: ${errorMessage(error)}`);
   }
 }
 

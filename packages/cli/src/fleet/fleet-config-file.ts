@@ -4,6 +4,7 @@
 import { readFile } from 'node:fs/promises';
 import { parseFleetConfig } from '@hal/fleet/node';
 import type { FleetConfig } from '@hal/fleet/node';
+import { errorMessage } from '@hal/types';
 import { CliError } from '../cli-error.js';
 
 /**
@@ -15,14 +16,14 @@ export async function readFleetConfigFile(path: string): Promise<FleetConfig> {
   try {
     text = await readFile(path, 'utf8');
   } catch (error) {
-    const reason = error instanceof Error ? error.message : String(error);
+    const reason = errorMessage(error);
     throw new CliError('NOT_FOUND', `--config ${path}: cannot read it (${reason})`);
   }
   let raw: unknown;
   try {
     raw = JSON.parse(text) as unknown;
   } catch (error) {
-    const reason = error instanceof Error ? error.message : String(error);
+    const reason = errorMessage(error);
     throw new CliError('USAGE', `--config ${path}: not JSON (${reason})`);
   }
   return parseFleetConfig(raw);

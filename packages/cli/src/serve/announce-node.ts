@@ -3,6 +3,7 @@
 // multicast on this network) is reported and serving goes on: NATS does not need it.
 import { announceTafyNode } from '@hal/discovery';
 import type { TafyNodeAnnouncer } from '@hal/discovery';
+import { errorMessage } from '@hal/types';
 
 const NATS_DEFAULT_PORT = 4222;
 
@@ -27,6 +28,6 @@ export async function announceGateway(node: {
       servers: node.servers,
     });
   } catch (error) {
-    return error instanceof Error ? error.message : String(error);
+    return errorMessage(error);
   }
 }

@@ -2,6 +2,7 @@ import { runAgent } from '@hal/agent';
 import type { AgentEndpoint, AgentError, ChatProvider } from '@hal/agent';
 import type { ToolProfile } from '@hal/skills';
 import type { AgentTool } from '@hal/tools';
+import { errorMessage } from '@hal/types';
 import type { EvalAgent, ModelFailure } from '../agent.js';
 
 /** Options of {@link chatAgent}: a model behind `@hal/agent`'s loop. */
@@ -38,7 +39,7 @@ function thrownFailure(error: unknown): ModelFailure {
   const code = (error as { code?: unknown } | null)?.code;
   return {
     code: typeof code === 'string' ? code : 'PREPARE',
-    message: error instanceof Error ? error.message : String(error),
+    message: errorMessage(error),
   };
 }
 

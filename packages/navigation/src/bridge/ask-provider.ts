@@ -1,8 +1,8 @@
-import { withTimeout } from '@hal/types';
+import { errorMessage, withTimeout } from '@hal/types';
 import type { DecisionContext } from '../decision/provider.js';
 import { parseDecision } from '../decision/schema.js';
 import type { NavigationDecision } from '../decision/schema.js';
-import { errorMessage, NavigationError } from '../errors.js';
+import { NavigationError } from '../errors.js';
 import type { BridgeContext } from './bridge-context.js';
 import { failed, stopRequested } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';

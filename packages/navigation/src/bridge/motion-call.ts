@@ -3,12 +3,12 @@ import {
   invokeSpec,
   isHalError,
   maxLinearSpeedMPerS,
+  errorMessage,
   motionCall,
   withTimeout,
 } from '@hal/types';
 import type { CallMotion, HALToolResult } from '@hal/types';
 import type { ActionReport } from '../decision/provider.js';
-import { errorMessage } from '../errors.js';
 import type { Acted, BridgeContext, RunState } from './bridge-context.js';
 import type { BridgeSettings } from './bridge-options.js';
 import { checkMotionResult } from './result-check.js';

@@ -1,10 +1,10 @@
-import { scoped, silentLogger, TypedEmitter, withTimeout } from '@hal/types';
+import { errorMessage, scoped, silentLogger, TypedEmitter, withTimeout } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { distance } from '../grid/geometry.js';
 import type { Point } from '../grid/geometry.js';
 import { OccupancyGrid } from '../grid/occupancy-grid.js';
 import type { DecisionProvider } from '../decision/provider.js';
-import { errorMessage, NavigationError } from '../errors.js';
+import { NavigationError } from '../errors.js';
 import { resolveBridgeSettings } from './bridge-options.js';
 import type { NavigationBridgeOptions } from './bridge-options.js';
 import type { BridgeContext, RunState } from './bridge-context.js';

@@ -1,7 +1,6 @@
-import { isHalError, withTimeout } from '@hal/types';
+import { errorMessage, isHalError, withTimeout } from '@hal/types';
 import type { Pose2D } from '../grid/geometry.js';
 import type { RangeReadings } from '../grid/range-sensor-update.js';
-import { errorMessage } from '../errors.js';
 import type { BridgeContext } from './bridge-context.js';
 import { failed } from './navigation-outcome.js';
 import type { Terminal } from './navigation-outcome.js';

@@ -6,6 +6,7 @@ import {
   maxLinearSpeedMPerS,
   normalizeAngle,
   V1_ROBOT,
+  errorMessage,
 } from '@hal/types';
 import type {
   CallName,
@@ -391,7 +392,7 @@ export class GuardedLocomotion implements LocomotionInterface {
   }
 
   async #blind(motion: string, results: HALToolResult[], error: unknown): Promise<HALToolResult> {
-    const why = error instanceof Error ? error.message : String(error);
+    const why = errorMessage(error);
     const moved = results.length > 0 ? 'stopped' : 'refused';
     const message = `${motion}: ${moved} rather than drive blind: the guard cannot see ahead (${why})`;
     this.#ctx.record.blind(motion, message);

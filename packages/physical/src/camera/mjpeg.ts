@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import { scoped } from '@hal/types';
 import type { Logger, ScopedLogger } from '@hal/types';
 import { boundaryOf, MultipartParser } from './multipart.js';
@@ -177,7 +177,7 @@ export class MjpegCamera {
       } catch (error) {
         if (!this.#running) break;
         this.stats.errors += 1;
-        this.#lastError = error instanceof Error ? error.message : String(error);
+        this.#lastError = errorMessage(error);
         this.#log.debug('stream failed', { url, error: this.#lastError });
       }
       if (!this.#running) break;

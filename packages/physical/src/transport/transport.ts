@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, errorMessage } from '@hal/types';
 import type { Logger } from '@hal/types';
 import type { DecodeResult, WireReply } from '../protocol/codec.js';
 
@@ -18,7 +18,7 @@ export function linkOpenError(
   cause: unknown,
   details: Record<string, unknown>,
 ): HalError {
-  const reason = (cause instanceof Error ? cause.message : String(cause)).split('\n', 1)[0];
+  const reason = errorMessage(cause).split('\n', 1)[0];
   const errno = (cause as NodeJS.ErrnoException | undefined)?.code;
   return new HalError('NOT_CONNECTED', `${what}: ${reason}`, {
     cause,
