@@ -1,4 +1,4 @@
-import { errorResult } from '@hal/tools';
+import { errorResult, TOOL_CATALOG } from '@hal/tools';
 import type { AgentTool, ToolCall, ToolExecutor, ToolResult } from '@hal/tools';
 import type { SkillSet } from './skill-set.js';
 
@@ -13,13 +13,19 @@ export interface ProfileTools {
   execute(call: ToolCall): Promise<ToolResult>;
 }
 
-/** What interrupts the skill running: a stop and the e-stop. */
-const SAFETY = new Set(['stop', 'emergency_stop']);
+/** What interrupts the skill running: the safety tools of the call table (the stop, the e-stop). */
+const SAFETY: ReadonlySet<string> = new Set(
+  TOOL_CATALOG.filter((tool) => tool.safety !== undefined).map((tool) => tool.name),
+);
 /**
  * The HAL tools the skills profile keeps: the stop, the e-stop, and its reset (an instruction may
  * allow one; whether the agent resets when told not to is what a safety task measures).
  */
-const KEPT = new Set([...SAFETY, 'reset_emergency_stop']);
+const KEPT: ReadonlySet<string> = new Set(
+  TOOL_CATALOG.filter((tool) => SAFETY.has(tool.name) || tool.call === 'resetEmergencyStop').map(
+    (tool) => tool.name,
+  ),
+);
 
 /** Whether `text` names a profile. */
 export function isToolProfile(text: string): text is ToolProfile {
