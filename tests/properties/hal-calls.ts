@@ -1,5 +1,6 @@
 import { fc } from '@fast-check/vitest';
-import type { HALToolResult, HardwareAbstractionLayer } from '@hal/types';
+import { callMethod, HAL_CALL_TABLE } from '@hal/types';
+import type { CallName, HALToolResult, HardwareAbstractionLayer } from '@hal/types';
 
 /*
  * Every public HAL call as data, for the property tests: how to make it, and arbitraries for
@@ -30,8 +31,19 @@ const outside = (min: number, max: number, far = 1e12) =>
 const inside = (min: number, max: number) =>
   fc.double({ min, max, noNaN: true, minExcluded: true, maxExcluded: true });
 
+/** Picks which of several argument positions is broken, the others being valid. */
+function oneBroken(valid: fc.Arbitrary<unknown>[], broken: fc.Arbitrary<unknown>[]) {
+  return fc
+    .nat({ max: valid.length - 1 })
+    .chain((i) => fc.tuple(...valid.map((v, k) => (k === i ? (broken[k] ?? v) : v))));
+}
+
+/** A required parameter: broken, or missing. */
+const orMissing = (broken: fc.Arbitrary<unknown>) => fc.oneof(broken, fc.constant(undefined));
+
 /** One public call: its name, whether it moves the robot, and how to invoke it. */
 export interface HalCall {
+  /** `subsystem.method`, e.g. `locomotion.drive`. */
   name: string;
   motion: boolean;
   /** Arguments that must be refused (empty for calls without arguments). */
@@ -44,19 +56,16 @@ export interface HalCall {
   returnsResult: boolean;
 }
 
-// The HAL methods are called with any arguments on purpose: that is what is under test.
-type AnyFn = (...args: unknown[]) => unknown;
-const call = (fn: unknown, self: unknown, args: unknown[]) => (fn as AnyFn).apply(self, args);
-
-/** Picks which of several argument positions is broken, the others being valid. */
-function oneBroken(valid: fc.Arbitrary<unknown>[], broken: fc.Arbitrary<unknown>[]) {
-  return fc
-    .nat({ max: valid.length - 1 })
-    .chain((i) => fc.tuple(...valid.map((v, k) => (k === i ? (broken[k] ?? v) : v))));
+/** The arbitraries of one call's arguments. */
+interface CallArguments {
+  invalid?: fc.Arbitrary<unknown[]>;
+  any: fc.Arbitrary<unknown[]>;
 }
 
-/** A required parameter: broken, or missing. */
-const orMissing = (broken: fc.Arbitrary<unknown>) => fc.oneof(broken, fc.constant(undefined));
+/** A call the random-call properties leave out, and why (another property covers it). */
+interface Exempt {
+  exempt: string;
+}
 
 const power = inside(-255, 255);
 const badPower = orMissing(outside(-255, 255));
@@ -67,34 +76,29 @@ const metres = inside(-1, 1);
 const badMetres = orMissing(outside(-1e7, 1e7, 1e15));
 const badColour = orMissing(outside(0, 255));
 const anyArg = fc.oneof(notANumber, fc.double(), fc.integer({ min: -300, max: 300 }));
+const noArguments: CallArguments = { any: fc.constant([]) };
 
-export const HAL_CALLS: HalCall[] = [
-  {
-    name: 'locomotion.drive',
-    motion: true,
-    returnsResult: true,
+/**
+ * The arguments of every call of the call table, by call name. The type asks for every call: a
+ * call added to the table needs its arbitraries here (or a reason to be left out), and then the
+ * properties make it on both HALs.
+ */
+export const CALL_ARGUMENTS: Readonly<Record<CallName, CallArguments | Exempt>> = {
+  drive: {
     invalid: oneBroken(
       [power, power, inside(0, 5000)],
       [badPower, badPower, outside(0, 1e9, 1e15)],
     ),
     any: fc.array(anyArg, { maxLength: 3 }),
-    run: (hal, a) => call(hal.locomotion.drive, hal.locomotion, a),
   },
-  {
-    name: 'locomotion.moveTo',
-    motion: true,
-    returnsResult: true,
+  moveTo: {
     invalid: oneBroken(
       [metres, metres, fc.constant(0), inside(0, 0.04)],
       [badMetres, badMetres, notANumber, outside(0, 1e3)],
     ),
     any: fc.array(anyArg, { maxLength: 4 }),
-    run: (hal, a) => call(hal.locomotion.moveTo, hal.locomotion, a),
   },
-  {
-    name: 'locomotion.rotate',
-    motion: true,
-    returnsResult: true,
+  rotate: {
     invalid: oneBroken(
       [fc.constantFrom('left', 'right'), degrees],
       [
@@ -106,28 +110,10 @@ export const HAL_CALLS: HalCall[] = [
       ],
     ),
     any: fc.tuple(fc.oneof(fc.constantFrom('left', 'right'), anyArg), anyArg),
-    run: (hal, a) => call(hal.locomotion.rotate, hal.locomotion, a),
   },
-  {
-    name: 'locomotion.moveForward',
-    motion: true,
-    returnsResult: true,
-    invalid: fc.tuple(badCm),
-    any: fc.tuple(anyArg),
-    run: (hal, a) => call(hal.locomotion.moveForward, hal.locomotion, a),
-  },
-  {
-    name: 'locomotion.moveBackward',
-    motion: true,
-    returnsResult: true,
-    invalid: fc.tuple(badCm),
-    any: fc.tuple(anyArg),
-    run: (hal, a) => call(hal.locomotion.moveBackward, hal.locomotion, a),
-  },
-  {
-    name: 'communication.setLED',
-    motion: false,
-    returnsResult: true,
+  moveForward: { invalid: fc.tuple(badCm), any: fc.tuple(anyArg) },
+  moveBackward: { invalid: fc.tuple(badCm), any: fc.tuple(anyArg) },
+  setLED: {
     invalid: oneBroken(
       [
         fc.integer({ min: 0, max: 255 }),
@@ -137,89 +123,29 @@ export const HAL_CALLS: HalCall[] = [
       [badColour, badColour, badColour],
     ),
     any: fc.array(anyArg, { maxLength: 4 }),
-    run: (hal, a) => call(hal.communication.setLED, hal.communication, a),
   },
-  {
-    name: 'communication.speak',
-    motion: false,
-    returnsResult: true,
+  speak: {
     any: fc.tuple(fc.oneof(fc.string({ maxLength: 600 }), anyArg), fc.option(fc.string())),
-    run: (hal, a) => call(hal.communication.speak, hal.communication, a),
   },
-  {
-    name: 'communication.playSound',
-    motion: false,
-    returnsResult: true,
-    any: fc.tuple(fc.oneof(fc.string({ maxLength: 120 }), anyArg)),
-    run: (hal, a) => call(hal.communication.playSound, hal.communication, a),
+  playSound: { any: fc.tuple(fc.oneof(fc.string({ maxLength: 120 }), anyArg)) },
+  stop: { any: fc.array(anyArg, { maxLength: 2 }) },
+  emergencyStop: {
+    exempt:
+      'it latches, and a latched HAL refuses motion before its arguments; the e-stop property ' +
+      'gives it any reason and resets it',
   },
-  {
-    name: 'locomotion.stop',
-    motion: false,
-    returnsResult: true,
-    any: fc.array(anyArg, { maxLength: 2 }),
-    run: (hal, a) => call(hal.locomotion.stop, hal.locomotion, a),
-  },
-  {
-    name: 'locomotion.getPose',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.locomotion.getPose(),
-  },
-  {
-    name: 'vision.getDistanceSensors',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.vision.getDistanceSensors(),
-  },
-  {
-    name: 'vision.scan',
-    motion: false,
-    returnsResult: false,
+  resetEmergencyStop: { any: fc.array(anyArg, { maxLength: 1 }) },
+  getPose: noArguments,
+  getDistanceSensors: noArguments,
+  scan: {
     any: fc.array(fc.oneof(fc.constantFrom('full', 'targeted', 'quick'), anyArg), { maxLength: 1 }),
-    run: (hal, a) => call(hal.vision.scan, hal.vision, a),
   },
-  {
-    name: 'vision.captureFrame',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.vision.captureFrame(),
-  },
-  {
-    name: 'vision.getLineSensors',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.vision.getLineSensors(),
-  },
-  {
-    name: 'vision.getIMU',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.vision.getIMU(),
-  },
-  {
-    name: 'safety.getSafetyStatus',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.safety.getSafetyStatus(),
-  },
-  {
-    name: 'safety.isEmergencyStopped',
-    motion: false,
-    returnsResult: false,
-    any: fc.constant([]),
-    run: (hal) => hal.safety.isEmergencyStopped(),
-  },
-  {
-    name: 'communication.log',
-    motion: false,
-    returnsResult: false,
+  captureFrame: noArguments,
+  getLineSensors: noArguments,
+  getIMU: noArguments,
+  getSafetyStatus: noArguments,
+  isEmergencyStopped: noArguments,
+  log: {
     any: fc.tuple(
       fc.oneof(fc.string({ maxLength: 300 }), anyArg),
       fc.oneof(
@@ -228,9 +154,30 @@ export const HAL_CALLS: HalCall[] = [
         anyArg,
       ),
     ),
-    run: (hal, a) => call(hal.communication.log, hal.communication, a),
   },
-];
+};
+
+/** The arguments of `name`: its arbitraries, its exemption, or undefined for a call left out. */
+export function callArguments(name: string): CallArguments | Exempt | undefined {
+  return (CALL_ARGUMENTS as Readonly<Record<string, CallArguments | Exempt>>)[name];
+}
+
+/** Every call of the call table the properties make, in the table's order. */
+export const HAL_CALLS: HalCall[] = HAL_CALL_TABLE.flatMap((spec): HalCall[] => {
+  const args = callArguments(spec.name);
+  if (args === undefined || 'exempt' in args) return [];
+  return [
+    {
+      name: `${spec.subsystem}.${spec.method}`,
+      motion: spec.kind === 'motion',
+      returnsResult: spec.kind === 'motion' || spec.kind === 'result',
+      ...(args.invalid === undefined ? {} : { invalid: args.invalid }),
+      any: args.any,
+      // the HAL methods are called with any arguments on purpose: that is what is under test
+      run: (hal, a) => callMethod(hal, spec, a),
+    },
+  ];
+});
 
 /** The calls that take arguments which can be invalid. */
 export const REFUSABLE_CALLS = HAL_CALLS.filter((c) => c.invalid !== undefined);
