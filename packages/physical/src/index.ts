@@ -2,6 +2,7 @@
 // given, calibration files, the camera reader). The wire protocol's pieces are in
 // @hal/physical/protocol; the in-process mock robot is in @hal/physical/testing.
 export { PhysicalHAL } from './hal/physical-hal.js';
+export { WireBinding } from './hal/wire-binding.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 export type { StartPose } from './pose-tracker.js';
 export { calibrationParams, robotCalibration } from './hal/calibration.js';

@@ -1,4 +1,5 @@
 export { SimulationHAL } from './hal/simulation-hal.js';
+export { WorldBinding } from './hal/world-binding.js';
 export type { CommunicationEvent, SimulationHALEvents } from './hal/events.js';
 export type {
   FrameSource,

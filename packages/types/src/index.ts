@@ -188,3 +188,15 @@ export { ControllerWatch } from './serving/controller-watch.js';
 export type { ControllerWatchOptions } from './serving/controller-watch.js';
 export { ServedCalls } from './serving/served-calls.js';
 export type { ServedCallsOptions } from './serving/served-calls.js';
+
+export type {
+  DriveDone,
+  EmergencyStopDone,
+  LedSetting,
+  LitLed,
+  MotionCommand,
+  MotionDone,
+  RobotPart,
+  RobotPort,
+  RobotSpeaker,
+} from './robot-port.js';

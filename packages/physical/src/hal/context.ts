@@ -1,14 +1,12 @@
-import type { HalBoundary, RobotConfig } from '@hal/types';
+import type { RobotConfig } from '@hal/types';
 import type { PoseTracker } from '../pose-tracker.js';
 import type { Command, ReplyOf, RequestParams } from '../protocol/schemas.js';
 import type { SafetyCommand, SafetyInterrupt } from '../safety-lane.js';
 import type { LinkTiming } from './link-timing.js';
 import type { SafetyCache } from './safety-cache.js';
 
-/** What a PhysicalHAL shares with its subsystems (locomotion, vision, communication, safety). */
+/** What running a motion over the wire session needs (the wire binding's parts). */
 export interface HalContext {
-  /** Readiness, e-stop gating, validation, timing and error-to-result conversion of each call. */
-  readonly boundary: HalBoundary;
   /** The robot configuration, as the robot last reported it. */
   robot(): RobotConfig;
   /** The host's dead reckoning of the pose. */

@@ -1,4 +1,5 @@
 import { HalError } from '@hal/types';
+import type { MotionDone } from '@hal/types';
 import type { MotionReply, ReplyOf, RequestParams, StatusReply } from '../protocol/schemas.js';
 import type { SafetyInterrupt } from '../safety-lane.js';
 import type { HalContext } from './context.js';
@@ -52,12 +53,6 @@ export function sendMotion<C extends MotionCommand>(
   params: RequestParams[C],
 ): Promise<ReplyOf<C>> {
   return unlessStopped(ctx, epoch, ctx.command(cmd, params));
-}
-
-/** The pose as result data: metres and radians. */
-export function poseData(ctx: HalContext): Record<string, number> {
-  const pose = ctx.tracker.pose();
-  return { x: pose.position.x, y: pose.position.y, yaw: pose.rotation.yaw };
 }
 
 function motionDetails(status: StatusReply): Record<string, unknown> {
@@ -153,12 +148,12 @@ async function pollMotion(
   }
 }
 
-/** Runs a `move_cm` or `rotate_deg` to completion; returns the result data. */
+/** Runs a `move_cm` or `rotate_deg` to completion. */
 export async function runMotion(
   ctx: HalContext,
   cmd: 'move_cm' | 'rotate_deg',
   params: RequestParams['move_cm'] | RequestParams['rotate_deg'],
-): Promise<Record<string, unknown>> {
+): Promise<MotionDone> {
   const epoch = ctx.safetyEpoch();
   const reply: MotionReply =
     cmd === 'move_cm'
@@ -171,6 +166,5 @@ export async function runMotion(
     leftSteps: status?.move_left_steps ?? reply.left_steps ?? 0,
     rightSteps: status?.move_right_steps ?? reply.right_steps ?? 0,
     plannedDurationMs: planned,
-    pose: poseData(ctx),
   };
 }

@@ -177,6 +177,10 @@ export class SimRobot {
   get emergencyStopReason(): string {
     return this.#model.emergencyStopReason;
   }
+  /** The robot's clock when the last emergency stop latched, µs. */
+  get emergencyStopUs(): number {
+    return this.#model.emergencyStopUs;
+  }
   get trips(): number {
     return this.#model.trips;
   }
