@@ -1,8 +1,15 @@
 import { describe, expect, it } from 'vitest';
 import { V1_ROBOT } from '../robot-config.js';
-import type { HardwareAbstractionLayer } from '../interfaces.js';
+import type {
+  CommunicationInterface,
+  HardwareAbstractionLayer,
+  LocomotionInterface,
+  ManipulationInterface,
+  SafetyInterface,
+  VisionInterface,
+} from '../interfaces.js';
 import { HAL_CALL_TABLE, MOTION_CALLS, findCall, motionCall } from './call-table.js';
-import type { CallSpec } from './call-table.js';
+import type { CallName, CallSpec } from './call-table.js';
 import { V1_CALL_SCHEMAS } from './calls.js';
 import { forwardCalls } from './forward-calls.js';
 import { argsFromObject, invokeCall } from './invoke-call.js';
@@ -17,7 +24,31 @@ function recordingHal(): { hal: HardwareAbstractionLayer; calls: [string, unknow
   return { hal: subsystems as unknown as HardwareAbstractionLayer, calls };
 }
 
+/** The methods of the four subsystems every HAL has. */
+type SubsystemMethod =
+  | keyof LocomotionInterface
+  | keyof VisionInterface
+  | keyof CommunicationInterface
+  | keyof SafetyInterface;
+type Equal<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false;
+// checked when this compiles: the table's calls are exactly the methods of the four subsystems
+const tableIsTheInterface: Equal<CallName, SubsystemMethod> = true;
+
 describe('HAL_CALL_TABLE', () => {
+  it('has every method of the four subsystems and none of the arm (see docs/architecture.md)', () => {
+    expect(tableIsTheInterface).toBe(true);
+    expect(HAL_CALL_TABLE.map((s) => s.subsystem)).not.toContain('manipulation');
+    // the arm's own methods; its moveTo shares the name of locomotion's
+    const arm: readonly Exclude<keyof ManipulationInterface, 'moveTo'>[] = [
+      'grasp',
+      'extend',
+      'retract',
+      'setPrecisionMode',
+      'getPosition',
+    ];
+    for (const method of arm) expect(HAL_CALL_TABLE.map((s) => s.method)).not.toContain(method);
+  });
+
   it('lists every call of the call schemas exactly once, with a unique tool name', () => {
     const names = HAL_CALL_TABLE.map((spec) => spec.name);
     expect([...names].sort()).toEqual(Object.keys(V1_CALL_SCHEMAS).sort());
