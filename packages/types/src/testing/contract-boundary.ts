@@ -1,18 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import type { HalErrorCode } from '../errors.js';
 import type { HardwareAbstractionLayer } from '../interfaces.js';
-import {
-  DistanceSensorsSchema,
-  IMUReadingSchema,
-  PoseSchema,
-  SafetyStatusSchema,
-  ScanResultSchema,
-} from '../pose.js';
+import { PoseSchema, SafetyStatusSchema, ScanResultSchema } from '../pose.js';
 import type { Pose } from '../pose.js';
 import type { HALToolResult } from '../result.js';
 import type { CallName, CallSpec } from '../schemas/call-table.js';
+import { invokeSpec } from '../schemas/invoke-call.js';
 import type { ContractContext } from './contract-expect.js';
 import { expectFailedResult, expectRejected, expectSucceeded, settle } from './contract-expect.js';
+import { sampledCalls } from './contract-samples.js';
 
 type Hal = HardwareAbstractionLayer;
 /** A bad call: what it is, the call, the code it must fail with, the parameter it must name. */
@@ -198,11 +194,16 @@ export function describeBoundaryContract(ctx: ContractContext): void {
 
     it('answers every read with a well-formed value or a HalError', { timeout }, async () => {
       const hal = await ctx.ready();
+      // every read of the table with its sample, and scan's full mode
       const reads: Array<[string, () => Promise<unknown>, { parse(v: unknown): unknown }]> = [
-        ['getPose', () => hal.locomotion.getPose(), PoseSchema],
-        ['getIMU', () => hal.vision.getIMU(), IMUReadingSchema],
-        ['getDistanceSensors', () => hal.vision.getDistanceSensors(), DistanceSensorsSchema],
-        ['scan', () => hal.vision.scan(), ScanResultSchema],
+        ...sampledCalls((spec) => spec.kind === 'value' && !spec.cached).map(
+          ([spec, args]) =>
+            [spec.name, () => invokeSpec(hal, spec, args), spec.data] as [
+              string,
+              () => Promise<unknown>,
+              { parse(v: unknown): unknown },
+            ],
+        ),
         ['scan full', () => hal.vision.scan('full'), ScanResultSchema],
       ];
       for (const [name, read, schema] of reads) {
