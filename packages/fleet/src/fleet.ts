@@ -1,4 +1,4 @@
-import { HalError, scoped, silentLogger } from '@hal/types';
+import { EstopLatch, HalError, sanitizeEstopReason, scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer, Logger, ScopedLogger } from '@hal/types';
 import type { FleetCommand } from './commands.js';
 import { LeaderFollower } from './leader-follower.js';
@@ -42,7 +42,8 @@ export class Fleet {
   readonly #callTimeoutMs: number;
   readonly #estopTimeoutMs: number;
   readonly #members = new Map<string, FleetMember>();
-  #estopped = false;
+  /** The fleet's own latch: set by emergencyStop(), cleared when every member's reset succeeds. */
+  readonly #latch = new EstopLatch();
   #formation: LeaderFollower | undefined;
 
   constructor(members: Iterable<FleetMember> = [], options: FleetOptions = {}) {
@@ -118,7 +119,7 @@ export class Fleet {
     const call = memberCallOf(command);
     const timeout = checkTimeout(timeoutMs, this.#callTimeoutMs);
     const isStop = typeof command !== 'function' && command.kind === 'stop';
-    if (this.#estopped && !isStop) {
+    if (this.#latch.latched && !isStop) {
       const error = new HalError(
         'EMERGENCY_STOPPED',
         'the fleet e-stop is latched; reset it with resetEmergencyStop()',
@@ -134,7 +135,7 @@ export class Fleet {
    * is stopped first). You drive the leader; `await formation.done` for the report.
    */
   async leaderFollower(options: LeaderFollowerOptions): Promise<LeaderFollower> {
-    if (this.#estopped) {
+    if (this.#latch.latched) {
       throw new HalError('EMERGENCY_STOPPED', 'the fleet e-stop is latched', {
         details: { fleet: true },
       });
@@ -154,7 +155,7 @@ export class Fleet {
 
   /** True while the fleet e-stop is latched. Synchronous, never throws. */
   isEmergencyStopped(): boolean {
-    return this.#estopped;
+    return this.#latch.latched;
   }
 
   /**
@@ -163,7 +164,7 @@ export class Fleet {
    * or silent member delays only its own entry (TIMEOUT) in the report. A running formation ends.
    */
   async emergencyStop(reason?: string): Promise<FleetReport> {
-    this.#estopped = true;
+    this.#latch.latch(sanitizeEstopReason(reason));
     const members = this.members;
     const report = runOnAll(
       'synchronized',
@@ -190,7 +191,7 @@ export class Fleet {
       this.#estopTimeoutMs,
       this.scheduler,
     );
-    if (report.success) this.#estopped = false;
+    if (report.success) this.#latch.reset();
     return report;
   }
 

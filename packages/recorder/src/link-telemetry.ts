@@ -1,3 +1,4 @@
+import type { SerialLinkStats, TransportStats } from '@hal/types';
 import type { LinkStats, WheelSteps } from './messages.js';
 
 /*
@@ -14,28 +15,6 @@ interface ReportedStepsLike {
   robotUptimeMs: number;
 }
 
-interface TransportStatsLike {
-  sent: number;
-  received: number;
-  timeouts: number;
-  retries: number;
-  dropped: number;
-  rttP50Ms: number;
-  rttP99Ms: number;
-}
-
-interface SerialLinkStatsLike {
-  framesSent: number;
-  framesReceived: number;
-  acksSent: number;
-  acksReceived: number;
-  frameRetries: number;
-  frameTimeouts: number;
-  checksumErrors: number;
-  resyncBytes: number;
-  duplicateFrames: number;
-}
-
 /** The readers a HAL offers, each bound to it; absent when it has none. */
 export interface LinkTelemetry {
   steps?: () => WheelSteps | undefined;
@@ -47,7 +26,7 @@ function method<R>(hal: object, name: string): (() => R) | undefined {
   return typeof fn === 'function' ? () => (fn as () => R).call(hal) : undefined;
 }
 
-function serialOf(s: SerialLinkStatsLike): NonNullable<LinkStats['serial']> {
+function serialOf(s: SerialLinkStats): NonNullable<LinkStats['serial']> {
   return {
     frames_sent: s.framesSent,
     frames_received: s.framesReceived,
@@ -64,8 +43,8 @@ function serialOf(s: SerialLinkStatsLike): NonNullable<LinkStats['serial']> {
 /** The step and link readers of `hal`, for those of PhysicalHAL's accessors it has. */
 export function linkTelemetry(hal: object): LinkTelemetry {
   const reportedSteps = method<ReportedStepsLike | undefined>(hal, 'reportedSteps');
-  const transportStats = method<TransportStatsLike | undefined>(hal, 'transportStats');
-  const serialStats = method<SerialLinkStatsLike | undefined>(hal, 'linkStats');
+  const transportStats = method<TransportStats | undefined>(hal, 'transportStats');
+  const serialStats = method<SerialLinkStats | undefined>(hal, 'linkStats');
   const out: LinkTelemetry = {};
   if (reportedSteps !== undefined) {
     out.steps = () => {

@@ -166,6 +166,8 @@ export type { Envelope, HalErrorPayload, SubjectParts } from './envelope.js';
 export { angleDifference, normalizeAngle } from './vocabulary/angle.js';
 export type { PlanarPose } from './vocabulary/planar-pose.js';
 export { TypedEmitter } from './vocabulary/typed-emitter.js';
+export { EstopLatch } from './vocabulary/estop-latch.js';
+export type { SerialLinkStats, TransportStats } from './link-stats.js';
 export type { ListenerErrorHandler } from './vocabulary/typed-emitter.js';
 export { scoped, silentLogger } from './vocabulary/logger.js';
 export { nextTurn } from './vocabulary/next-turn.js';

@@ -3,6 +3,7 @@
 // injected per call. Not exported; the end-to-end tests use SimulationHAL.
 import {
   CAPABILITIES,
+  EstopLatch,
   HalBoundary,
   HalError,
   motionCall,
@@ -61,7 +62,7 @@ export class FakeHAL implements HardwareAbstractionLayer {
   readonly boxes: Box[];
   readonly radius: number;
   #ready = false;
-  #estop = false;
+  readonly #estop = new EstopLatch();
   #rangeSensors: boolean;
   readonly #maxRange: number;
   readonly #boundary: HalBoundary;
@@ -85,7 +86,7 @@ export class FakeHAL implements HardwareAbstractionLayer {
     this.#boundary = new HalBoundary({
       mode: this.mode,
       config: () => V1_ROBOT,
-      isEmergencyStopped: () => this.#estop,
+      isEmergencyStopped: () => this.#estop.latched,
       isReady: () => this.#ready,
     });
     const b = this.#boundary;
@@ -165,15 +166,19 @@ export class FakeHAL implements HardwareAbstractionLayer {
     };
     this.safety = {
       emergencyStop: async () => {
-        this.#estop = true;
+        this.#estop.latch('emergency stop');
         return { success: true, timestamp: Date.now(), mode: this.mode };
       },
-      isEmergencyStopped: () => this.#estop,
+      isEmergencyStopped: () => this.#estop.latched,
       resetEmergencyStop: async () => {
-        this.#estop = false;
+        this.#estop.reset();
         return { success: true, timestamp: Date.now(), mode: this.mode };
       },
-      getSafetyStatus: () => ({ emergencyStopped: this.#estop, batteryLevel: 100, errors: [] }),
+      getSafetyStatus: () => ({
+        emergencyStopped: this.#estop.latched,
+        batteryLevel: 100,
+        errors: [],
+      }),
     };
   }
 
@@ -200,7 +205,7 @@ export class FakeHAL implements HardwareAbstractionLayer {
 
   /** Latches the emergency stop (as a person pressing the button would). */
   pressEmergencyStop(): void {
-    this.#estop = true;
+    this.#estop.latch('button');
   }
 
   /** Whether a disc of the robot's radius at (x, y) overlaps a box. */

@@ -1,4 +1,5 @@
 import { HalError, errorMessage } from '@hal/types';
+import type { TransportStats } from '@hal/types';
 import type { Logger } from '@hal/types';
 import type { DecodeResult, WireReply } from '../protocol/codec.js';
 
@@ -48,40 +49,8 @@ export function requestDefaults(options: RequestOptions): RequestOptions {
   return defaults;
 }
 
-/** Round-trip statistics every transport keeps. */
-export interface TransportStats {
-  /** Requests sent, retries included. */
-  sent: number;
-  /** Replies that answered a pending request. */
-  received: number;
-  /** Requests given up after every attempt. */
-  timeouts: number;
-  /** Resends of a request (same bytes, same `seq`). */
-  retries: number;
-  /** Inbound messages dropped: undecodable, failed MAC, or answering no pending request. */
-  dropped: number;
-  /** Median round trip of answered requests, ms (from the attempt that was answered). */
-  rttP50Ms: number;
-  /** 99th percentile round trip, ms. */
-  rttP99Ms: number;
-}
-
-/** Extra statistics of the serial link. */
-export interface SerialLinkStats {
-  framesSent: number;
-  framesReceived: number;
-  acksSent: number;
-  acksReceived: number;
-  /** Frames resent because their ACK did not come in time. */
-  frameRetries: number;
-  /** Frames given up after every attempt. */
-  frameTimeouts: number;
-  checksumErrors: number;
-  /** Bytes skipped while hunting for a frame (garbage, bad headers). */
-  resyncBytes: number;
-  /** Duplicate DATA frames (same link seq) acknowledged but not delivered again. */
-  duplicateFrames: number;
-}
+// the link's statistics are part of the contract: the recorder reads them from any HAL by shape
+export type { SerialLinkStats, TransportStats } from '@hal/types';
 
 /**
  * A link to the robot. It sends one encoded request and resolves with the reply that echoes its

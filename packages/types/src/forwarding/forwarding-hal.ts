@@ -19,6 +19,7 @@ import type { CallName } from '../schemas/calls.js';
 import { forwardCalls } from '../schemas/forward-calls.js';
 import { objectFromArgs } from '../schemas/invoke-call.js';
 import { HalBoundary } from '../validation.js';
+import { EstopLatch } from '../vocabulary/estop-latch.js';
 import type { ScopedLogger } from '../vocabulary/logger.js';
 
 /**
@@ -93,7 +94,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
   readonly #log: ScopedLogger;
   #initialized = false;
   /** The host's latch (its sanitized reason): set by emergencyStop() before anything is sent. */
-  #latch: string | undefined;
+  readonly #latch = new EstopLatch();
   /** The pending e-stop being sent to the served HAL, if one is on its way. */
   #delivering: Promise<void> | undefined;
 
@@ -108,7 +109,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
       },
       config: () => V1_ROBOT, // unused: validateParams is off
       validateParams: false,
-      isEmergencyStopped: () => this.#latch !== undefined,
+      isEmergencyStopped: () => this.#latch.latched,
       isReady: () => this.#initialized,
       calls: this.#calls,
     });
@@ -163,7 +164,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
 
   /** The subclass's link is back: an e-stop the served HAL has not confirmed is sent again. */
   protected linkRestored(): void {
-    if (this.#policy === 'until-served' && this.isReady() && this.#latch !== undefined) {
+    if (this.#policy === 'until-served' && this.isReady() && this.#latch.latched) {
       void this.#deliverPending().catch((e: unknown) => {
         this.#log.warn('e-stop not delivered', { error: String(e) });
       });
@@ -176,7 +177,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
     try {
       await this.open();
       // an e-stop latched while not connected: the served HAL latches too before we are ready
-      if (this.#latch !== undefined) await this.#deliverPending();
+      if (this.#latch.latched) await this.#deliverPending();
     } catch (error) {
       this.#initialized = false;
       await this.close().catch(() => undefined);
@@ -211,10 +212,11 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
     if (served.emergencyStopReason !== undefined) {
       status.emergencyStopReason = sanitizeEstopReason(served.emergencyStopReason);
     }
-    if (this.#latch !== undefined) {
+    const held = this.#latch.reason;
+    if (held !== undefined) {
       status.emergencyStopped = true;
       if (!served.emergencyStopped || status.emergencyStopReason === undefined) {
-        status.emergencyStopReason = this.#latch;
+        status.emergencyStopReason = held;
       }
     }
     return status;
@@ -279,7 +281,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
   async #emergencyStop(reason: unknown): Promise<HALToolResult> {
     const started = Date.now();
     const stored = sanitizeEstopReason(reason);
-    this.#latch = stored;
+    this.#latch.latch(stored);
     const undelivered = () =>
       successResult(
         this.mode,
@@ -316,12 +318,12 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
 
   /** The served HAL holds the stop of `reason`: under `until-served` the host lets go of it. */
   #served(reason: string): void {
-    if (this.#policy === 'until-served' && this.#latch === reason) this.#latch = undefined;
+    if (this.#policy === 'until-served') this.#latch.release(reason);
   }
 
   /** Sends the host's latch to the served HAL (one send at a time); rejects unless it took it. */
   #deliverPending(): Promise<void> {
-    const reason = this.#latch;
+    const reason = this.#latch.reason;
     if (reason === undefined) return Promise.resolve();
     this.#delivering ??= (async () => {
       try {
@@ -349,7 +351,7 @@ export abstract class ForwardingHAL implements HardwareAbstractionLayer {
   async #resetEmergencyStop(): Promise<HALToolResult> {
     if (this.#delivering !== undefined) await this.#delivering.catch(() => undefined);
     const result = await this.#result(specOf(this.#calls, 'resetEmergencyStop'), []);
-    if (result.success) this.#latch = undefined;
+    if (result.success) this.#latch.reset();
     return result;
   }
 }
