@@ -4,15 +4,11 @@
 import { spawn } from 'node:child_process';
 import type { ChildProcess } from 'node:child_process';
 import { existsSync } from 'node:fs';
-import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { builtEmulatorPath } from '@hal/cli/emulator';
 import { readEventLines } from './event-lines.js';
 
 /** The emulator binary: `$CUBE_BUILD_DIR/cube-emulator` when that is set (as for test.sh). */
-export const EMULATOR_PATH =
-  process.env['CUBE_BUILD_DIR'] !== undefined
-    ? join(process.env['CUBE_BUILD_DIR'], 'cube-emulator')
-    : fileURLToPath(new URL('../../firmware/build/cube-emulator', import.meta.url));
+export const EMULATOR_PATH = builtEmulatorPath();
 
 /** One line the emulator printed. */
 export type EmulatorEvent = Record<string, unknown> & { event: string };

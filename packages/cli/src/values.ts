@@ -3,6 +3,7 @@
 // input with the one usage error (`CliError` USAGE, exit 2) and a message that names the option,
 // so every command refuses bad input the same way. Output places are in output-place.ts.
 import { isIPv6 } from 'node:net';
+import { DEFAULT_UDP_PORT } from '@hal/physical';
 import { CliError } from './cli-error.js';
 
 /** The usage error every parser throws. */
@@ -153,9 +154,6 @@ export function angleArg(name: string, range: NumberRange = {}) {
   return quantityArg(name, 'angle', range);
 }
 
-/** The UDP port a robot listens on when an address gives none (protocol section 2). */
-export const DEFAULT_ROBOT_UDP_PORT = 4210;
-
 /** A host and port, the host without the brackets an IPv6 address is written in. */
 export interface HostPort {
   host: string;
@@ -186,8 +184,8 @@ export function readHostPort(text: string, defaultPort: number): HostPort | unde
   return n >= 1 && n <= 65_535 ? { host, port: n } : undefined;
 }
 
-/** `HOST[:PORT]` or `[IPV6][:PORT]` (port 1..65535, default {@link DEFAULT_ROBOT_UDP_PORT}). */
-export function hostPortArg(name: string, defaultPort = DEFAULT_ROBOT_UDP_PORT) {
+/** `HOST[:PORT]` or `[IPV6][:PORT]` (port 1..65535, default `DEFAULT_UDP_PORT`, the robot's (protocol section 2)). */
+export function hostPortArg(name: string, defaultPort = DEFAULT_UDP_PORT) {
   return (value: string): HostPort => {
     const parsed = readHostPort(value, defaultPort);
     if (parsed === undefined) {

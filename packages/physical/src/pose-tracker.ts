@@ -1,6 +1,6 @@
 import { MovePlan, OdometryIntegrator, VelocityPlan } from '@hal/kinematics';
 import type { StepPlan } from '@hal/kinematics';
-import { normalizeAngle } from '@hal/types';
+import { normalizeAngle, stepsPerCm } from '@hal/types';
 import type { Pose, RobotConfig } from '@hal/types';
 import type { Command, MotionReply, StatusReply } from './protocol/schemas.js';
 
@@ -243,7 +243,7 @@ export class PoseTracker {
       }
     }
     const moving = p !== undefined || this.#leftSps !== 0 || this.#rightSps !== 0;
-    const perCm = this.#config.stepsPerRevolution / (Math.PI * this.#config.wheelDiameterCm);
+    const perCm = stepsPerCm(this.#config);
     const vl = leftSps / perCm / 100;
     const vr = rightSps / perCm / 100;
     return {

@@ -1,4 +1,5 @@
 // `hal emulate`'s options, and the cube-emulator flags they become.
+import { DEFAULT_UDP_PORT } from '@hal/physical';
 import { Option } from 'commander';
 import type { Command } from 'commander';
 import { ipv4Arg } from '../discover/options.js';
@@ -37,7 +38,7 @@ export function addEmulateOptions(command: Command): Command {
     .addOption(
       new Option('--udp-port <port>', 'UDP port (0 = a free one)')
         .argParser(portArg('--udp-port', { anyFree: true }))
-        .default(4210),
+        .default(DEFAULT_UDP_PORT),
     )
     .addOption(
       new Option(

@@ -1,12 +1,10 @@
 // The cube-emulator the tests run (built by `bash firmware/scripts/test.sh`, or in $CUBE_BUILD_DIR).
 import { existsSync } from 'node:fs';
-import { join } from 'node:path';
-import { findFirmwareDir } from './locate-emulator.js';
+import { builtEmulatorPath as buildPath } from './emulator-build.js';
 
+/** The built cube-emulator; throws, saying how to build it, when there is none. */
 export function builtEmulatorPath(): string {
-  const firmware = findFirmwareDir();
-  if (firmware === undefined) throw new Error('not inside the repository: no firmware/ folder');
-  const path = join(process.env['CUBE_BUILD_DIR'] ?? join(firmware, 'build'), 'cube-emulator');
+  const path = buildPath();
   if (!existsSync(path)) {
     throw new Error(
       `cube-emulator not found at ${path}: build it with "bash firmware/scripts/test.sh"`,

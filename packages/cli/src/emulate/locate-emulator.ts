@@ -4,9 +4,9 @@
 // does for the benchmarks.
 import { spawn } from 'node:child_process';
 import { accessSync, constants, existsSync } from 'node:fs';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { join, resolve } from 'node:path';
 import { CliError } from '../cli-error.js';
+import { EMULATOR_NAME, emulatorBuildDir, findFirmwareDir } from './emulator-build.js';
 
 export interface LocateOptions {
   /** --emulator PATH. */
@@ -24,16 +24,6 @@ function checkExecutable(path: string, from: string): string {
     throw new CliError('NOT_FOUND', `${from}: ${path} is not an executable cube-emulator`);
   }
   return path;
-}
-
-/** The repository's firmware folder, when this package runs from a checkout. */
-export function findFirmwareDir(
-  start = dirname(fileURLToPath(import.meta.url)),
-): string | undefined {
-  for (let dir = start; ; dir = dirname(dir)) {
-    if (existsSync(join(dir, 'firmware', 'CMakeLists.txt'))) return join(dir, 'firmware');
-    if (dirname(dir) === dir) return undefined;
-  }
 }
 
 function run(command: string, args: string[], signal: AbortSignal): Promise<void> {
@@ -72,7 +62,7 @@ export async function locateEmulator(options: LocateOptions): Promise<string> {
         "repository's firmware/ with cmake, see docs/firmware.md)",
     );
   }
-  const buildDir = options.env['CUBE_BUILD_DIR'] ?? join(firmware, 'build');
+  const buildDir = emulatorBuildDir(options.env, firmware);
   options.onBuild?.(buildDir);
   if (!existsSync(join(buildDir, 'CMakeCache.txt'))) {
     await run(
@@ -82,10 +72,6 @@ export async function locateEmulator(options: LocateOptions): Promise<string> {
     );
   }
   const jobs = options.env['CUBE_JOBS'] ?? '2';
-  await run(
-    'cmake',
-    ['--build', buildDir, '--target', 'cube-emulator', '-j', jobs],
-    options.signal,
-  );
-  return checkExecutable(join(buildDir, 'cube-emulator'), 'the build');
+  await run('cmake', ['--build', buildDir, '--target', EMULATOR_NAME, '-j', jobs], options.signal);
+  return checkExecutable(join(buildDir, EMULATOR_NAME), 'the build');
 }
