@@ -9,8 +9,11 @@ import { TOOL_CATALOG } from './catalog.js';
 import { robotConfigOf } from './robot-config.js';
 import { halTools } from './tools.js';
 
-/** JSON-representable samples per call, valid and invalid; each side decides which is which. */
-const SAMPLES: Record<string, unknown[]> = {
+/**
+ * JSON-representable samples per call, valid and invalid; each side decides which is which. The
+ * type asks for every call of the table.
+ */
+const SAMPLES: Record<CallName, unknown[]> = {
   moveForward: [
     { distanceCm: 10 },
     { distanceCm: 188.4 },
