@@ -17,6 +17,7 @@
 #include "emulator_io.h"
 #include "frame.h"
 #include "host_hal.h"
+#include "settings.h"
 
 namespace {
 
@@ -113,8 +114,9 @@ bool ParseArgs(int argc, char** argv, Options* o) {
       if (v == nullptr) return false;
       char* end = nullptr;
       o->host_timeout_ms = std::strtol(v, &end, 10);
-      if (*end != '\0' || o->host_timeout_ms < 500 ||
-          o->host_timeout_ms > 10000) {
+      const double ms = static_cast<double>(o->host_timeout_ms);
+      if (*end != '\0' || ms < cube::kHostTimeoutMs.min ||
+          ms > cube::kHostTimeoutMs.max) {
         std::fprintf(stderr,
                      "cube-emulator: --host-timeout-ms must be 500..10000\n");
         return false;

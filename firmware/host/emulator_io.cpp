@@ -317,18 +317,7 @@ void EventLog::CheckConfig() {
   w.BeginObject();
   w.Key("event");
   w.String("config");
-  w.Key("wheel_diameter_cm");
-  w.Double(c.geometry.wheel_diameter_cm);
-  w.Key("wheel_base_cm");
-  w.Double(c.geometry.wheel_base_cm);
-  w.Key("steps_per_revolution");
-  w.Int(static_cast<int64_t>(c.geometry.steps_per_revolution));
-  w.Key("max_speed_steps_per_s");
-  w.Int(c.max_speed_sps);
-  w.Key("acceleration_steps_per_s2");
-  w.Int(c.accel_sps2);
-  w.Key("host_timeout_ms");
-  w.Int(c.host_timeout_ms);
+  WriteConfigFields(w, c);  // as the config reply writes them
   w.Key("t_ms");
   w.Uint(cube_.uptime_ms());
   Emit(w, buf);

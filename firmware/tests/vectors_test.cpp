@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "harness.h"
 #include "kinematics.h"
+#include "settings.h"
 
 namespace cube::testing {
 namespace {
@@ -139,6 +141,108 @@ TEST(KinematicsVectors, RobotMatchesTheFirmwareDefaults) {
             defaults.max_speed_sps);
   EXPECT_EQ(v["robot"]["acceleration_steps_per_s2"].get<int64_t>(),
             defaults.accel_sps2);
+}
+
+// settings.json ------------------------------------------------------------
+
+json Settings() {
+  const std::string text = ReadVectorFile("settings.json");
+  return text.empty() ? json() : json::parse(text);
+}
+
+#define REQUIRE_SETTINGS(v)                                          \
+  const json v = Settings();                                         \
+  if (v.is_null()) {                                                 \
+    GTEST_FAIL() << "cannot read " << VectorPath("settings.json");   \
+  }
+
+// The robot's value at boot of the field named `wire`.
+double BootValue(const std::string& wire) {
+  const CubeConfig c;
+  if (wire == "wheel_diameter_cm") return c.geometry.wheel_diameter_cm;
+  if (wire == "wheel_base_cm") return c.geometry.wheel_base_cm;
+  if (wire == "steps_per_revolution") return c.geometry.steps_per_revolution;
+  if (wire == "max_speed_steps_per_s") return c.max_speed_sps;
+  if (wire == "acceleration_steps_per_s2") return c.accel_sps2;
+  if (wire == "host_timeout_ms") return c.host_timeout_ms;
+  if (wire == "max_steps_per_command") return kMaxStepsPerCommand;
+  ADD_FAILURE() << "no boot value for " << wire;
+  return 0;
+}
+
+TEST(SettingsVectors, TheTableIsSettingsH) {
+  REQUIRE_SETTINGS(v);
+  std::vector<json> rows;
+  for (const json& s : v["settings"])
+    if (s["set_by"] == "set_config") rows.push_back(s);
+  ASSERT_EQ(rows.size(), sizeof(kSettings) / sizeof(kSettings[0]));
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Setting& s = *kSettings[i];
+    EXPECT_EQ(rows[i]["wire"].get<std::string>(), s.wire);
+    EXPECT_EQ(rows[i]["min"].get<double>(), s.min) << s.wire;
+    EXPECT_EQ(rows[i]["max"].get<double>(), s.max) << s.wire;
+    EXPECT_EQ(rows[i]["integer"].get<bool>(), s.integer) << s.wire;
+    EXPECT_EQ(rows[i]["unit"].get<std::string>(), s.unit) << s.wire;
+  }
+}
+
+TEST(SettingsVectors, DefaultsAndWireTypesAreTheRobots) {
+  REQUIRE_SETTINGS(v);
+  Device d;
+  const json config = d.Send({{"cmd", "set_config"}})["config"];
+  for (const json& s : v["settings"]) {
+    if (s["wire"].is_null()) continue;
+    const std::string wire = s["wire"].get<std::string>();
+    EXPECT_EQ(s["default"].get<double>(), BootValue(wire)) << wire;
+    EXPECT_EQ(config[wire].get<double>(), s["default"].get<double>()) << wire;
+  }
+  // A double the robot keeps is written as one: a fraction survives.
+  Device boot;
+  CubeConfig fractional;
+  fractional.geometry.steps_per_revolution = 4075.5;
+  boot.cube->Configure(fractional);
+  const json kept = boot.Send({{"cmd", "set_config"}})["config"];
+  EXPECT_EQ(kept["steps_per_revolution"], 4075.5);
+}
+
+// Each set_config field takes its min and max and refuses just outside
+// them with RANGE_EXCEEDED, naming the range as the table has it.
+TEST(SettingsVectors, TheRobotTakesExactlyTheRanges) {
+  REQUIRE_SETTINGS(v);
+  for (const json& s : v["settings"]) {
+    if (s["set_by"] != "set_config") continue;
+    const std::string wire = s["wire"].get<std::string>();
+    for (const char* edge : {"min", "max"}) {
+      Device d;
+      const json r = d.Send({{"cmd", "set_config"}, {wire, s[edge]}});
+      EXPECT_EQ(r["ok"], true) << wire << " " << edge << ": " << r.dump();
+      EXPECT_EQ(r["config"][wire], s[edge]) << wire;
+    }
+    for (const json& out : s["refused"]) {
+      Device d;
+      const json r = d.Send({{"cmd", "set_config"}, {wire, out}});
+      EXPECT_EQ(r["error"]["code"], "RANGE_EXCEEDED") << wire << " " << out;
+      EXPECT_EQ(r["error"]["message"], s["range_message"]) << wire;
+    }
+  }
+}
+
+// The speed ceiling: 2048 steps/s is the top speed set_config takes, and a
+// faster request runs at it.
+TEST(SettingsVectors, TheSpeedCeiling) {
+  REQUIRE_SETTINGS(v);
+  const int64_t ceiling = v["speed_ceiling_steps_per_s"].get<int64_t>();
+  EXPECT_EQ(static_cast<int64_t>(kMaxSpeedStepsPerS.max), ceiling);
+  Device d;
+  const json set =
+      d.Send({{"cmd", "set_config"}, {"max_speed_steps_per_s", ceiling}});
+  ASSERT_EQ(set["ok"], true);
+  const json m = d.Send({{"cmd", "move_steps"},
+                         {"left", 4000},
+                         {"right", 4000},
+                         {"speed", ceiling * 2}});
+  EXPECT_EQ(m["speed"], ceiling);
+  EXPECT_EQ(m["speed_clamped"], true);
 }
 
 // protocol-messages.json ---------------------------------------------------

@@ -1,82 +1,41 @@
 import { z } from 'zod';
 import { CameraModelSchema } from './camera-model.js';
+import { ROBOT_SETTINGS } from './robot-settings.js';
+import type { RobotSetting, RobotSettingKey } from './robot-settings.js';
+
+export { ROBOT_SETTINGS, robotSetting, settingRangeText } from './robot-settings.js';
+export type { RobotSetting, RobotSettingKey, SettingCommand } from './robot-settings.js';
 
 /**
- * The robot's geometry and the limits every layer enforces. Defaults are the V1 stepper cube:
- * 28BYJ-48 steppers (4096 half-steps per revolution), 6 cm wheels, 10 cm wheel base.
- * Every limit the validation layer applies is read from here, never from a literal elsewhere.
+ * A setting's schema: its row's range, whole numbers or not and default; its description, wire
+ * name, unit, wire type, command and whether `min` is excluded are the schema's metadata
+ * (`.meta()`): with the range, the whole row, which is how other packages read the table.
  */
-export const RobotConfigSchema = z.object({
-  stepsPerRevolution: z
-    .number()
-    .int()
-    .min(1)
-    .max(1_000_000)
-    .default(4096)
-    .describe(
-      'Motor steps per wheel revolution (28BYJ-48 half-step: 4096 nominal, ~4076 measured)',
-    ),
-  wheelDiameterCm: z.number().gt(0).max(100).default(6).describe('Wheel diameter, cm'),
-  wheelBaseCm: z
-    .number()
-    .gt(0)
-    .max(200)
-    .default(10)
-    .describe('Distance between the wheel contact points, cm'),
-  maxSpeedStepsPerS: z
-    .number()
-    .int()
-    .min(1)
-    .max(2048)
-    .default(1024)
-    .describe('Top wheel speed, steps/s (1..2048); the firmware clamps every command to it'),
-  minSpeedStepsPerS: z
-    .number()
-    .int()
-    .min(1)
-    .max(2048)
-    .default(64)
-    .describe(
-      'Slowest cruise speed a call may ask for, steps/s (1..2048, never above the top speed); ' +
-        'slower requests are refused rather than run for hours',
-    ),
-  accelerationStepsPerS2: z
-    .number()
-    .int()
-    .min(1)
-    .max(100_000)
-    .default(512)
-    .describe('Wheel acceleration of the trapezoidal profile, steps/s^2'),
-  maxStepsPerCommand: z
-    .number()
-    .int()
-    .min(1)
-    .max(40_960)
-    .default(40_960)
-    .describe('Most steps one wheel may make in one command; the firmware refuses more'),
-  hostTimeoutMs: z
-    .number()
-    .int()
-    .min(500)
-    .max(10_000)
-    .default(2000)
-    .describe(
-      'Motors stop when the robot hears nothing from its host for this long, ms (500..10000)',
-    ),
-  maxDriveDurationMs: z
-    .number()
-    .int()
-    .min(1)
-    .max(600_000)
-    .default(60_000)
-    .describe('Longest duration one drive() call may ask for, ms'),
-  workspaceHalfExtentM: z
-    .number()
-    .gt(0)
-    .max(1000)
-    .default(50)
-    .describe('moveTo targets must lie within +/- this many metres of the origin on x and y'),
-});
+function settingSchema(s: RobotSetting) {
+  let n = z.number();
+  if (s.integer) n = n.int();
+  n = s.minExclusive ? n.gt(s.min) : n.min(s.min);
+  return n.max(s.max).default(s.default).meta({
+    description: s.description,
+    wire: s.wire,
+    unit: s.unit,
+    minExclusive: s.minExclusive,
+    wireType: s.wireType,
+    setBy: s.setBy,
+  });
+}
+
+/**
+ * The robot's geometry and the limits every layer enforces, built from {@link ROBOT_SETTINGS}
+ * (ranges, defaults, descriptions). Defaults are the V1 stepper cube: 28BYJ-48 steppers (4096
+ * half-steps per revolution), 6 cm wheels, 10 cm wheel base. Every limit the validation layer
+ * applies is read from here, never from a literal elsewhere.
+ */
+export const RobotConfigSchema = z.object(
+  Object.fromEntries(ROBOT_SETTINGS.map((s) => [s.key, settingSchema(s)])) as {
+    [K in RobotSettingKey]: ReturnType<typeof settingSchema>;
+  },
+);
 
 /** The robot's geometry and limits (see {@link RobotConfigSchema}). */
 export type RobotConfig = z.infer<typeof RobotConfigSchema>;

@@ -35,12 +35,17 @@ enum class AuthMode : uint8_t {
 // "unconfigured", "hmac-sha256", "none" (the last two are hello's `auth`).
 const char* AuthModeName(AuthMode m);
 
+// The settings at boot; set_config's ranges are in settings.h.
 struct CubeConfig {
   Geometry geometry;
   int64_t max_speed_sps = 1024;
   int64_t accel_sps2 = 512;
   int64_t host_timeout_ms = 2000;
 };
+
+// Writes the six set_config fields of `c` as keys and values of the object
+// being written, each as the config reply carries it (settings.h's names).
+void WriteConfigFields(JsonWriter& w, const CubeConfig& c);
 
 enum class LedPattern : uint8_t { kOff, kSolid, kBlink, kPulse };
 const char* LedPatternName(LedPattern p);

@@ -4,24 +4,38 @@
 #include "cube.h"
 #include "reply.h"
 #include "request_fields.h"
+#include "settings.h"
 #include "text.h"
 
 namespace cube {
+namespace {
+
+// A whole-number setting, read with its row's range and unit.
+Got GetSettingInt(Reply& r, const Setting& s, int64_t* out) {
+  return GetInt(r, s.wire, static_cast<int64_t>(s.min),
+                static_cast<int64_t>(s.max), s.unit, out);
+}
+
+}  // namespace
+
+void WriteConfigFields(JsonWriter& w, const CubeConfig& c) {
+  w.Key(kWheelDiameterCm.wire);
+  w.Double(c.geometry.wheel_diameter_cm);
+  w.Key(kWheelBaseCm.wire);
+  w.Double(c.geometry.wheel_base_cm);
+  w.Key(kStepsPerRevolution.wire);
+  w.Double(c.geometry.steps_per_revolution);
+  w.Key(kMaxSpeedStepsPerS.wire);
+  w.Int(c.max_speed_sps);
+  w.Key(kAccelerationStepsPerS2.wire);
+  w.Int(c.accel_sps2);
+  w.Key(kHostTimeoutMs.wire);
+  w.Int(c.host_timeout_ms);
+}
 
 void Cube::WriteConfig(JsonWriter& w) const {
   w.BeginObject();
-  w.Key("wheel_diameter_cm");
-  w.Double(config_.geometry.wheel_diameter_cm);
-  w.Key("wheel_base_cm");
-  w.Double(config_.geometry.wheel_base_cm);
-  w.Key("steps_per_revolution");
-  w.Double(config_.geometry.steps_per_revolution);
-  w.Key("max_speed_steps_per_s");
-  w.Int(config_.max_speed_sps);
-  w.Key("acceleration_steps_per_s2");
-  w.Int(config_.accel_sps2);
-  w.Key("host_timeout_ms");
-  w.Int(config_.host_timeout_ms);
+  WriteConfigFields(w, config_);
   w.Key("max_steps_per_command");
   w.Int(kMaxStepsPerCommand);
   w.EndObject();
@@ -175,23 +189,25 @@ void Cube::CmdSetConfig(Reply& r) {
   CubeConfig next = config_;
   double d = 0;
   int64_t i = 0;
-  Got g = GetRangedNumber(r, "wheel_diameter_cm", 0.5, 50, "cm", &d);
+  Got g = GetRangedNumber(r, kWheelDiameterCm.wire, kWheelDiameterCm.min,
+                          kWheelDiameterCm.max, kWheelDiameterCm.unit, &d);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.geometry.wheel_diameter_cm = d;
-  g = GetRangedNumber(r, "wheel_base_cm", 1, 100, "cm", &d);
+  g = GetRangedNumber(r, kWheelBaseCm.wire, kWheelBaseCm.min, kWheelBaseCm.max,
+                      kWheelBaseCm.unit, &d);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.geometry.wheel_base_cm = d;
-  g = GetInt(r, "steps_per_revolution", 100, 100000, "steps", &i);
+  g = GetSettingInt(r, kStepsPerRevolution, &i);
   if (g == Got::kError) return;
   if (g == Got::kOk)
     next.geometry.steps_per_revolution = static_cast<double>(i);
-  g = GetInt(r, "max_speed_steps_per_s", 1, 2048, "steps/s", &i);
+  g = GetSettingInt(r, kMaxSpeedStepsPerS, &i);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.max_speed_sps = i;
-  g = GetInt(r, "acceleration_steps_per_s2", 1, 100000, "steps/s^2", &i);
+  g = GetSettingInt(r, kAccelerationStepsPerS2, &i);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.accel_sps2 = i;
-  g = GetInt(r, "host_timeout_ms", 500, 10000, "ms", &i);
+  g = GetSettingInt(r, kHostTimeoutMs, &i);
   if (g == Got::kError) return;
   if (g == Got::kOk) next.host_timeout_ms = i;
 

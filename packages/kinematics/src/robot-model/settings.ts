@@ -1,4 +1,4 @@
-import { HalError } from '@hal/types';
+import { HalError, RobotConfigSchema } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 
 /** The fields of the robot's configuration that `set_config` changes on the robot. */
@@ -19,52 +19,50 @@ export interface FirmwareSetting {
   max: number;
   integer: boolean;
   unit: string;
+  /** The robot's value at boot. */
+  default: number;
+  /** How the firmware writes it in its `config` reply (`double`: a double, no fraction when whole). */
+  wireType: 'int' | 'double';
+}
+
+/**
+ * Every field `set_config` takes, read from the one settings table (`ROBOT_SETTINGS` in
+ * `@hal/types`, which `RobotConfigSchema` is built from and carries as each field's metadata):
+ * the rows `set_config` sets, in the order the firmware writes them.
+ */
+function firmwareSettings(): FirmwareSetting[] {
+  const rows: FirmwareSetting[] = [];
+  for (const [key, field] of Object.entries(RobotConfigSchema.shape)) {
+    const meta = field.meta();
+    if (meta?.['setBy'] !== 'set_config') continue;
+    const { wire, unit, wireType } = meta;
+    const number = field.unwrap();
+    const { minValue, maxValue } = number;
+    if (
+      typeof wire !== 'string' ||
+      typeof unit !== 'string' ||
+      (wireType !== 'int' && wireType !== 'double') ||
+      minValue === null ||
+      maxValue === null
+    ) {
+      throw new TypeError(`the settings table's row "${key}" lacks its wire name, unit or range`);
+    }
+    rows.push({
+      key: key as FirmwareSettingKey,
+      field: wire,
+      min: minValue,
+      max: maxValue,
+      integer: number.isInt,
+      unit,
+      default: field.def.defaultValue,
+      wireType,
+    });
+  }
+  return rows;
 }
 
 /** Every field `set_config` takes and its range, as the firmware (cube_commands.cpp) checks it. */
-export const FIRMWARE_SETTINGS: readonly FirmwareSetting[] = Object.freeze([
-  {
-    key: 'wheelDiameterCm',
-    field: 'wheel_diameter_cm',
-    min: 0.5,
-    max: 50,
-    integer: false,
-    unit: 'cm',
-  },
-  { key: 'wheelBaseCm', field: 'wheel_base_cm', min: 1, max: 100, integer: false, unit: 'cm' },
-  {
-    key: 'stepsPerRevolution',
-    field: 'steps_per_revolution',
-    min: 100,
-    max: 100_000,
-    integer: true,
-    unit: 'steps',
-  },
-  {
-    key: 'maxSpeedStepsPerS',
-    field: 'max_speed_steps_per_s',
-    min: 1,
-    max: 2048,
-    integer: true,
-    unit: 'steps/s',
-  },
-  {
-    key: 'accelerationStepsPerS2',
-    field: 'acceleration_steps_per_s2',
-    min: 1,
-    max: 100_000,
-    integer: true,
-    unit: 'steps/s^2',
-  },
-  {
-    key: 'hostTimeoutMs',
-    field: 'host_timeout_ms',
-    min: 500,
-    max: 10_000,
-    integer: true,
-    unit: 'ms',
-  },
-]);
+export const FIRMWARE_SETTINGS: readonly FirmwareSetting[] = Object.freeze(firmwareSettings());
 
 /**
  * Throws unless `value` is what the robot takes for `setting`: INVALID_PARAMETER for a

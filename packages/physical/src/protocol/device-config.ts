@@ -1,10 +1,13 @@
 import { FIRMWARE_SETTINGS } from '@hal/kinematics';
-import { robotConfig } from '@hal/types';
+import { robotConfig, V1_ROBOT } from '@hal/types';
 import type { RobotConfig } from '@hal/types';
 import type { DeviceConfig } from './schemas.js';
 
-/** The most steps one wheel may make in one command: fixed by protocol 1.0 (section 5.1). */
-export const MAX_STEPS_PER_COMMAND = 40_960;
+/**
+ * The most steps one wheel may make in one command: fixed in the firmware, reported by `hello`
+ * (protocol 1.1 section 5.1); the settings table's `maxStepsPerCommand` default.
+ */
+export const MAX_STEPS_PER_COMMAND = V1_ROBOT.maxStepsPerCommand;
 
 /** The configuration `set_config` may change: every {@link DeviceConfig} field but the fixed limit. */
 export type DeviceSettings = Omit<DeviceConfig, 'max_steps_per_command'>;
@@ -47,12 +50,12 @@ export function deviceGeometry(
  * the protocol does not carry.
  */
 export function robotConfigFromDevice(base: RobotConfig, c: DeviceConfig): RobotConfig {
+  const reported = Object.fromEntries(
+    FIRMWARE_SETTINGS.map(({ key, field }) => [key, c[field as keyof DeviceSettings]]),
+  );
   return robotConfig({
     ...base,
-    ...deviceGeometry(c),
-    maxSpeedStepsPerS: c.max_speed_steps_per_s,
-    accelerationStepsPerS2: c.acceleration_steps_per_s2,
-    hostTimeoutMs: c.host_timeout_ms,
+    ...reported,
     maxStepsPerCommand: Math.min(
       base.maxStepsPerCommand,
       c.max_steps_per_command ?? MAX_STEPS_PER_COMMAND,
@@ -60,14 +63,13 @@ export function robotConfigFromDevice(base: RobotConfig, c: DeviceConfig): Robot
   });
 }
 
-/** The device settings of a robot configuration, in the order the device writes them. */
+/**
+ * The device settings of a robot configuration, from the settings table: every field `set_config`
+ * sets, in the order the firmware writes them. Each is a JSON number, as the firmware writes it
+ * (`steps_per_revolution` is a double there, written without a fraction when it has none).
+ */
 export function deviceSettingsOf(robot: RobotConfig): DeviceSettings {
-  return {
-    wheel_diameter_cm: robot.wheelDiameterCm,
-    wheel_base_cm: robot.wheelBaseCm,
-    steps_per_revolution: robot.stepsPerRevolution,
-    max_speed_steps_per_s: robot.maxSpeedStepsPerS,
-    acceleration_steps_per_s2: robot.accelerationStepsPerS2,
-    host_timeout_ms: robot.hostTimeoutMs,
-  };
+  return Object.fromEntries(
+    FIRMWARE_SETTINGS.map(({ key, field }) => [field, robot[key]]),
+  ) as DeviceSettings;
 }
