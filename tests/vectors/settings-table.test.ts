@@ -72,7 +72,7 @@ describe('the settings table', () => {
   });
 });
 
-describe("the firmware's C++", () => {
+describe("the firmware's C++ and the emulators' flags", () => {
   it('settings.h has the set_config rows, in order, with the same ranges and units', () => {
     const source = read(`${core}settings.h`).replace(/\s+/g, ' ');
     const rows = [
@@ -121,6 +121,13 @@ describe("the firmware's C++", () => {
     expect(source).toContain(`--host-timeout-ms must be ${range(host)}`);
     expect(source).toContain(`host timeout, ${range(host)} (default ${host.default})`);
     expect(source).toContain(`long host_timeout_ms = ${host.default};`);
+  });
+
+  it("hal emulate's --host-timeout-ms takes the host timeout's range", () => {
+    const source = read('packages/cli/src/emulate/emulate-options.ts').replace(/_/g, '');
+    const host = table.find((r) => r.key === 'hostTimeoutMs');
+    expect(source).toContain(`'--host-timeout-ms <ms>', 'host timeout, ${host?.min}..${host?.max}'`);
+    expect(source).toContain(`integerArg('--host-timeout-ms', ${host?.min}, ${host?.max})`);
   });
 });
 

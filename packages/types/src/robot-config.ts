@@ -1,6 +1,6 @@
 import { z } from 'zod';
 import { CameraModelSchema } from './camera-model.js';
-import { ROBOT_SETTINGS } from './robot-settings.js';
+import { ROBOT_SETTINGS, settingRangeText } from './robot-settings.js';
 import type { RobotSetting, RobotSettingKey } from './robot-settings.js';
 
 export { ROBOT_SETTINGS, robotSetting, settingRangeText } from './robot-settings.js';
@@ -15,14 +15,17 @@ function settingSchema(s: RobotSetting) {
   let n = z.number();
   if (s.integer) n = n.int();
   n = s.minExclusive ? n.gt(s.min) : n.min(s.min);
-  return n.max(s.max).default(s.default).meta({
-    description: s.description,
-    wire: s.wire,
-    unit: s.unit,
-    minExclusive: s.minExclusive,
-    wireType: s.wireType,
-    setBy: s.setBy,
-  });
+  return n
+    .max(s.max)
+    .default(s.default)
+    .meta({
+      description: `${s.description}. Range ${settingRangeText(s)} ${s.unit}`,
+      wire: s.wire,
+      unit: s.unit,
+      minExclusive: s.minExclusive,
+      wireType: s.wireType,
+      setBy: s.setBy,
+    });
 }
 
 /**

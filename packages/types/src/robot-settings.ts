@@ -35,8 +35,12 @@ export interface RobotSetting {
    */
   readonly wireType: 'int' | 'double' | null;
   readonly setBy: SettingCommand;
+  /** What it is; the schema's description adds the range and unit. */
   readonly description: string;
 }
+
+/** The top wheel speed `set_config` takes, steps/s (the firmware's `kMaxSpeedStepsPerS.max`). */
+const SPEED_CEILING_STEPS_PER_S = 2048;
 
 /** Every setting of the robot, in the order the firmware writes its `config` object. */
 export const ROBOT_SETTINGS = Object.freeze([
@@ -51,7 +55,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     integer: false,
     wireType: 'double',
     setBy: 'set_config',
-    description: 'Wheel diameter, cm (0.5..50)',
+    description: 'Wheel diameter',
   },
   {
     key: 'wheelBaseCm',
@@ -64,7 +68,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     integer: false,
     wireType: 'double',
     setBy: 'set_config',
-    description: 'Distance between the wheel contact points, cm (1..100)',
+    description: 'Distance between the wheel contact points',
   },
   {
     key: 'stepsPerRevolution',
@@ -79,7 +83,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     wireType: 'double',
     setBy: 'set_config',
     description:
-      'Motor steps per wheel revolution, 100..100000 (28BYJ-48 half-step: 4096 nominal, ~4076 measured)',
+      'Motor steps per wheel revolution (28BYJ-48 half-step: 4096 nominal, ~4076 measured)',
   },
   {
     key: 'maxSpeedStepsPerS',
@@ -88,11 +92,11 @@ export const ROBOT_SETTINGS = Object.freeze([
     default: 1024,
     min: 1,
     minExclusive: false,
-    max: 2048,
+    max: SPEED_CEILING_STEPS_PER_S,
     integer: true,
     wireType: 'int',
     setBy: 'set_config',
-    description: 'Top wheel speed, steps/s (1..2048); the firmware clamps every command to it',
+    description: 'Top wheel speed; the firmware clamps every command to it',
   },
   {
     key: 'accelerationStepsPerS2',
@@ -105,7 +109,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     integer: true,
     wireType: 'int',
     setBy: 'set_config',
-    description: 'Wheel acceleration of the trapezoidal profile, steps/s^2 (1..100000)',
+    description: 'Wheel acceleration of the trapezoidal profile',
   },
   {
     key: 'hostTimeoutMs',
@@ -118,8 +122,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     integer: true,
     wireType: 'int',
     setBy: 'set_config',
-    description:
-      'Motors stop when the robot hears nothing from its host for this long, ms (500..10000)',
+    description: 'Motors stop when the robot hears nothing from its host for this long',
   },
   {
     key: 'maxStepsPerCommand',
@@ -133,7 +136,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     wireType: 'int',
     setBy: 'hello',
     description:
-      'Most steps one wheel may make in one command; the firmware refuses more (fixed at 40960, reported by hello)',
+      'Most steps one wheel may make in one command; the firmware refuses more (its own limit, reported by hello)',
   },
   {
     key: 'minSpeedStepsPerS',
@@ -142,12 +145,12 @@ export const ROBOT_SETTINGS = Object.freeze([
     default: 64,
     min: 1,
     minExclusive: false,
-    max: 2048,
+    max: SPEED_CEILING_STEPS_PER_S,
     integer: true,
     wireType: null,
     setBy: 'none',
     description:
-      'Slowest cruise speed a call may ask for, steps/s (1..2048, never above the top speed); ' +
+      'Slowest cruise speed a call may ask for (never above the top speed); ' +
       'slower requests are refused rather than run for hours',
   },
   {
@@ -161,7 +164,7 @@ export const ROBOT_SETTINGS = Object.freeze([
     integer: true,
     wireType: null,
     setBy: 'none',
-    description: 'Longest duration one drive() call may ask for, ms',
+    description: 'Longest duration one drive() call may ask for',
   },
   {
     key: 'workspaceHalfExtentM',
