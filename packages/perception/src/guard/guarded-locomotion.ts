@@ -1,12 +1,9 @@
 import {
   failureResult,
   HalBoundary,
-  HalError,
-  isHalError,
   maxLinearSpeedMPerS,
   normalizeAngle,
   V1_ROBOT,
-  errorMessage,
 } from '@hal/types';
 import type {
   CallName,
@@ -17,7 +14,14 @@ import type {
   ScopedLogger,
 } from '@hal/types';
 import type { GuardSettings } from './guard-settings.js';
-import type { GuardRecord, GuardStop } from './guard-status.js';
+import {
+  blindResult,
+  blindTripResult,
+  cancelledResult,
+  obstacleResult,
+  reverseRefusal,
+} from './guard-outcomes.js';
+import type { GuardRecord } from './guard-status.js';
 import { combineLegs } from './legs.js';
 import type { LegPlan } from './legs.js';
 import type { Sight, Sighting } from './sighting.js';
@@ -36,8 +40,6 @@ export interface GuardContext {
 
 /** A leg shorter than this, metres, is the rest of the motion (rounding). */
 const REST_M = 1e-4;
-
-const round = (v: number, places = 3) => Math.round(v * 10 ** places) / 10 ** places;
 
 /**
  * The guard's locomotion: forward motions (moveForward, moveTo, drive with positive wheel power)
@@ -326,17 +328,7 @@ export class GuardedLocomotion implements LocomotionInterface {
   }
 
   async #reverse(motion: string, run: () => Promise<HALToolResult>): Promise<HALToolResult> {
-    if (this.#ctx.settings.reverse === 'refuse') {
-      return failureResult(
-        this.#ctx.hal.mode,
-        Date.now(),
-        new HalError(
-          'NOT_IMPLEMENTED',
-          `${motion}: the guard cannot see behind the robot and refuses a reverse: turn and drive forward`,
-          { details: { guard: 'reverse' } },
-        ),
-      );
-    }
+    if (this.#ctx.settings.reverse === 'refuse') return reverseRefusal(this.#ctx, motion);
     const message = 'the guard cannot see behind the robot: a reverse passes unwatched';
     if (!this.#reverseSaid) {
       this.#reverseSaid = true;
@@ -346,6 +338,7 @@ export class GuardedLocomotion implements LocomotionInterface {
     return run();
   }
 
+  /** How far the robot went since `start`, metres (0 when a pose cannot be read). */
   async #travelled(start: Pose | undefined): Promise<number> {
     if (start === undefined) return 0;
     const now = await this.#hal.getPose().catch(() => undefined);
@@ -359,69 +352,20 @@ export class GuardedLocomotion implements LocomotionInterface {
     when: 'before' | 'during',
     start: Pose | undefined,
   ): Promise<HALToolResult> {
-    const { standoffM } = this.#ctx.settings;
-    const travelledM = when === 'before' ? 0 : round(await this.#travelled(start));
-    const stop: GuardStop = {
-      motion,
-      distanceM: round(seen.aheadM),
-      source: seen.source,
-      atEdge: seen.atEdge,
-      when,
-      travelledM,
-      at: Date.now(),
-    };
-    this.#ctx.record.obstacle(stop);
-    const ahead = `${seen.atEdge ? 'at most ' : ''}${stop.distanceM} m ahead (${seen.source})`;
-    const done = when === 'before' ? 'refused, nothing moved' : `stopped after ${travelledM} m`;
-    const message = `${motion}: ${done}: an obstacle ${ahead}; the guard stops ${standoffM} m short of what it sees`;
-    this.#ctx.log.info(message, { ...stop });
-    return failureResult(
-      this.#ctx.hal.mode,
-      Date.now(),
-      new HalError('OBSTACLE_AHEAD', message, {
-        details: {
-          distanceM: stop.distanceM,
-          source: stop.source,
-          atEdge: stop.atEdge,
-          standoffM,
-          when,
-          travelledM,
-        },
-      }),
-    );
+    const travelledM = when === 'before' ? 0 : await this.#travelled(start);
+    return obstacleResult(this.#ctx, motion, seen, when, travelledM);
   }
 
   async #blind(motion: string, results: HALToolResult[], error: unknown): Promise<HALToolResult> {
-    const why = errorMessage(error);
-    const moved = results.length > 0 ? 'stopped' : 'refused';
-    const message = `${motion}: ${moved} rather than drive blind: the guard cannot see ahead (${why})`;
-    this.#ctx.record.blind(motion, message);
-    this.#ctx.log.warn(message);
-    const code = isHalError(error) ? error.code : 'HARDWARE_ERROR';
-    return failureResult(
-      this.#ctx.hal.mode,
-      Date.now(),
-      new HalError(code, message, { details: { guard: 'blind' }, cause: error }),
-    );
+    return blindResult(this.#ctx, motion, results.length > 0, error);
   }
 
   async #tripped(motion: string, trip: Trip, start: Pose | undefined): Promise<HALToolResult> {
     if (trip.kind === 'obstacle') return this.#obstacle(motion, trip.sighting, 'during', start);
-    const message = `${motion}: stopped rather than drive blind: the guard saw nothing for ${trip.sinceMs} ms`;
-    this.#ctx.record.blind(motion, message);
-    this.#ctx.log.warn(message);
-    return failureResult(
-      this.#ctx.hal.mode,
-      Date.now(),
-      new HalError('TIMEOUT', message, { details: { guard: 'blind', sinceMs: trip.sinceMs } }),
-    );
+    return blindTripResult(this.#ctx, motion, trip.sinceMs);
   }
 
   #cancelled(motion: string): HALToolResult {
-    return failureResult(
-      this.#ctx.hal.mode,
-      Date.now(),
-      new HalError('INTERRUPTED', `${motion}: stopped before it started`),
-    );
+    return cancelledResult(this.#ctx, motion);
   }
 }
