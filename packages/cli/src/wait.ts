@@ -1,18 +1,5 @@
-// Waiting that ends early when the command is aborted (Ctrl-C), so no loop outlives its command.
-
-/** Resolves after `ms`, or at once when `signal` is (or becomes) aborted. */
-export function sleep(ms: number, signal: AbortSignal): Promise<void> {
-  if (signal.aborted) return Promise.resolve();
-  return new Promise((resolve) => {
-    const done = (): void => {
-      clearTimeout(timer);
-      signal.removeEventListener('abort', done);
-      resolve();
-    };
-    const timer = setTimeout(done, ms);
-    signal.addEventListener('abort', done, { once: true });
-  });
-}
+// Waiting for the command to be aborted (Ctrl-C). A pause that ends early on it is @hal/types'
+// `delay(ms, signal)`, so no loop outlives its command.
 
 /** Resolves when `signal` is aborted. */
 export function aborted(signal: AbortSignal): Promise<void> {

@@ -1,7 +1,7 @@
 // One DNS-SD publication, as both announcers make it (the emulated cube's `_hal-cube._udp` and a
 // NATS gateway's `_tafynode._tcp`): published without a probe, resolved once the first
 // announcement went out, and stopped with a best-effort goodbye before the socket closes.
-import { HalError } from '@hal/types';
+import { deadline, HalError } from '@hal/types';
 import { openMdns } from './mdns-socket.js';
 import type { MdnsOptions } from './mdns-socket.js';
 
@@ -36,26 +36,21 @@ export async function publishService(service: {
     txt: service.txt,
     probe: false,
   });
-  let timer: NodeJS.Timeout | undefined;
   try {
-    await Promise.race([
-      mdns.failed,
-      new Promise<void>((resolve) => published.once('up', () => resolve())),
-      new Promise<never>((_, reject) => {
-        timer = setTimeout(
-          () =>
-            reject(
-              new HalError('TIMEOUT', `the announcement did not go out in ${service.timeoutMs} ms`),
-            ),
-          service.timeoutMs,
-        );
-      }),
-    ]);
+    await deadline(
+      Promise.race([
+        mdns.failed,
+        new Promise<void>((resolve) => published.once('up', () => resolve())),
+      ]),
+      service.timeoutMs,
+      () =>
+        new HalError('TIMEOUT', `the announcement did not go out in ${service.timeoutMs} ms`, {
+          details: { timeoutMs: service.timeoutMs },
+        }),
+    );
   } catch (error) {
     await mdns.close();
     throw error;
-  } finally {
-    clearTimeout(timer);
   }
   let stopped: Promise<void> | undefined;
   return {

@@ -1,7 +1,7 @@
 // A NATS gateway as the Tafy HAL spec's driver announces itself: DNS-SD `_tafynode._tcp` with
 // `device_id` and `caps` in the TXT record, on the NATS server's port (where the node is reached).
 // The cube itself keeps `_hal-cube._udp` (service.ts).
-import { HalError, parseCapability } from '@hal/types';
+import { HalError, parseCapability, raceTimer } from '@hal/types';
 import { z } from 'zod';
 import { openMdns } from './mdns-socket.js';
 import type { MdnsOptions } from './mdns-socket.js';
@@ -133,7 +133,8 @@ export async function discoverTafyNodes(
     });
   });
   try {
-    await Promise.race([mdns.failed, new Promise((resolve) => setTimeout(resolve, timeoutMs))]);
+    // listens for `timeoutMs`; a failed socket ends it early
+    await raceTimer(mdns.failed, timeoutMs, () => undefined);
   } finally {
     browser.stop();
     await mdns.close();

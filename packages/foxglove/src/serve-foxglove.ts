@@ -8,7 +8,7 @@ import { FoxgloveServer, ServerCapability } from './ws-protocol.js';
 import type { ServiceCallRequest } from '@foxglove/ws-protocol';
 import { checkBinding, refuseUpgrade } from '@hal/remote/server';
 import { createToolExecutor, robotConfigOf, toolBackedHal } from '@hal/tools';
-import { HalError, scoped, silentLogger, trustedOrigin } from '@hal/types';
+import { HalError, scoped, silentLogger, trustedOrigin, withTimeout } from '@hal/types';
 import type { HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import { WebSocketServer } from 'ws';
 import type { WebSocket } from 'ws';
@@ -228,10 +228,10 @@ export async function serveFoxglove(
         const open = [...viewers.keys()];
         for (const ws of open) ws.close(1001, 'server closing');
         // a viewer that does not answer the close (a stalled one) is cut off after a moment
-        await Promise.race([
+        await withTimeout(
           Promise.all(open.map((ws) => new Promise((resolve) => ws.once('close', resolve)))),
-          new Promise((resolve) => setTimeout(resolve, CLOSE_GRACE_MS)),
-        ]);
+          CLOSE_GRACE_MS,
+        );
         for (const ws of wss.clients) ws.terminate();
         await new Promise<void>((resolve) => wss.close(() => resolve()));
         await new Promise<void>((resolve) => {

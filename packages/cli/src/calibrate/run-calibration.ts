@@ -3,7 +3,7 @@
 // link alive with heartbeats while the user measures); then the new geometry is sent to the
 // robot and returned. Ctrl-C during a motion stops the robot.
 import type { PhysicalHAL } from '@hal/physical';
-import { HalError } from '@hal/types';
+import { HalError, withTimeout } from '@hal/types';
 import type { HALToolResult } from '@hal/types';
 import { z } from 'zod';
 import { CliError } from '../cli-error.js';
@@ -58,12 +58,13 @@ async function motion(
     aborted(io.signal).then(() => 'interrupted' as const),
   ]);
   if (first === 'interrupted') {
-    let timer: NodeJS.Timeout | undefined;
-    const stopped = await Promise.race([
+    const stopped = await withTimeout(
       hal.locomotion.stop().then((r) => r.success),
-      new Promise<false>((resolve) => (timer = setTimeout(() => resolve(false), STOP_WAIT_MS))),
-    ]).catch(() => false);
-    clearTimeout(timer);
+      STOP_WAIT_MS,
+    ).then(
+      (answer) => answer?.value === true,
+      () => false,
+    );
     throw new CliError(
       'FAILED',
       stopped

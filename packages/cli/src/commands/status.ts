@@ -1,6 +1,7 @@
 // `hal status`: one robot's identity, capabilities, pose, safety state and health; `--watch`
 // streams updates at a rate until Ctrl-C.
 import { Command, Option } from 'commander';
+import { delay } from '@hal/types';
 import { positiveArg } from '../values.js';
 import { CliError } from '../cli-error.js';
 import { emit } from '../io.js';
@@ -8,7 +9,6 @@ import { readStatus, statusLine, statusText } from '../status/snapshot.js';
 import { addTargetOptions, resolveTarget } from '../target.js';
 import type { TargetCliOptions } from '../target.js';
 import { withTarget } from '../target-hal.js';
-import { sleep } from '../wait.js';
 import type { RegisterCommand } from './context.js';
 
 interface StatusOptions extends TargetCliOptions {
@@ -44,7 +44,7 @@ export const registerStatus: RegisterCommand = (program, { io, global }) => {
         if (!options.watch) return;
         const periodMs = 1000 / options.rate;
         for (;;) {
-          await sleep(periodMs, io.signal);
+          await delay(periodMs, io.signal);
           if (io.signal.aborted) return;
           const next = await readStatus(hal, deviceId);
           emit(io, global(), next, () => statusLine(next));

@@ -1,13 +1,13 @@
 // Runs one `hal drive` action: live pose on stderr while a motion runs, and Ctrl-C during a
 // motion stops the robot before the command ends. An open-ended `wheels` drive runs until Ctrl-C.
-import { HalError, isHalError, toHalError } from '@hal/types';
+import { delay, HalError, isHalError, toHalError, withTimeout } from '@hal/types';
 import type { HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { CliError } from '../cli-error.js';
 import { progress } from '../io.js';
 import type { CliIO, GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
 import { resultError } from '../result-error.js';
-import { aborted, sleep } from '../wait.js';
+import { aborted } from '../wait.js';
 import { callFor, isMotion } from './actions.js';
 import type { DriveAction } from './actions.js';
 
@@ -32,7 +32,7 @@ async function livePose(
 ): Promise<void> {
   if (global.json) return;
   while (!done.aborted) {
-    await sleep(LIVE_POSE_MS, done);
+    await delay(LIVE_POSE_MS, done);
     if (done.aborted) return;
     const pose = await hal.locomotion.getPose().catch(() => undefined);
     if (pose !== undefined && !done.aborted) progress(io, global, `  ${poseText(pose, true)}`);
@@ -44,17 +44,14 @@ async function livePose(
  * (the HAL's own, or TIMEOUT after STOP_WAIT_MS). A stop is never claimed unconfirmed.
  */
 async function stopRobot(hal: HardwareAbstractionLayer): Promise<HalError | undefined> {
-  let timer: NodeJS.Timeout | undefined;
-  const result = await Promise.race([
+  const answer = await withTimeout(
     hal.locomotion.stop().catch((error: unknown) => toHalError(error)),
-    new Promise<undefined>(
-      (resolve) => (timer = setTimeout(() => resolve(undefined), STOP_WAIT_MS)),
-    ),
-  ]);
-  clearTimeout(timer);
-  if (result === undefined) {
+    STOP_WAIT_MS,
+  );
+  if (answer === undefined) {
     return new HalError('TIMEOUT', `the robot did not confirm the stop within ${STOP_WAIT_MS} ms`);
   }
+  const result = answer.value;
   if (isHalError(result)) return result;
   return result.success ? undefined : resultError(result);
 }
@@ -79,7 +76,7 @@ export async function runDrive(
     if (first === 'interrupted') {
       const unstopped = await stopRobot(hal);
       if (unstopped !== undefined) throw unstopped;
-      await Promise.race([call.catch(() => undefined), sleep(STOP_WAIT_MS, done.signal)]);
+      await Promise.race([call.catch(() => undefined), delay(STOP_WAIT_MS, done.signal)]);
       throw new CliError('FAILED', 'interrupted: the robot was stopped', 130);
     }
     if (!first.success) throw resultError(first);

@@ -1,10 +1,11 @@
 // Keyboard driving: each key becomes one HAL call, made in order; a live pose line on stderr.
 // A drive key sets an open-ended drive that runs until the next key (space stops it).
+import { delay } from '@hal/types';
 import type { HalErrorCode, HALToolResult, HardwareAbstractionLayer, Pose } from '@hal/types';
 import { emit, progress } from '../io.js';
 import type { GlobalOptions } from '../io.js';
 import { poseText } from '../pose-text.js';
-import { aborted, sleep } from '../wait.js';
+import { aborted } from '../wait.js';
 import { parseKeys } from './keys.js';
 import type { TeleopKey } from './keys.js';
 import type { StatusLineIO } from './status-line.js';
@@ -111,7 +112,7 @@ export async function runTeleop(
       if (pose !== undefined && !lineDone.signal.aborted) {
         io.showLine(`${poseText(pose)}  ${status}${estop}${link}`);
       }
-      await sleep(POSE_LINE_MS, lineDone.signal);
+      await delay(POSE_LINE_MS, lineDone.signal);
     }
   })();
 
