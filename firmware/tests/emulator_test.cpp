@@ -336,6 +336,12 @@ TEST(Emulator, PrintsAConfigEventOnlyWhenSetConfigChangesTheConfiguration) {
   EXPECT_DOUBLE_EQ(c["wheel_base_cm"].get<double>(), 10.49);
   EXPECT_EQ(c["steps_per_revolution"], 4096);
   EXPECT_EQ(c["host_timeout_ms"], 2000);
+  // the event carries the reply's config, written the same way (one writer)
+  json fields = r["config"];
+  fields.erase("max_steps_per_command");
+  for (auto it = fields.begin(); it != fields.end(); ++it)
+    EXPECT_EQ(c[it.key()], it.value()) << it.key();
+  EXPECT_EQ(c.size(), fields.size() + 2) << c.dump();  // + event, t_ms
   // a refused set_config changes nothing, and so prints nothing
   r = json::parse(e.Udp(R"({"cmd":"set_config","wheel_base_cm":0})"));
   EXPECT_EQ(r["ok"], false);

@@ -3,7 +3,7 @@ import { CameraModelSchema } from './camera-model.js';
 import { ROBOT_SETTINGS, settingRangeText } from './robot-settings.js';
 import type { RobotSetting, RobotSettingKey } from './robot-settings.js';
 
-export { ROBOT_SETTINGS, robotSetting, settingRangeText } from './robot-settings.js';
+export { ROBOT_SETTINGS, settingRangeText } from './robot-settings.js';
 export type { RobotSetting, RobotSettingKey, SettingCommand } from './robot-settings.js';
 
 /**

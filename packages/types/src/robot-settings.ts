@@ -4,8 +4,15 @@
  * `@hal/physical`'s config reply are read from it, and a test holds the firmware's C++ (its
  * `settings.h` and defaults), tests/vectors/settings.json and the docs' tables to it.
  *
- * The ranges of the fields the robot keeps are the firmware's (cube_commands.cpp): the robot is
+ * The ranges of the fields the robot keeps are the firmware's (its settings.h): the robot is
  * what enforces them, so the host refuses what the robot would.
+ *
+ * To add a setting: a row here (a host-only limit needs nothing else). One the robot keeps also
+ * needs its row in the firmware's settings.h, its boot value in `CubeConfig`, its read in
+ * `CmdSetConfig` and its write in `WriteConfigFields`, its name in vectors_test.cpp's `BootValue`
+ * and settings-table.test.ts' C++ names, its field in `@hal/physical`'s `DeviceConfigSchema`, and
+ * its row in docs/protocol.md section 5.10; then regenerate tests/vectors/settings.json
+ * (tests/vectors/settings-vectors.ts). The tests name whatever is missing.
  */
 
 /**
@@ -183,13 +190,6 @@ export const ROBOT_SETTINGS = Object.freeze([
 
 /** The name of a setting in the host's robot configuration. */
 export type RobotSettingKey = (typeof ROBOT_SETTINGS)[number]['key'];
-
-/** The row of the setting named `key`. */
-export function robotSetting(key: RobotSettingKey): RobotSetting {
-  const row = ROBOT_SETTINGS.find((s) => s.key === key);
-  if (row === undefined) throw new TypeError(`no robot setting "${key}"`);
-  return row;
-}
 
 /** A setting's range as the docs and error messages write it: `0.5..50`, `(0, 1000]`. */
 export function settingRangeText(s: Pick<RobotSetting, 'min' | 'max' | 'minExclusive'>): string {
