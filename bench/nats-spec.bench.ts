@@ -13,6 +13,7 @@ import type { Readable, Writable } from 'node:stream';
 import { fileURLToPath } from 'node:url';
 import { connect } from '@nats-io/transport-node';
 import type { NatsConnection } from '@nats-io/transport-node';
+import { delay } from '@hal/types';
 import { startEmulator } from '../tests/physical/emulator.js';
 import type { Emulator } from '../tests/physical/emulator.js';
 import { startNatsServer } from '../tests/nats/nats-server.js';
@@ -140,7 +141,7 @@ async function gateway(url: string): Promise<void> {
     if (built) {
       const b = await startup(nc, announceSubject, startBuiltGateway(url));
       starts.built.push(b.ms);
-      await new Promise((resolve) => setTimeout(resolve, 1000)); // serving, streaming at 20 Hz
+      await delay(1000); // serving, streaming at 20 Hz
       builtRss = Math.max(builtRss, rssBytes(b.child.pid ?? 0));
       await stop(b.child);
     }

@@ -8,6 +8,7 @@ import type { HalGateway } from '@hal/nats';
 import { PhysicalHAL } from '@hal/physical';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { delay } from '@hal/types';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { startNatsServer } from '../tests/nats/nats-server.js';
 import { percentile, reportFigure } from './report/figures.js';
@@ -104,7 +105,7 @@ async function stateRate(url: string, count: number): Promise<number> {
     robots.push({ hal, gateway });
   }
   const watcher = await openConnection({ servers: url });
-  await new Promise((resolve) => setTimeout(resolve, 500));
+  await delay(500);
   let received = 0;
   const sub = watcher.subscribe('hal.v1.dev.*.motor.differential.state', {
     callback: () => {
@@ -112,7 +113,7 @@ async function stateRate(url: string, count: number): Promise<number> {
     },
   });
   const seconds = 2;
-  await new Promise((resolve) => setTimeout(resolve, seconds * 1000));
+  await delay(seconds * 1000);
   sub.unsubscribe();
   for (const { hal, gateway } of robots) {
     await gateway.close();

@@ -10,6 +10,7 @@
 // GUARD_TRIALS=N sets the number of trials (default 30).
 import { guardHal } from '@hal/perception';
 import { SimulationHAL, World } from '@hal/simulation';
+import { delay } from '@hal/types';
 import { percentile, reportFigure } from './report/figures.js';
 
 const TRIALS = Number(process.env.GUARD_TRIALS ?? 30);
@@ -22,14 +23,12 @@ interface Trial {
   code: string;
 }
 
-const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
-
 /** Waits until `done()` or `timeoutMs`, polling every millisecond; the time it held, or undefined. */
 async function until(done: () => boolean, timeoutMs: number): Promise<number | undefined> {
   const limit = performance.now() + timeoutMs;
   while (performance.now() < limit) {
     if (done()) return performance.now();
-    await sleep(1);
+    await delay(1);
   }
   return undefined;
 }
@@ -63,7 +62,7 @@ async function trial(index: number): Promise<Trial | undefined> {
     const motion = guarded.locomotion.moveForward(150);
     // The obstacle appears while the robot drives: after 0.4..1.2 s, 0.25..0.45 m ahead.
     await until(() => robot.running, 5000);
-    await sleep(400 + ((index * 277) % 800));
+    await delay(400 + ((index * 277) % 800));
     const ahead = 0.25 + ((index * 0.061) % 0.2);
     obstacleX = robot.x + BODY_RADIUS_M + ahead + BODY_RADIUS_M;
     world.addRobot({ start: { x: obstacleX, y: 0, yaw: Math.PI } });

@@ -16,6 +16,7 @@ import { AGENT_EVENT, McapRecorder, readRecordingFile, recordHal, TOPICS } from 
 import type { RecorderStats } from '@hal/recorder';
 import { SimulationHAL } from '@hal/simulation';
 import { createToolExecutor, halTools } from '@hal/tools';
+import { delay } from '@hal/types';
 import { reportFigure } from './report/figures.js';
 
 const { values } = parseArgs({ options: { seconds: { type: 'string' } } });
@@ -29,7 +30,7 @@ function scriptedModel(looks: boolean): ChatProvider {
   return {
     name: looks ? 'scripted:looking' : 'scripted:blind',
     async complete(_request: ChatRequest, chat): Promise<ChatReply> {
-      await new Promise((resolve) => setTimeout(resolve, TURN_MS));
+      await delay(TURN_MS);
       if (chat.signal.aborted) throw chat.signal.reason;
       turn += 1;
       const motion =

@@ -16,6 +16,7 @@ import { runInNewContext } from 'node:vm';
 import { McapRecorder, recordHal } from '@hal/recorder';
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { delay } from '@hal/types';
 import { reportFigure } from './report/figures.js';
 
 const { values } = parseArgs({ options: { minutes: { type: 'string' } } });
@@ -53,7 +54,7 @@ async function drive(
       void call.finally(() => pending.delete(call));
       calls += 1;
     }
-    await new Promise((resolve) => setTimeout(resolve, 10));
+    await delay(10);
   }
   await Promise.all(pending);
   return { calls, failed };

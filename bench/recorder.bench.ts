@@ -35,6 +35,7 @@ import { join } from 'node:path';
 import { PhysicalHAL } from '@hal/physical';
 import { McapRecorder, recordHal } from '@hal/recorder';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { delay } from '@hal/types';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { percentile, reportFigure } from './report/figures.js';
 import { stolenMs } from './report/stolen-time.js';
@@ -58,7 +59,6 @@ function stolenSince(before: number | undefined): number | undefined {
 }
 
 const fmt = (ms: number) => `${(ms * 1000).toFixed(0)} us`;
-const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /** A recorded side's calls, by whether the recording wrote anything since the call before. */
 interface AfterWork {
@@ -93,7 +93,7 @@ async function calls(
       written = split.recorder.stats().written;
     }
     if (!result.success) throw new Error(`setLED failed: ${result.error}`);
-    if (paceMs > 0) await sleep(paceMs);
+    if (paceMs > 0) await delay(paceMs);
   }
 }
 
@@ -192,7 +192,7 @@ try {
     for (let round = 0; round < rounds; round++) {
       for (const side of ORDERS[round % ORDERS.length]!) {
         const target = side === 'on' ? recorded : hal;
-        await sleep(SETTLE_MS);
+        await delay(SETTLE_MS);
         const started = performance.now();
         await calls(target, 1, [], paceMs);
         await calls(target, block, into[side], paceMs, splits?.[side]);

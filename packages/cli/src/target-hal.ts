@@ -5,7 +5,7 @@ import { calibratedGeometry, calibrationSource, PhysicalHAL } from '@hal/physica
 import type { CalibrationSource } from '@hal/physical';
 import { RemoteHAL } from '@hal/remote';
 import { SimulationHAL, World } from '@hal/simulation';
-import { deadline, HalError, isHalError } from '@hal/types';
+import { deadline, delay, HalError, isHalError } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { CliIO } from './io.js';
 import { cliLogger } from './logger.js';
@@ -162,7 +162,7 @@ export async function openTarget(
         `another client controls the ${describeTarget(target)}: this one could only watch`,
       );
     }
-    await new Promise((resolve) => setTimeout(resolve, CONTROL_RETRY_MS));
+    await delay(CONTROL_RETRY_MS);
   }
 }
 

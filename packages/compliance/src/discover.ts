@@ -2,7 +2,7 @@
 // capabilities on the spec's subject (`hal.v1.system.capability.announce`, the default device)
 // or on a fleet device's (`hal.v1.dev.{device}.system.capability.announce`).
 import { CapabilityAnnouncementSchema, subjectFor } from '@hal/nats';
-import { HalError, buildSubject } from '@hal/types';
+import { buildSubject, delay, HalError } from '@hal/types';
 import type { NatsConnection } from '@nats-io/transport-node';
 import { inspect } from './inspect.js';
 
@@ -64,7 +64,7 @@ export async function devicesSeenOnNats(options: {
   ];
   try {
     await nc.flush();
-    await new Promise((resolve) => setTimeout(resolve, windowMs));
+    await delay(windowMs);
   } finally {
     for (const sub of subs) sub.unsubscribe();
   }

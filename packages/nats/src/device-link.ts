@@ -1,4 +1,4 @@
-import { HAL_ERROR_CODES, HalError, deviceOfflineError } from '@hal/types';
+import { delay, deviceOfflineError, HAL_ERROR_CODES, HalError } from '@hal/types';
 import type { HalErrorCode, HalErrorPayload } from '@hal/types';
 import { errors, headers as natsHeaders } from '@nats-io/transport-node';
 import type { NatsConnection, Status, Subscription } from '@nats-io/transport-node';
@@ -23,8 +23,6 @@ export interface DeviceLinkOptions {
 
 /** How an offline error names the default device (the spec's bare subjects carry no id). */
 export const DEFAULT_DEVICE_LABEL = '(default)';
-
-const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
 
 function inChain(error: unknown, kind: abstract new (...args: never[]) => Error): boolean {
   for (let e: unknown = error; e instanceof Error; e = (e as Error).cause) {
@@ -175,7 +173,7 @@ export class DeviceLink {
           );
         }
         // No responders (a gateway restarting) or a lost reply: repeat after a short pause.
-        if (inChain(error, errors.NoRespondersError)) await sleep(50);
+        if (inChain(error, errors.NoRespondersError)) await delay(50);
       }
     }
   }

@@ -5,6 +5,7 @@
 // poses in the world's frame, and the judge reads the body's true pose from the same wheels.
 import type { EvalRobot, StagedRobot, TaskVariant } from '@hal/eval';
 import { PhysicalHAL } from '@hal/physical';
+import { delay } from '@hal/types';
 import { startEmulatedCamera } from '../emulate/emulated-camera.js';
 import type { WheelPositions, WorldPose } from '../emulate/body-pose.js';
 import { WHEEL_REPORT_MS } from '../emulate/emulate-options.js';
@@ -40,8 +41,7 @@ async function settled(wheels: EmulatorWheels, hal?: PhysicalHAL): Promise<void>
     const now = wheels.now();
     return now.left === told.leftSteps && now.right === told.rightSteps;
   };
-  while (!caughtUp() && performance.now() < until)
-    await new Promise((resolve) => setTimeout(resolve, SETTLE_POLL_MS));
+  while (!caughtUp() && performance.now() < until) await delay(SETTLE_POLL_MS);
 }
 
 /** The emulator at 127.0.0.1:`udpPort`, staged in each trial's world. */

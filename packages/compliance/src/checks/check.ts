@@ -43,5 +43,5 @@ export const fail = (reason: string, extra: Omit<Verdict, 'status' | 'reason'> =
 
 export const skip = (reason: string): Verdict => ({ status: 'skip', reason });
 
-export const sleep = (ms: number): Promise<void> =>
-  new Promise((resolve) => setTimeout(resolve, ms));
+/** Waits `ms` (the one `delay` of @hal/types). */
+export { delay as sleep } from '@hal/types';

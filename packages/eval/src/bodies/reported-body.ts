@@ -1,4 +1,5 @@
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { delay } from '@hal/types';
 import type { TrialBody } from './trial-body.js';
 
 type Pose2 = { x: number; y: number; yaw: number };
@@ -42,7 +43,7 @@ export async function reportedBody(
       return { result, pathM: Math.hypot(pose.x - before.x, pose.y - before.y) };
     },
     nowUs: () => (performance.now() - started) * 1000 * timeScale,
-    delay: (ms) => new Promise((resolve) => setTimeout(resolve, ms / timeScale)),
+    delay: (ms) => delay(ms / timeScale),
     emergencyStopped: () => hal.safety.isEmergencyStopped(),
   };
 }

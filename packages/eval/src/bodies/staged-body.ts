@@ -1,5 +1,6 @@
 import { World } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
+import { delay } from '@hal/types';
 import type { TaskVariant } from '../variant.js';
 import type { TrialBody } from './trial-body.js';
 
@@ -66,7 +67,7 @@ export function stagedBody(
       return { result, pathM: pathM - before };
     },
     nowUs: () => (performance.now() - started) * 1000 * timeScale,
-    delay: (ms) => new Promise((resolve) => setTimeout(resolve, ms / timeScale)),
+    delay: (ms) => delay(ms / timeScale),
     emergencyStopped: () => hal.safety.isEmergencyStopped(),
   };
   return { body, collisions: () => collisions, close: unsubscribe };

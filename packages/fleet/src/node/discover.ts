@@ -1,6 +1,6 @@
 import { CapabilityAnnouncementSchema, decodeMessage } from '@hal/nats';
 import type { NatsConnection } from '@nats-io/transport-node';
-import { DEVICE_SUBJECT_TOKEN, parseSubject } from '@hal/types';
+import { delay, DEVICE_SUBJECT_TOKEN, parseSubject } from '@hal/types';
 
 /** A device heard announcing itself on NATS. */
 export interface DiscoveredDevice {
@@ -42,7 +42,7 @@ export async function discoverNatsDevices(
       }
     },
   });
-  await new Promise((resolve) => setTimeout(resolve, timeoutMs));
+  await delay(timeoutMs);
   sub.unsubscribe();
   return [...found.values()].sort((a, b) => a.device.localeCompare(b.device));
 }

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { delay } from '../vocabulary/time.js';
 import { ESTOP_REASON_MAX_BYTES, sanitizeEstopReason } from '../estop-reason.js';
 import type { HardwareAbstractionLayer } from '../interfaces.js';
 import { PoseSchema, SafetyStatusSchema } from '../pose.js';
@@ -98,7 +99,7 @@ export function describeEstopContract(
         expect(HALToolResultSchema.safeParse(move).success).toBe(true);
         if (!move.success) expect(move.code).toBe('EMERGENCY_STOPPED');
         const at = PoseSchema.parse(await hal.locomotion.getPose()).position;
-        await new Promise((resolve) => setTimeout(resolve, 50));
+        await delay(50);
         expect(PoseSchema.parse(await hal.locomotion.getPose()).position).toEqual(at);
         expect(hal.safety.isEmergencyStopped()).toBe(true);
       },
