@@ -41,16 +41,28 @@ describe('the browser entries import nothing Node-only statically', () => {
   it('@hal/physical: node:dgram, node:crypto and serialport load on use', () => {
     const { files, bare } = reachable('physical/src/index.ts');
     expect(files.length).toBeGreaterThan(10);
-    expect(bare).toEqual(['@hal/kinematics', '@hal/types', 'crc/calculators/crc16ccitt', 'zod']);
+    expect(bare).toEqual([
+      '@hal/kinematics',
+      '@hal/runtime',
+      '@hal/types',
+      'crc/calculators/crc16ccitt',
+      'zod',
+    ]);
   });
 
   it('@hal/simulation: sharp is named to no bundler (a variable specifier)', () => {
     const { files, bare } = reachable('simulation/src/index.ts');
     expect(files.length).toBeGreaterThan(20);
-    expect(bare).toEqual(['@hal/kinematics', '@hal/types', 'zod']);
+    expect(bare).toEqual(['@hal/kinematics', '@hal/runtime', '@hal/types', 'zod']);
     for (const href of files) {
       expect(readFileSync(new URL(href), 'utf8'), href).not.toMatch(/import\(\s*['"]sharp['"]/);
     }
+  });
+
+  it('@hal/runtime: the HAL class reaches only the contract', () => {
+    const { files, bare } = reachable('runtime/src/index.ts');
+    expect(files.length).toBeGreaterThan(4);
+    expect(bare).toEqual(['@hal/types']);
   });
 
   it('@hal/remote: the client entry reaches neither ws nor the server', () => {

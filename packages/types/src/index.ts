@@ -29,6 +29,8 @@ export {
   stepsPerCm,
 } from './robot-config.js';
 export type { ConnectionConfig, HALConfig, RobotConfig } from './robot-config.js';
+export { ROBOT_SETTINGS, settingRangeText } from './robot-settings.js';
+export type { RobotSetting, RobotSettingKey, SettingCommand } from './robot-settings.js';
 
 export { CameraModelSchema, V1_CAMERA, cameraModel } from './camera-model.js';
 export type { CameraModel } from './camera-model.js';
@@ -202,3 +204,4 @@ export type {
   RobotPort,
   RobotSpeaker,
 } from './robot-port.js';
+export { ROBOT_PART_CAPABILITY } from './robot-port.js';

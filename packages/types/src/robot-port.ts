@@ -1,3 +1,4 @@
+import { CAPABILITIES } from './capabilities.js';
 import type { HALLogLevel } from './interfaces.js';
 import type { HALMode } from './mode.js';
 import type {
@@ -75,6 +76,15 @@ export interface EmergencyStopDone {
 
 /** The parts of a robot a port may lack; a call on a missing one is NOT_IMPLEMENTED. */
 export type RobotPart = 'camera' | 'range sensors' | 'line sensors' | 'IMU' | 'speaker';
+
+/** The capability each part stands for (the `details.capability` of its NOT_IMPLEMENTED). */
+export const ROBOT_PART_CAPABILITY: Readonly<Record<RobotPart, string>> = Object.freeze({
+  camera: CAPABILITIES.camera,
+  'range sensors': CAPABILITIES.rangeSensors,
+  'line sensors': CAPABILITIES.lineSensors,
+  IMU: CAPABILITIES.imu,
+  speaker: CAPABILITIES.speaker,
+});
 
 /** What a speaker does. */
 export interface RobotSpeaker {

@@ -1,6 +1,7 @@
 import type { RobotConfig } from '@hal/types';
-import { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS } from '../transport/transport.js';
+import type { SafetyLaneTiming } from '../safety-lane.js';
 import type { RequestOptions } from '../transport/transport.js';
+import { PHYSICAL_HAL_DEFAULTS as DEFAULTS } from './options.js';
 import type { PhysicalHALOptions } from './options.js';
 
 /**
@@ -45,12 +46,15 @@ export class LinkTiming {
   #requestOptions(): RequestOptions {
     const timeoutMs =
       this.#options.requestTimeoutMs ??
-      Math.max(20, Math.min(DEFAULT_REPLY_TIMEOUT_MS, this.real(this.#robot().hostTimeoutMs / 4)));
+      Math.max(
+        DEFAULTS.minRequestTimeoutMs,
+        Math.min(DEFAULTS.replyTimeoutMs, this.real(this.#robot().hostTimeoutMs / 4)),
+      );
     const attempts =
       this.#options.attempts ??
       Math.max(
-        DEFAULT_ATTEMPTS,
-        Math.ceil((DEFAULT_REPLY_TIMEOUT_MS * DEFAULT_ATTEMPTS) / timeoutMs),
+        DEFAULTS.attempts,
+        Math.ceil((DEFAULTS.replyTimeoutMs * DEFAULTS.attempts) / timeoutMs),
       );
     return { timeoutMs, attempts };
   }
@@ -60,18 +64,41 @@ export class LinkTiming {
     return Math.max(
       5,
       this.real(
-        this.#options.heartbeatIntervalMs ?? Math.min(500, this.#robot().hostTimeoutMs / 4),
+        this.#options.heartbeatIntervalMs ??
+          Math.min(DEFAULTS.heartbeatMaxMs, this.#robot().hostTimeoutMs / 4),
       ),
     );
   }
 
   /** The `get_status` period while a motion runs. */
   pollMs(): number {
-    return Math.max(2, this.real(this.#options.pollIntervalMs ?? 100));
+    return Math.max(2, this.real(this.#options.pollIntervalMs ?? DEFAULTS.pollIntervalMs));
   }
 
   /** Slack beyond 1.2 x the planned duration before a motion is declared TIMEOUT. */
   motionMarginMs(): number {
-    return this.#options.motionTimeoutMarginMs ?? 2000;
+    return this.#options.motionTimeoutMarginMs ?? DEFAULTS.motionTimeoutMarginMs;
+  }
+
+  /**
+   * How `stop` and `estop` are resent: every 20 ms, within the same total budget as any other
+   * request but never longer than the robot's host timeout: a robot that hears nothing from the
+   * host for that long stops by itself, so a longer wait only delays the news that it could not be
+   * told. Once the link is known `dead` (lost, or the robot silent for its host timeout) one short
+   * try is all there is.
+   */
+  stopLane(dead: boolean): SafetyLaneTiming {
+    if (this.#options.safetyLane !== undefined) return this.#options.safetyLane;
+    const { timeoutMs, attempts } = this.request();
+    const requestMs =
+      timeoutMs === undefined || attempts === undefined
+        ? DEFAULTS.safetyLane.totalMs
+        : timeoutMs * attempts;
+    const hostTimeoutMs = this.real(this.#robot().hostTimeoutMs);
+    const totalMs = Math.min(
+      requestMs,
+      dead ? DEFAULTS.deadLinkStopMs : Math.max(hostTimeoutMs, 100),
+    );
+    return { resendMs: DEFAULTS.safetyLane.resendMs, totalMs };
   }
 }

@@ -2,8 +2,41 @@ import type { Logger } from '@hal/types';
 import type { StartPose } from '../pose-tracker.js';
 import type { CalibrationSource } from './calibration.js';
 import type { AuthScheme, DeviceConfig } from '../protocol/schemas.js';
+import { DEFAULT_SAFETY_LANE } from '../safety-lane.js';
 import type { SafetyLaneTiming } from '../safety-lane.js';
+import { DEFAULT_ATTEMPTS, DEFAULT_REPLY_TIMEOUT_MS } from '../transport/transport.js';
 import type { TransportFactory } from '../transport/transport.js';
+
+/**
+ * Every default of a PhysicalHAL, in one place (the options below say how each is used). Robot ms
+ * are scaled by `timeScale`; real ms are not.
+ */
+export const PHYSICAL_HAL_DEFAULTS = Object.freeze({
+  /** The robot's clock runs at real time. */
+  timeScale: 1,
+  /** The longest heartbeat period, robot ms (else a quarter of the host timeout). */
+  heartbeatMaxMs: 500,
+  /** `get_status` polls while a motion runs, robot ms. */
+  pollIntervalMs: 100,
+  /** `hello` again while the link is lost, real ms. */
+  reconnectIntervalMs: 1000,
+  /** A motion's slack beyond 1.2 x its planned duration, real ms. */
+  motionTimeoutMarginMs: 2000,
+  /** The protocol's reply timeout, real ms, and the longest a request waits before a resend. */
+  replyTimeoutMs: DEFAULT_REPLY_TIMEOUT_MS,
+  /** The protocol's sends of a request (3 x 2000 ms is its whole budget). */
+  attempts: DEFAULT_ATTEMPTS,
+  /** The shortest resend period, real ms. */
+  minRequestTimeoutMs: 20,
+  /** How `stop` and `estop` are resent until acknowledged. */
+  safetyLane: DEFAULT_SAFETY_LANE,
+  /** How long a stop is resent once the link is known dead, real ms. */
+  deadLinkStopMs: 300,
+  /** How long `cleanup()` tries to stop the motors, real ms. */
+  cleanupStopMs: 500,
+  /** How the host names itself in `hello`. */
+  client: '@hal/physical',
+});
 
 /** Options of {@link PhysicalHAL}, beside its {@link HALConfig}. */
 export interface PhysicalHALOptions {

@@ -1,4 +1,11 @@
-import { CAPABILITIES, cameraModel, HalError, isHalError, scoped, silentLogger } from '@hal/types';
+import {
+  CAPABILITIES,
+  ROBOT_PART_CAPABILITY,
+  cameraModel,
+  HalError,
+  scoped,
+  silentLogger,
+} from '@hal/types';
 import type {
   CameraModel,
   DeviceInfo,
@@ -30,7 +37,6 @@ import type {
   RequestParams,
   StatusReply,
 } from '../protocol/schemas.js';
-import { DEFAULT_SAFETY_LANE } from '../safety-lane.js';
 import type { SafetyInterrupt, SafetyLaneTiming } from '../safety-lane.js';
 import { Session } from '../session.js';
 import type { SessionState } from '../session.js';
@@ -45,22 +51,17 @@ import type { WheelCalibration } from './calibration.js';
 import type { HalContext } from './context.js';
 import { defaultTransport, initialRobotConfig, parsePhysicalConfig } from './from-config.js';
 import { LinkTiming } from './link-timing.js';
-import { unacknowledgedStop, unlessLinkLost } from './lost-link.js';
+import { PHYSICAL_HAL_DEFAULTS as DEFAULTS } from './options.js';
 import type { PhysicalHALOptions, RobotIdentity } from './options.js';
-import { awaitMotion, runMotion, sendMotion } from './run-motion.js';
 import { SafetyCache } from './safety-cache.js';
-
-/** How long a stop is resent once the link is known dead, ms. */
-const DEAD_LINK_STOP_MS = 300;
-
-/** What each part the V1 cube lacks is called by its capability. */
-const PART_CAPABILITY: Record<RobotPart, string> = {
-  camera: CAPABILITIES.camera,
-  'range sensors': CAPABILITIES.rangeSensors,
-  'line sensors': CAPABILITIES.lineSensors,
-  IMU: CAPABILITIES.imu,
-  speaker: CAPABILITIES.speaker,
-};
+import {
+  notInitialised,
+  wireDrive,
+  wireEmergencyStop,
+  wireMotion,
+  wireResetEmergencyStop,
+  wireStop,
+} from './wire-motions.js';
 
 /**
  * The V1 stepper cube over its wire session (protocol 1.1, docs/protocol.md) through a UDP or
@@ -96,7 +97,7 @@ export class WireBinding implements RobotPort {
 
   constructor(config: HALConfig, options: PhysicalHALOptions = {}) {
     const parsed = parsePhysicalConfig(config);
-    const timeScale = options.timeScale ?? 1;
+    const timeScale = options.timeScale ?? DEFAULTS.timeScale;
     if (!(timeScale > 0) || !Number.isFinite(timeScale)) {
       throw new HalError('INVALID_PARAMETER', `"timeScale" must be a finite number > 0`);
     }
@@ -159,9 +160,9 @@ export class WireBinding implements RobotPort {
       transport,
       codec,
       logger,
-      client: this.#options.client ?? '@hal/physical',
+      client: this.#options.client ?? DEFAULTS.client,
       heartbeatIntervalMs: () => this.#timing.heartbeatMs(),
-      reconnectIntervalMs: this.#options.reconnectIntervalMs ?? 1000,
+      reconnectIntervalMs: this.#options.reconnectIntervalMs ?? DEFAULTS.reconnectIntervalMs,
       request: () => this.#timing.request(),
       safetyLane: () => this.#safetyLane(),
       onReply: (cmd, data) => {
@@ -210,7 +211,14 @@ export class WireBinding implements RobotPort {
     this.#transport = undefined;
     if (session !== undefined && session.state === 'connected') {
       await session
-        .safetyCommand('stop', {}, { resendMs: DEFAULT_SAFETY_LANE.resendMs, totalMs: 500 })
+        .safetyCommand(
+          'stop',
+          {},
+          {
+            resendMs: DEFAULTS.safetyLane.resendMs,
+            totalMs: DEFAULTS.cleanupStopMs,
+          },
+        )
         .catch(() => undefined);
     }
     session?.close();
@@ -249,81 +257,25 @@ export class WireBinding implements RobotPort {
     return this.#tracker.pose();
   }
 
-  /** One motion command; if it loses the link, one stop, and an error that says how that went. */
   async motion(command: MotionCommand): Promise<MotionDone> {
-    const speed = command.speedStepsPerS === undefined ? {} : { speed: command.speedStepsPerS };
-    return await unlessLinkLost(this.#ctx, () =>
-      command.kind === 'move'
-        ? runMotion(this.#ctx, 'move_cm', {
-            left_cm: command.leftCm,
-            right_cm: command.rightCm,
-            ...speed,
-          })
-        : runMotion(this.#ctx, 'rotate_deg', { degrees: command.degrees, ...speed }),
-    );
+    return await wireMotion(this.#ctx, command);
   }
 
   async drive(leftSps: number, rightSps: number, durationMs?: number): Promise<DriveDone> {
-    return await unlessLinkLost(this.#ctx, async () => {
-      const params: RequestParams['drive'] = { left_sps: leftSps, right_sps: rightSps };
-      if (durationMs !== undefined) params.duration_ms = durationMs;
-      const epoch = this.#ctx.safetyEpoch();
-      const reply = await sendMotion(this.#ctx, epoch, 'drive', params);
-      const data = {
-        moveId: reply.move_id,
-        leftSps: reply.left_sps ?? leftSps,
-        rightSps: reply.right_sps ?? rightSps,
-        speedClamped: reply.speed_clamped ?? false,
-      };
-      if (durationMs === undefined || reply.running === false) {
-        return { ...data, running: reply.running ?? false };
-      }
-      const status = await awaitMotion(this.#ctx, reply, durationMs, epoch);
-      return {
-        ...data,
-        running: false,
-        leftSteps: status.move_left_steps,
-        rightSteps: status.move_right_steps,
-      };
-    });
+    return await wireDrive(this.#ctx, leftSps, rightSps, durationMs);
   }
 
-  /** `stop`; one the robot does not acknowledge fails NOT_CONNECTED (never claims the stop). */
   async stop(): Promise<boolean> {
-    const reply = await this.#command('stop', {}).catch((error: unknown) => {
-      throw isHalError(error) && error.code === 'NOT_CONNECTED'
-        ? unacknowledgedStop(this.#ctx, error)
-        : error;
-    });
-    return reply.stopped;
+    return await wireStop(this.#ctx);
   }
 
-  /**
-   * Latches on the host before `estop` is sent, so motion is refused whatever the link does, then
-   * sends it on the safety lane (never behind a pending request). Before `open()` or after
-   * `close()` only the host latches, and the next `open()` sends the `estop` to the robot.
-   */
+  /** Latches on the host first; before `open()` or after `close()` only the host latches. */
   async emergencyStop(reason: string): Promise<EmergencyStopDone> {
-    this.#safety.latchHost(reason); // refuse motion at once, whatever the link does
-    const reply = await this.#ctx.safetyCommand('estop', { reason });
-    if (reply === undefined) return { estop: true, reason, delivered: false };
-    const done: EmergencyStopDone = {
-      estop: reply.estop,
-      reason: reply.estop_reason,
-      delivered: true,
-    };
-    // protocol 1.1: the motion it ended, and the robot's clock when the wheels stopped
-    if (reply.move_id !== undefined) done.moveId = reply.move_id;
-    if (reply.move_outcome !== undefined) done.moveOutcome = reply.move_outcome;
-    if (reply.move_left_steps !== undefined) done.leftSteps = reply.move_left_steps;
-    if (reply.move_right_steps !== undefined) done.rightSteps = reply.move_right_steps;
-    if (reply.estop_us !== undefined) done.robotEstopUs = reply.estop_us;
-    return done;
+    return await wireEmergencyStop(this.#ctx, reason);
   }
 
-  /** `reset_estop`: only an accepted one clears the host's latch and the robot's. */
   async resetEmergencyStop(): Promise<boolean> {
-    return (await this.#command('reset_estop', {})).was_estopped;
+    return await wireResetEmergencyStop(this.#ctx);
   }
 
   isEmergencyStopped(): boolean {
@@ -353,7 +305,7 @@ export class WireBinding implements RobotPort {
         ? 'no camera configured: set connection.cameraUrl to the ESP32-CAM address'
         : `the V1 stepper cube has no ${part}`;
     return new HalError('NOT_IMPLEMENTED', message, {
-      details: { capability: PART_CAPABILITY[part] },
+      details: { capability: ROBOT_PART_CAPABILITY[part] },
     });
   }
 
@@ -430,9 +382,7 @@ export class WireBinding implements RobotPort {
 
   #command<C extends Command>(cmd: C, params: RequestParams[C]): Promise<ReplyOf<C>> {
     const session = this.#session;
-    if (session === undefined) {
-      return Promise.reject(new HalError('NOT_READY', 'the HAL is not initialised'));
-    }
+    if (session === undefined) return Promise.reject(notInitialised());
     // a refusal reaches the safety cache through the session's onCommandFailed
     return session.command(cmd, params);
   }
@@ -449,28 +399,19 @@ export class WireBinding implements RobotPort {
   #helloOptions(): RequestOptions | undefined {
     const connectMs = this.#options.connectTimeoutMs;
     if (connectMs === undefined) return undefined;
-    const timeoutMs = Math.min(this.#timing.request().timeoutMs ?? 500, connectMs);
+    const timeoutMs = Math.min(
+      this.#timing.request().timeoutMs ?? DEFAULTS.replyTimeoutMs,
+      connectMs,
+    );
     return { timeoutMs, attempts: Math.max(1, Math.floor(connectMs / timeoutMs)) };
   }
 
-  /**
-   * Resend every 20 ms, within the same total budget as any other request but never longer than
-   * the robot's host timeout: a robot that hears nothing from the host for that long stops by
-   * itself, so a longer wait only delays the news that it could not be told. Once the link is
-   * known dead (lost, or the robot silent for its host timeout) one short try is all there is.
-   */
+  /** How a stop is resent now: shorter once the link is known dead (see LinkTiming.stopLane). */
   #safetyLane(): SafetyLaneTiming {
-    if (this.#options.safetyLane !== undefined) return this.#options.safetyLane;
-    const { timeoutMs, attempts } = this.#timing.request();
-    const requestMs =
-      timeoutMs === undefined || attempts === undefined
-        ? DEFAULT_SAFETY_LANE.totalMs
-        : timeoutMs * attempts;
-    const hostTimeoutMs = this.#timing.real(this.#robot.hostTimeoutMs);
     const silentMs = performance.now() - this.#tracker.heardAt;
-    const dead = this.#session?.state === 'lost' || silentMs > hostTimeoutMs;
-    const totalMs = Math.min(requestMs, dead ? DEAD_LINK_STOP_MS : Math.max(hostTimeoutMs, 100));
-    return { resendMs: DEFAULT_SAFETY_LANE.resendMs, totalMs };
+    const dead =
+      this.#session?.state === 'lost' || silentMs > this.#timing.real(this.#robot.hostTimeoutMs);
+    return this.#timing.stopLane(dead);
   }
 
   #learn(hello: HelloReply): void {
@@ -502,7 +443,7 @@ export class WireBinding implements RobotPort {
     }
     if (calibration === undefined) return;
     const session = this.#session;
-    if (session === undefined) throw new HalError('NOT_READY', 'the HAL is not initialised');
+    if (session === undefined) throw notInitialised();
     const config = await sendCalibration(
       (params) => session.command('set_config', params),
       calibration,

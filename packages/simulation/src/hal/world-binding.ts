@@ -1,4 +1,12 @@
-import { CAPABILITIES, HalError, scoped, silentLogger, V1_ROBOT, robotConfig } from '@hal/types';
+import {
+  CAPABILITIES,
+  ROBOT_PART_CAPABILITY,
+  HalError,
+  scoped,
+  silentLogger,
+  V1_ROBOT,
+  robotConfig,
+} from '@hal/types';
 import type {
   DeviceInfo,
   DistanceSensors,
@@ -33,15 +41,6 @@ import type { SimulationHALEvents } from './events.js';
 import { resolveFeatures } from './options.js';
 import type { SimulatedFeatures, SimulationClock, SimulationHALOptions } from './options.js';
 import { softwareFrameSource } from './frame-source.js';
-
-/** What each part the simulated robot may lack is called by its capability. */
-const PART_CAPABILITY: Record<RobotPart, string> = {
-  camera: CAPABILITIES.camera,
-  'range sensors': CAPABILITIES.rangeSensors,
-  'line sensors': CAPABILITIES.lineSensors,
-  IMU: CAPABILITIES.imu,
-  speaker: CAPABILITIES.speaker,
-};
 
 /**
  * The simulated world's robot as a {@link RobotPort}: each command is the firmware command a
@@ -304,7 +303,7 @@ export class WorldBinding implements RobotPort {
 
   lacks(part: RobotPart): HalError {
     return new HalError('NOT_IMPLEMENTED', `the simulated robot has no ${part}`, {
-      details: { capability: PART_CAPABILITY[part] },
+      details: { capability: ROBOT_PART_CAPABILITY[part] },
     });
   }
 
