@@ -21,7 +21,7 @@ import type { RequestOptions } from './transport/transport.js';
 export type { SessionOptions, SessionState } from './session-options.js';
 export { robotError } from './session-errors.js';
 
-/** Commands the robot executes whatever the session (protocol 1.0, section 4, rule 1). */
+/** Commands the robot executes whatever the session (protocol 1.1, section 4, rule 1). */
 const SAFETY_COMMANDS: ReadonlySet<Command> = new Set(['stop', 'estop', 'reset_estop']);
 /** A command's options when none are given (one object, not one per call). */
 const NO_OPTIONS: RequestOptions = Object.freeze({});
@@ -185,7 +185,7 @@ export class Session {
         const issue = parsed.error.issues[0];
         throw new HalError(
           'MALFORMED',
-          `the robot's "${cmd}" reply does not match protocol 1.0: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
+          `the robot's "${cmd}" reply does not match protocol 1.1: ${issue?.path.join('.') ?? ''} ${issue?.message ?? ''}`.trim(),
           { details: { command: cmd } },
         );
       }
@@ -318,7 +318,7 @@ export class Session {
     const parsed = HelloReplySchema.safeParse(reply);
     if (!parsed.success) {
       this.malformedReplies += 1;
-      throw new HalError('MALFORMED', "the robot's hello reply does not match protocol 1.0");
+      throw new HalError('MALFORMED', "the robot's hello reply does not match protocol 1.1");
     }
     if (parsed.data.nonce !== nonce) {
       throw new HalError('AUTH_FAILED', "the robot's hello reply does not echo our nonce");

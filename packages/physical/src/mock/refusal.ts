@@ -1,7 +1,7 @@
 /** A decoded request or reply object. */
 export type Json = Record<string, unknown>;
 
-/** A request the robot refuses: the `error` of its reply (protocol 1.0, section 6). */
+/** A request the robot refuses: the `error` of its reply (protocol 1.1, section 6). */
 export class Refusal extends Error {
   constructor(
     readonly code: string,

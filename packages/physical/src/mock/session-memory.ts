@@ -1,7 +1,7 @@
 import { Refusal } from './refusal.js';
 import type { Envelope } from './wire.js';
 
-/** How many executed requests' replies a session remembers (protocol 1.0, section 4). */
+/** How many executed requests' replies a session remembers (protocol 1.1, section 4). */
 const MEMORY = 16;
 
 /** What the session rules decide for one request (other than `hello`). */

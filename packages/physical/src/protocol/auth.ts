@@ -1,7 +1,7 @@
 import { HalError } from '@hal/types';
 
 /**
- * Message authentication of protocol 1.0, section 8: `<json>#<mac>`, where mac is 32 lowercase hex
+ * Message authentication of protocol 1.1, section 8: `<json>#<mac>`, where mac is 32 lowercase hex
  * digits, the first 16 bytes of HMAC-SHA256(key, json bytes).
  */
 export interface MessageAuthenticator {

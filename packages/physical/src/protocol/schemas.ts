@@ -1,7 +1,7 @@
 import { z } from 'zod';
 
 /*
- * Zod schemas for every reply of protocol 1.0 (docs/protocol.md). Unknown fields are ignored
+ * Zod schemas for every reply of protocol 1.1 (docs/protocol.md). Unknown fields are ignored
  * (stripped), `null` is treated as absent, and anything else that does not match is MALFORMED.
  */
 
@@ -31,11 +31,14 @@ export const ReplyEnvelopeSchema = z.looseObject({
 });
 export type ReplyEnvelope = z.infer<typeof ReplyEnvelopeSchema>;
 
-/** The device configuration (`hello`, `set_config`). */
+/**
+ * The device configuration (`hello`, `set_config`): each field as the firmware writes it (the
+ * `wireType` of its row in `ROBOT_SETTINGS`; steps/rev is a double the firmware keeps).
+ */
 export const DeviceConfigSchema = z.object({
   wheel_diameter_cm: finite,
   wheel_base_cm: finite,
-  steps_per_revolution: int,
+  steps_per_revolution: finite,
   max_speed_steps_per_s: int,
   acceleration_steps_per_s2: int,
   host_timeout_ms: int,
