@@ -2,7 +2,7 @@
 // an obstacle, a blind guard, a refused reverse, a motion cancelled before it started.
 import { failureResult, HalError, isHalError, errorMessage } from '@hal/types';
 import type { HALToolResult } from '@hal/types';
-import type { GuardContext } from './guarded-locomotion.js';
+import type { GuardContext } from './guard-context.js';
 import type { GuardStop } from './guard-status.js';
 import type { Sighting } from './sighting.js';
 

@@ -5,15 +5,8 @@ import {
   normalizeAngle,
   V1_ROBOT,
 } from '@hal/types';
-import type {
-  CallName,
-  HALToolResult,
-  HardwareAbstractionLayer,
-  LocomotionInterface,
-  Pose,
-  ScopedLogger,
-} from '@hal/types';
-import type { GuardSettings } from './guard-settings.js';
+import type { CallName, HALToolResult, LocomotionInterface, Pose } from '@hal/types';
+import type { GuardContext } from './guard-context.js';
 import {
   blindResult,
   blindTripResult,
@@ -21,22 +14,11 @@ import {
   obstacleResult,
   reverseRefusal,
 } from './guard-outcomes.js';
-import type { GuardRecord } from './guard-status.js';
 import { combineLegs } from './legs.js';
 import type { LegPlan } from './legs.js';
 import type { Sight, Sighting } from './sighting.js';
 import { Watcher } from './watcher.js';
 import type { Trip } from './watcher.js';
-
-/** What the guarded locomotion works with. */
-export interface GuardContext {
-  hal: HardwareAbstractionLayer;
-  settings: GuardSettings;
-  record: GuardRecord;
-  log: ScopedLogger;
-  /** How the guard sees ahead; undefined when it cannot (it has said so). */
-  sight(): Promise<Sight | undefined>;
-}
 
 /** A leg shorter than this, metres, is the rest of the motion (rounding). */
 const REST_M = 1e-4;
