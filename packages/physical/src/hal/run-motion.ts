@@ -1,10 +1,8 @@
-import { HalError } from '@hal/types';
+import { delay, HalError } from '@hal/types';
 import type { MotionDone } from '@hal/types';
 import type { MotionReply, ReplyOf, RequestParams, StatusReply } from '../protocol/schemas.js';
 import type { SafetyInterrupt } from '../safety-lane.js';
 import type { HalContext } from './context.js';
-
-const sleep = (ms: number) => new Promise<void>((resolve) => setTimeout(resolve, ms));
 
 type MotionCommand = 'move_cm' | 'rotate_deg' | 'drive';
 
@@ -90,7 +88,7 @@ async function pollMotion(
   const poll = ctx.timing.pollMs();
   let wait = Math.max(2, ctx.timing.real(plannedMs));
   for (;;) {
-    await sleep(Math.min(wait, Math.max(0, deadline - performance.now())));
+    await delay(Math.min(wait, Math.max(0, deadline - performance.now())));
     wait = poll;
     const status = await ctx.command('get_status', {});
     if (status.move_id === reply.move_id && status.move_outcome !== 'running') {

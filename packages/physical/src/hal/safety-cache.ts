@@ -1,4 +1,4 @@
-import { isHalError } from '@hal/types';
+import { EstopLatch, isHalError } from '@hal/types';
 import type { SafetyStatus } from '@hal/types';
 import type { Command, StatusReply } from '../protocol/schemas.js';
 import type { SessionState } from '../session.js';
@@ -16,23 +16,23 @@ export class SafetyCache {
    * reset. It keeps motion refused even if the stop never reached the robot, or the robot restarted
    * (which clears its own latch); on reconnection the HAL e-stops the robot again.
    */
-  #hostEstop: string | undefined;
+  readonly #host = new EstopLatch();
   #lastStatus: StatusReply | undefined;
   #linkError: string | undefined;
 
   /** Whether motion is refused: the robot's latch or the host's is set. */
   isEstopped(): boolean {
-    return this.#robotEstop || this.#hostEstop !== undefined;
+    return this.#robotEstop || this.#host.latched;
   }
 
   /** The reason the host latched, while it is latched. */
   get hostLatch(): string | undefined {
-    return this.#hostEstop;
+    return this.#host.reason;
   }
 
   /** Latches on the host, before anything is sent, whatever the link does. */
   latchHost(reason: string): void {
-    this.#hostEstop = reason;
+    this.#host.latch(reason);
   }
 
   /** Keeps the cached state in step with a successful reply. */
@@ -56,7 +56,7 @@ export class SafetyCache {
       case 'reset_estop':
         this.#robotEstop = false;
         this.#robotEstopReason = undefined;
-        this.#hostEstop = undefined;
+        this.#host.reset();
         break;
     }
   }
@@ -85,7 +85,7 @@ export class SafetyCache {
       batteryLevel: 100,
       errors,
     };
-    const reason = this.#robotEstopReason ?? this.#hostEstop;
+    const reason = this.#robotEstopReason ?? this.#host.reason;
     if (this.isEstopped() && reason !== undefined) status.emergencyStopReason = reason;
     return status;
   }

@@ -468,13 +468,13 @@ export class WireBinding implements RobotPort {
       }
       this.#log.info('reconnected', { sid: hello.sid, uptimeMs: status.uptime_ms });
     } catch (error) {
-      this.#log.warn('status after reconnect failed', { error: String(error) });
+      this.#log.warn('status after reconnect failed', { error: errorMessage(error) });
     }
     try {
       // a restarted robot has forgotten its calibration (the e-stop went first, above)
       await this.#calibrate(hello);
     } catch (error) {
-      this.#log.error('calibration after reconnect failed', { error: String(error) });
+      this.#log.error('calibration after reconnect failed', { error: errorMessage(error) });
     }
   }
 
