@@ -123,12 +123,6 @@ describe("the firmware's C++ and the emulators' flags", () => {
     expect(source).toContain(`long host_timeout_ms = ${host.default};`);
   });
 
-  it("hal emulate's --host-timeout-ms takes the host timeout's range", () => {
-    const source = read('packages/cli/src/emulate/emulate-options.ts').replace(/_/g, '');
-    const host = table.find((r) => r.key === 'hostTimeoutMs');
-    expect(source).toContain(`'--host-timeout-ms <ms>', 'host timeout, ${host?.min}..${host?.max}'`);
-    expect(source).toContain(`integerArg('--host-timeout-ms', ${host?.min}, ${host?.max})`);
-  });
 });
 
 /** Sends one request to a fresh mock robot (the emulator in TypeScript); returns its reply. */

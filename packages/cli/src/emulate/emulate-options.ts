@@ -1,11 +1,15 @@
 // `hal emulate`'s options, and the cube-emulator flags they become.
 import { DEFAULT_UDP_PORT } from '@hal/physical';
+import { ROBOT_SETTINGS } from '@hal/types';
 import { Option } from 'commander';
 import type { Command } from 'commander';
 import { ipv4Arg } from '../discover/options.js';
 import { cameraTokenArg } from '../camera-options.js';
 import { hexKeyArg, integerArg, numberArg, portArg } from '../values.js';
 import { deviceIdArg } from '../nats-options.js';
+
+/** The robot's host timeout range, from the one settings table (the firmware's own). */
+const HOST_TIMEOUT = ROBOT_SETTINGS.find((s) => s.key === 'hostTimeoutMs')!;
 
 export interface EmulateCliOptions {
   udpPort: number;
@@ -65,9 +69,10 @@ export function addEmulateOptions(command: Command): Command {
       ),
     )
     .addOption(
-      new Option('--host-timeout-ms <ms>', 'host timeout, 500..10000').argParser(
-        integerArg('--host-timeout-ms', 500, 10_000),
-      ),
+      new Option(
+        '--host-timeout-ms <ms>',
+        `host timeout, ${HOST_TIMEOUT.min}..${HOST_TIMEOUT.max}`,
+      ).argParser(integerArg('--host-timeout-ms', HOST_TIMEOUT.min, HOST_TIMEOUT.max)),
     )
     .option('--no-pty', 'do not open a pseudo-terminal for the serial link')
     .option('--no-announce', 'do not announce the robot with mDNS')

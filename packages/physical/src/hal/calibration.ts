@@ -13,7 +13,7 @@ export interface WheelCalibration {
   wheelDiameterCm: number;
   /** Distance between the wheel contact points, cm (the firmware takes 1..100). */
   wheelBaseCm: number;
-  /** Motor steps per wheel revolution (100..100000), when measured; else the robot's own. */
+  /** Motor steps per wheel revolution (the settings table's range), when measured; else the robot's own. */
   stepsPerRevolution?: number;
 }
 
