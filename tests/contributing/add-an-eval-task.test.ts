@@ -79,7 +79,9 @@ describe('a new eval task (CONTRIBUTING.md: Add an eval task)', () => {
       ) as typeof TASK_FILE;
       for (const task of json.tasks) {
         expect(shipped.has(task.id), `${task.id} of tasks/${name}`).toBe(true);
-        expect(task.id.startsWith(`${task.group}/`), `${task.id} is named for its group`).toBe(true);
+        expect(task.id.startsWith(`${task.group}/`), `${task.id} is named for its group`).toBe(
+          true,
+        );
       }
     }
   });
