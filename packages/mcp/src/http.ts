@@ -4,7 +4,8 @@ import type { IncomingMessage, Server as HttpServer, ServerResponse } from 'node
 import type { AddressInfo } from 'node:net';
 import type { Server } from '@modelcontextprotocol/sdk/server/index.js';
 import { StreamableHTTPServerTransport } from '@modelcontextprotocol/sdk/server/streamableHttp.js';
-import { browserRefusal, isLoopback, errorMessage } from '@hal/types';
+import { browserRefusal, isLoopback } from '@hal/runtime';
+import { errorMessage } from '@hal/types';
 import { DEFAULT_MAX_SESSIONS, httpSessions } from './http-sessions.js';
 
 /** Where and how the streamable HTTP endpoint listens. */

@@ -1,10 +1,5 @@
-import type {
-  ControllerWatch,
-  HardwareAbstractionLayer,
-  RobotConfig,
-  ScopedLogger,
-  ServedCalls,
-} from '@hal/types';
+import type { ControllerWatch, ServedCalls } from '@hal/runtime';
+import type { HardwareAbstractionLayer, RobotConfig, ScopedLogger } from '@hal/types';
 import type { Msg } from '@nats-io/transport-node';
 import type { CpuMeter } from './cpu-meter.js';
 import type { SubjectName } from './subjects.js';

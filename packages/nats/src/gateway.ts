@@ -1,4 +1,5 @@
-import { ControllerWatch, HalError, ServedCalls, V1_ROBOT, scoped, silentLogger } from '@hal/types';
+import { ControllerWatch, ServedCalls } from '@hal/runtime';
+import { HalError, V1_ROBOT, scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer, RobotConfig, ScopedLogger } from '@hal/types';
 import type { Msg, NatsConnection, Subscription } from '@nats-io/transport-node';
 import { z } from 'zod';

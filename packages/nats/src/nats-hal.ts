@@ -1,4 +1,6 @@
-import { ForwardingHAL, HalError, scoped, silentLogger } from '@hal/types';
+import { ForwardingHAL } from '@hal/runtime';
+import type { SendOptions } from '@hal/runtime';
+import { HalError, scoped, silentLogger } from '@hal/types';
 import type {
   CallSpec,
   CallTable,
@@ -8,7 +10,6 @@ import type {
   Logger,
   SafetyStatus,
   ScopedLogger,
-  SendOptions,
 } from '@hal/types';
 import type { NatsConnection } from '@nats-io/transport-node';
 import { decodeMessage, encodeArgs, encodeMessage } from './codec.js';

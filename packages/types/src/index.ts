@@ -127,12 +127,6 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
-export { ForwardingHAL } from './forwarding/forwarding-hal.js';
-export type {
-  ForwardingHALOptions,
-  HostLatchPolicy,
-  SendOptions,
-} from './forwarding/forwarding-hal.js';
 export {
   DEFAULT_ESTOP_REASON,
   ESTOP_REASON_MAX_BYTES,
@@ -184,14 +178,6 @@ export {
 } from './vocabulary/time.js';
 export type { RetryPolicy, Timers } from './vocabulary/time.js';
 export type { LogLevel, Logger, ScopedLogger } from './vocabulary/logger.js';
-
-// The server side shared by every server of a HAL (WebSocket, NATS).
-export { browserRefusal, hostOfHeader, isLoopback, trustedOrigin } from './serving/browser-gate.js';
-export type { BrowserRefusal, GateHeaders } from './serving/browser-gate.js';
-export { ControllerWatch } from './serving/controller-watch.js';
-export type { ControllerWatchOptions } from './serving/controller-watch.js';
-export { ServedCalls } from './serving/served-calls.js';
-export type { ServedCallsOptions } from './serving/served-calls.js';
 
 export type {
   DriveDone,

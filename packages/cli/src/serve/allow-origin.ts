@@ -1,6 +1,7 @@
 // `hal serve --allow-origin <origin>`: a web page's origin the WebSocket door trusts beyond this
 // machine's own (repeatable). The origin is checked as serveHal checks its allowedOrigins.
-import { isHalError, trustedOrigin } from '@hal/types';
+import { trustedOrigin } from '@hal/runtime';
+import { isHalError } from '@hal/types';
 import { usageError } from '../values.js';
 
 /** Adds one `--allow-origin` value, normalised, to the ones given before it. */

@@ -1,6 +1,8 @@
 // A HardwareAbstractionLayer whose robot is served by serveHal() in another process. Node and
 // browser: it never imports `ws` statically.
-import { ForwardingHAL, HalError, scoped, silentLogger } from '@hal/types';
+import { ForwardingHAL } from '@hal/runtime';
+import type { SendOptions } from '@hal/runtime';
+import { HalError, scoped, silentLogger } from '@hal/types';
 import type {
   CallSpec,
   DeviceInfo,
@@ -8,7 +10,6 @@ import type {
   HALMode,
   SafetyStatus,
   ScopedLogger,
-  SendOptions,
 } from '@hal/types';
 import type { Role } from '../protocol.js';
 import { Connection } from './connection.js';

@@ -1,7 +1,8 @@
 import { createHash, timingSafeEqual } from 'node:crypto';
 import type { IncomingMessage } from 'node:http';
 import type { Duplex } from 'node:stream';
-import { HalError, browserRefusal, isLoopback, trustedOrigin } from '@hal/types';
+import { browserRefusal, isLoopback, trustedOrigin } from '@hal/runtime';
+import { HalError } from '@hal/types';
 
 /** Refuses to serve beyond this machine without a token. */
 export function checkBinding(host: string, token: string | undefined): void {

@@ -3,7 +3,8 @@
 // others watch. See docs/remote.md.
 import type { Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { ControllerWatch, ServedCalls, scoped, silentLogger } from '@hal/types';
+import { ControllerWatch, ServedCalls } from '@hal/runtime';
+import { scoped, silentLogger } from '@hal/types';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import type { WebSocketServer } from 'ws';
 import type { ClientSession } from './client-session.js';

@@ -1,4 +1,5 @@
-import { HalError, trustedOrigin } from '@hal/types';
+import { trustedOrigin } from '@hal/runtime';
+import { HalError } from '@hal/types';
 import { checkBinding } from './auth.js';
 import { SERVE_DEFAULTS } from './options.js';
 import type { ServeHalOptions } from './options.js';

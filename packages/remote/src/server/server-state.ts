@@ -1,4 +1,5 @@
-import type { ControllerWatch, HardwareAbstractionLayer, LogLevel, ServedCalls } from '@hal/types';
+import type { ControllerWatch, ServedCalls } from '@hal/runtime';
+import type { HardwareAbstractionLayer, LogLevel } from '@hal/types';
 import type { WebSocket } from 'ws';
 import type { ClientSession } from './client-session.js';
 import type { ServeSettings } from './serve-settings.js';

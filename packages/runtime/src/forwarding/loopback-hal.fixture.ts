@@ -1,15 +1,19 @@
 // A ForwardingHAL whose "link" is a function call to a HAL in the same process (the reference
 // HAL), with every answer copied as a wire would, a switch to take the link down, and a record
 // of what was sent. Only for the base's unit tests; the real transports are NatsHAL and RemoteHAL.
-import { HalError } from '../errors.js';
-import type { HALLogLevel, HardwareAbstractionLayer } from '../interfaces.js';
-import type { HALMode } from '../mode.js';
-import type { DeviceInfo, SafetyStatus } from '../pose.js';
-import type { CallSpec, CallTable } from '../schemas/call-table.js';
-import { callMethod, invokeSpec } from '../schemas/invoke-call.js';
-import { ReferenceHAL } from '../testing/reference-hal.fixture.js';
-import { scoped } from '../vocabulary/logger.js';
-import type { Logger } from '../vocabulary/logger.js';
+import { HalError, callMethod, invokeSpec, scoped } from '@hal/types';
+import type {
+  CallSpec,
+  CallTable,
+  DeviceInfo,
+  HALLogLevel,
+  HALMode,
+  HardwareAbstractionLayer,
+  Logger,
+  SafetyStatus,
+} from '@hal/types';
+// the contract suite's own reference HAL, a test fixture @hal/types does not export
+import { ReferenceHAL } from '../../../types/src/testing/reference-hal.fixture.js';
 import { ForwardingHAL } from './forwarding-hal.js';
 import type { HostLatchPolicy, SendOptions } from './forwarding-hal.js';
 

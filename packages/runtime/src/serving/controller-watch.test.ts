@@ -1,9 +1,10 @@
 import { connect, createServer } from 'node:net';
 import type { AddressInfo } from 'node:net';
 import { afterEach, describe, expect, it } from 'vitest';
-import { ReferenceHAL } from '../testing/reference-hal.fixture.js';
-import { scoped } from '../vocabulary/logger.js';
-import type { LogLevel } from '../vocabulary/logger.js';
+import { scoped } from '@hal/types';
+import type { LogLevel } from '@hal/types';
+// the contract suite's own reference HAL, a test fixture @hal/types does not export
+import { ReferenceHAL } from '../../../types/src/testing/reference-hal.fixture.js';
 import { ControllerWatch } from './controller-watch.js';
 
 function clock() {

@@ -2,7 +2,7 @@
 // a WebSocket (nor to a simple POST), so any page the user opens could reach a server on
 // 127.0.0.1, directly or through a DNS-rebound name; what gives such a page away is its request's
 // `Origin`, and a rebound name its `Host`. Programs (the CLI, Node clients) send no `Origin`.
-import { HalError } from '../errors.js';
+import { HalError } from '@hal/types';
 
 /** True for an address or name only this machine can reach: `localhost`, 127.0.0.0/8, `::1`. */
 export function isLoopback(host: string): boolean {

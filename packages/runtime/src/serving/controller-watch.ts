@@ -1,6 +1,5 @@
-import type { HardwareAbstractionLayer } from '../interfaces.js';
-import type { ScopedLogger } from '../vocabulary/logger.js';
-import { nextTurn } from '../vocabulary/next-turn.js';
+import { nextTurn } from '@hal/types';
+import type { HardwareAbstractionLayer, ScopedLogger } from '@hal/types';
 
 export interface ControllerWatchOptions {
   /** A watched client that has sent nothing for longer than this, ms, has gone silent. */

@@ -1,7 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import type { HardwareAbstractionLayer } from '../interfaces.js';
-import { HAL_CALL_TABLE } from '../schemas/call-table.js';
-import type { CallSpec } from '../schemas/call-table.js';
+import { HAL_CALL_TABLE } from '@hal/types';
+import type { CallSpec, HardwareAbstractionLayer } from '@hal/types';
 import { ServedCalls } from './served-calls.js';
 
 const spec = (name: string): CallSpec => {

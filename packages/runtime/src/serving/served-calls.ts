@@ -1,8 +1,5 @@
-import { HalError } from '../errors.js';
-import type { HardwareAbstractionLayer } from '../interfaces.js';
-import { HAL_CALL_TABLE } from '../schemas/call-table.js';
-import type { CallSpec, CallTable } from '../schemas/call-table.js';
-import { invokeSpec } from '../schemas/invoke-call.js';
+import { HAL_CALL_TABLE, HalError, invokeSpec } from '@hal/types';
+import type { CallSpec, CallTable, HardwareAbstractionLayer } from '@hal/types';
 import { CommandQueue } from './command-queue.js';
 
 export interface ServedCallsOptions {

@@ -1,26 +1,33 @@
-import { HalError, isHalError } from '../errors.js';
-import { sanitizeEstopReason } from '../estop-reason.js';
+import {
+  EstopLatch,
+  HAL_CALL_TABLE,
+  HALToolResultSchema,
+  HalBoundary,
+  HalError,
+  V1_ROBOT,
+  failureResult,
+  forwardCalls,
+  isHalError,
+  objectFromArgs,
+  sanitizeEstopReason,
+  successResult,
+} from '@hal/types';
 import type {
+  CallName,
+  CallSpec,
+  CallTable,
   CommunicationInterface,
+  DeviceInfo,
   HALLogLevel,
+  HALMode,
+  HALToolResult,
   HardwareAbstractionLayer,
   LocomotionInterface,
   SafetyInterface,
+  SafetyStatus,
+  ScopedLogger,
   VisionInterface,
-} from '../interfaces.js';
-import type { HALMode } from '../mode.js';
-import type { DeviceInfo, SafetyStatus } from '../pose.js';
-import { HALToolResultSchema, failureResult, successResult } from '../result.js';
-import type { HALToolResult } from '../result.js';
-import { V1_ROBOT } from '../robot-config.js';
-import { HAL_CALL_TABLE } from '../schemas/call-table.js';
-import type { CallSpec, CallTable } from '../schemas/call-table.js';
-import type { CallName } from '../schemas/calls.js';
-import { forwardCalls } from '../schemas/forward-calls.js';
-import { objectFromArgs } from '../schemas/invoke-call.js';
-import { HalBoundary } from '../validation.js';
-import { EstopLatch } from '../vocabulary/estop-latch.js';
-import type { ScopedLogger } from '../vocabulary/logger.js';
+} from '@hal/types';
 
 /**
  * How long the host's e-stop latch is the host's own:

@@ -1,9 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { isHalError } from '../errors.js';
-import { HAL_CALL_TABLE } from '../schemas/call-table.js';
-import type { CallSpec } from '../schemas/call-table.js';
-import { describeHalContract } from '../testing/contract.js';
-import type { Logger } from '../vocabulary/logger.js';
+import { HAL_CALL_TABLE, isHalError } from '@hal/types';
+import type { CallSpec, Logger } from '@hal/types';
+import { describeHalContract } from '@hal/types/testing';
 import { LoopbackHAL } from './loopback-hal.fixture.js';
 
 const refuseEstop = (spec: CallSpec) =>
