@@ -40,3 +40,13 @@ export function toolCatalog(table: CallTable): readonly ToolEntry[] {
  * schemas' descriptions.
  */
 export const TOOL_CATALOG: readonly ToolEntry[] = toolCatalog(HAL_CALL_TABLE);
+
+/**
+ * The tool that stops the wheels (the call table's stop on the safety lane): an agent's loop
+ * stops the robot with it at the end of a run, so a chosen set of tools always keeps it.
+ */
+export const STOP_TOOL: string = (() => {
+  const stop = TOOL_CATALOG.find((tool) => tool.safety === 'stop');
+  if (stop === undefined) throw new Error('the call table has no stop on the safety lane');
+  return stop.name;
+})();

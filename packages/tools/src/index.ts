@@ -2,7 +2,7 @@ export { halTools } from './tools.js';
 export type { AgentTool, HalTool, HalToolsOptions } from './tools.js';
 export { toolBackedHal } from './tool-backed-hal.js';
 
-export { TOOL_CATALOG, toolCatalog } from './catalog.js';
+export { STOP_TOOL, TOOL_CATALOG, toolCatalog } from './catalog.js';
 export type { ToolEntry, ToolSafety } from './catalog.js';
 
 export { toolParameters } from './json-schema.js';

@@ -28,7 +28,7 @@ import { addLeashOptions, leashFromOptions } from '../leash-options.js';
 import type { LeashCliOptions } from '../leash-options.js';
 import { AGENT_EVENT, recordHal, TOPICS } from '@hal/recorder';
 import { integerArg, positiveArg, urlArg } from '../values.js';
-import { createToolExecutor, halTools, toOpenAITools } from '@hal/tools';
+import { createToolExecutor, halTools, STOP_TOOL, toOpenAITools } from '@hal/tools';
 import type { Logger, Pose } from '@hal/types';
 import { DEFAULT_SMALL_MODEL_STEPS, DEFAULT_STEPS, modelChoice } from '../agent/model-choice.js';
 import { offeredTools } from '../mcp/offered-tools.js';
@@ -250,7 +250,7 @@ export const registerAgent: RegisterCommand = (program, { io, global }) => {
                 tools:
                   choice.kind === 'endpoint' && choice.tools !== undefined
                     ? // the loop stops the robot with `stop` at the end of a run: always keep it
-                      halTools(hal, { include: [...new Set([...choice.tools, 'stop'])] })
+                      halTools(hal, { include: [...new Set([...choice.tools, STOP_TOOL])] })
                     : halTools(hal),
                 leash,
                 ...timeout,

@@ -1,6 +1,7 @@
 // `hal eval`: scores agents on the seeded tasks of @hal/eval in the simulator: the oracle, the
 // baselines, the local model, any OpenAI-compatible endpoint. Progress on stderr, the table (or
 // with --json the report) on stdout, the reports in --out, and --min-success fails a CI run.
+import { STOP_TOOL } from '@hal/tools';
 import { Command } from 'commander';
 import { toolsChoice } from '../tools-option.js';
 import { addGuardOptions, guardSettingsFromOptions } from '../guard-options.js';
@@ -56,7 +57,7 @@ async function evalAction(output: EvalOutput, options: EvalCliOptions): Promise<
   const guard = guardSettingsFromOptions(options) ?? false;
   const reality = realityOf(options);
   const settings: AgentRun['settings'] = {
-    ...(tools === undefined ? {} : { tools: [...new Set([...tools, 'stop'])] }),
+    ...(tools === undefined ? {} : { tools: [...new Set([...tools, STOP_TOOL])] }),
     ...(profile === undefined ? {} : { profile }),
     ...(sensors === undefined ? {} : { sensors }),
     ...(Object.keys(leash).length === 0 ? {} : { leash }),

@@ -2,6 +2,7 @@ import {
   CAPABILITIES,
   ROBOT_PART_CAPABILITY,
   cameraModel,
+  errorMessage,
   HalError,
   scoped,
   silentLogger,
