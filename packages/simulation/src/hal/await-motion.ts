@@ -3,6 +3,7 @@ import type { Contact } from '../robot/contact.js';
 import type { MotionHandle, MotionReport } from '../robot/motion-report.js';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { HalContext } from './context.js';
+import { SIMULATION_HAL_DEFAULTS } from './options.js';
 
 /** The robot's pose as results carry it: metres and radians, the frame of its odometry. */
 export function poseData(robot: SimRobot): Record<string, number> {
@@ -95,8 +96,8 @@ async function waitForClock(
 ): Promise<void> {
   const stallMs =
     ctx.clock === 'manual'
-      ? (ctx.options.manualTimeoutMs ?? 60_000)
-      : (ctx.options.stallTimeoutMs ?? 5000);
+      ? (ctx.options.manualTimeoutMs ?? SIMULATION_HAL_DEFAULTS.manualTimeoutMs)
+      : (ctx.options.stallTimeoutMs ?? SIMULATION_HAL_DEFAULTS.stallTimeoutMs);
   const deadlineUs = report.startedUs + plannedUs + 1_000_000;
   let seenUs = ctx.world.nowUs;
   let seenAt = Date.now();

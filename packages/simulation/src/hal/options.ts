@@ -78,12 +78,25 @@ export interface SimulationHALOptions {
   logger?: Logger;
 }
 
+/** Every default of a SimulationHAL, in one place (the options above say how each is used). */
+export const SIMULATION_HAL_DEFAULTS = Object.freeze({
+  clock: 'fast' as SimulationClock,
+  realtimeSpeed: 1,
+  /** 'manual' clock: a motion fails TIMEOUT when the clock has not moved for this long, ms. */
+  manualTimeoutMs: 60_000,
+  /** 'realtime' clock: a motion fails TIMEOUT when the ticker has stalled this long, ms. */
+  stallTimeoutMs: 5000,
+  /** The V1 robot's parts, but for the simulator's sensors: a camera, range sensors, an IMU. */
+  features: Object.freeze({ camera: true, rangeSensors: true, imu: true, speaker: false }),
+});
+
 /** The features a robot has: those asked for, the rest by default (all but the speaker). */
 export function resolveFeatures(features: SimulatedFeatures = {}): Required<SimulatedFeatures> {
+  const defaults = SIMULATION_HAL_DEFAULTS.features;
   return {
-    camera: features.camera ?? true,
-    rangeSensors: features.rangeSensors ?? true,
-    imu: features.imu ?? true,
-    speaker: features.speaker ?? false,
+    camera: features.camera ?? defaults.camera,
+    rangeSensors: features.rangeSensors ?? defaults.rangeSensors,
+    imu: features.imu ?? defaults.imu,
+    speaker: features.speaker ?? defaults.speaker,
   };
 }

@@ -38,7 +38,7 @@ import { checkInsideArena } from './arena-bounds.js';
 import { awaitMotion } from './await-motion.js';
 import type { HalContext } from './context.js';
 import type { SimulationHALEvents } from './events.js';
-import { resolveFeatures } from './options.js';
+import { resolveFeatures, SIMULATION_HAL_DEFAULTS } from './options.js';
 import type { SimulatedFeatures, SimulationClock, SimulationHALOptions } from './options.js';
 import { softwareFrameSource } from './frame-source.js';
 
@@ -74,7 +74,7 @@ export class WorldBinding implements RobotPort {
     this.#log = scoped(options.logger ?? silentLogger, 'hal:simulation');
     this.world =
       options.world ?? new World(options.logger === undefined ? {} : { logger: options.logger });
-    this.#clock = options.clock ?? 'fast';
+    this.#clock = options.clock ?? SIMULATION_HAL_DEFAULTS.clock;
     this.features = resolveFeatures(options.features);
     if (options.robotId !== undefined) {
       this.#robotId = this.world.robot(options.robotId).id;
@@ -130,7 +130,9 @@ export class WorldBinding implements RobotPort {
 
   async open(): Promise<void> {
     if (this.#clock === 'realtime' && this.world.realtimeSpeed === 0) {
-      this.world.startRealtime({ speed: this.#options.realtimeSpeed ?? 1 });
+      this.world.startRealtime({
+        speed: this.#options.realtimeSpeed ?? SIMULATION_HAL_DEFAULTS.realtimeSpeed,
+      });
       this.#startedTicker = true;
     }
     // PhysicalHAL opens a session with `hello`, which resets the robot's distance accumulators.
