@@ -3,5 +3,5 @@
 // Its types are node-llama-cpp's (`Llama`, `LlamaGrammar`, `GbnfJsonOneOfSchema`), so importing
 // it needs node-llama-cpp installed; the main entry's types need nothing of node-llama-cpp (so
 // nothing of grammar-schema.ts or grammar.ts is exported there).
-export { MAX_COUNTED_REPETITION, replySchema } from './grammar-schema.js';
+export { replySchema } from './grammar-schema.js';
 export { replyGrammar } from './grammar.js';

@@ -1,13 +1,11 @@
 export { runAgent } from './run-agent.js';
 export type { AgentOutcome } from './agent-loop.js';
-export { DEFAULT_CAPS } from './options.js';
 export type { AgentCaps, AgentEndpoint, AgentToolExecutor, RunAgentOptions } from './options.js';
 export type { AgentDoneReason, AgentEvent, AgentEventListener } from './events.js';
 export { AgentError } from './errors.js';
 export type { AgentErrorCode } from './errors.js';
-export { DEFAULT_RETRY, retryableStatus } from './retry.js';
+export { retryableStatus } from './retry.js';
 export type { RetryPolicy } from './retry.js';
-export { AGENT_SYSTEM_PROMPT } from './prompt.js';
 export type { ChatContentPart, ChatMessage, ChatTool, ChatToolCall } from './chat-types.js';
 export type {
   ChatProvider,

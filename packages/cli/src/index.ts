@@ -2,11 +2,10 @@
 // streams of CliIO), read its errors (ErrorDocument, CliError), and build fleet devices the way
 // `hal fleet` does (deviceFactories, for @hal/fleet/node's DeviceManager), and check what
 // `hal look --json` prints (LookDocumentSchema).
-export { buildProgram, runHal } from './program.js';
-export type { ErrorDocument } from './program.js';
-export { CliError, CLI_ERROR_CODES } from './cli-error.js';
+export { runHal } from './program.js';
+export { CliError } from './cli-error.js';
 export type { CliErrorCode } from './cli-error.js';
-export type { CliIO, GlobalOptions } from './io.js';
+export type { CliIO } from './io.js';
 export { deviceFactories } from './fleet/device-factories.js';
 export type { FleetDeviceFactories } from './fleet/device-factories.js';
 export { LookDocumentSchema } from './look/look-document.js';

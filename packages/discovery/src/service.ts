@@ -5,8 +5,6 @@
 export const SERVICE_NAME = 'hal-cube';
 /** The service's transport label. */
 export const SERVICE_PROTOCOL = 'udp';
-/** The full DNS-SD service type. */
-export const SERVICE_TYPE = `_${SERVICE_NAME}._${SERVICE_PROTOCOL}`;
 /** The TXT record layout this package reads and writes (`txtvers`). */
 export const TXT_VERSION = '1';
 /** Longest `key=value` of one TXT entry, bytes: its length is one byte on the wire (RFC 6763 6.1). */

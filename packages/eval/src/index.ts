@@ -1,72 +1,42 @@
 export { builtinTasks } from './builtin-tasks.js';
 export {
-  BudgetSchema,
-  CheckSchema,
   COLOURS,
-  FaultSchema,
-  LeashSchema,
   ObjectSchema,
-  SensorsSchema,
   TASK_FILE_VERSION,
   TASK_GROUPS,
   TaskFileSchema,
   TaskSchema,
-  VariantsSchema,
   WorldSchema,
 } from './task-schema.js';
-export type {
-  Check,
-  ColourName,
-  Fault,
-  Task,
-  TaskFile,
-  TaskGroup,
-  TaskInput,
-  TaskObject,
-} from './task-schema.js';
-export { checkTaskFile, loadTaskFile, parseTaskFile } from './task-load.js';
-export {
-  checkWorld,
-  loadWorldFile,
-  mapWithObjects,
-  parseWorldFile,
-  realiseWorld,
-} from './world-file.js';
-export type { RealisedWorld, TaskWorld, TaskWorldInput } from './world-file.js';
+export type { Task, TaskGroup, TaskObject } from './task-schema.js';
+export { loadTaskFile } from './task-load.js';
+export { loadWorldFile, parseWorldFile, realiseWorld } from './world-file.js';
+export type { RealisedWorld, TaskWorld } from './world-file.js';
 export type { TaskVariant } from './variant.js';
-export { judge, trueAnswer } from './checks.js';
-export type { CheckVerdict, TrialEnd } from './checks.js';
 export type { AgentAnswer, AgentTrial, EvalAgent, ModelFailure } from './agent.js';
 export { oracleAgent } from './agents/oracle.js';
 export { claimerAgent, naiveAgent, straightAgent } from './agents/baselines.js';
-export { runTrial } from './trial.js';
 export type { InstrumentedHal, TrialInfo, TrialOptions, TrialScore, TrialTiming } from './trial.js';
-export { runRobotTrial, runsOnRobot } from './robot-trial.js';
 export type { EvalRobot, StagedRobot } from './robot-trial.js';
 export type { TruePoseSource } from './bodies/staged-body.js';
-export type { TrialBody } from './bodies/trial-body.js';
-export { realiseAtOrigin, realiseTask, variantSeed } from './variant.js';
-export { summariseGroups, summariseTasks, wilson } from './scores.js';
 export type { GroupSummary, Rate, TaskSummary } from './scores.js';
-export { REPORT_VERSION, runEval } from './run-eval.js';
+export { runEval } from './run-eval.js';
 export type { AgentModelFailure, AgentScores, EvalOptions, EvalReport } from './run-eval.js';
 export { EvalError } from './errors.js';
 export type { EvalErrorCode } from './errors.js';
 export { chatAgent } from './agents/chat.js';
 export type { ChatAgentOptions } from './agents/chat.js';
-export { alignColumns, modelFailureNote, summaryTable } from './report/table.js';
+export { modelFailureNote, summaryTable } from './report/table.js';
 export { markdownReport } from './report/markdown.js';
 export { successSvg } from './report/svg.js';
 export { navigationAgent } from './agents/navigation.js';
 export type { NavigationAgentOptions } from './agents/navigation.js';
 export { cameraNavigationAgent } from './agents/camera-navigation.js';
 export { parserAgent } from './agents/parser.js';
-export { planInstruction } from './agents/instruction-plan.js';
-export type { InstructionPlan, PlanQuestion, PlanStep } from './agents/instruction-plan.js';
 export type { CameraNavigationAgentOptions } from './agents/camera-navigation.js';
 export { RealitySchema } from './reality.js';
-export type { Reality, RealityInput } from './reality.js';
-export { BOOTSTRAP_RESAMPLES, BOOTSTRAP_SEED, intervalOverTasks } from './interval.js';
+export type { RealityInput } from './reality.js';
+export { intervalOverTasks } from './interval.js';
 export type { IntervalOptions, TaskCount, TaskIntervalMethod } from './interval.js';
 export { passHatK } from './pass-k.js';
 export type { PassK } from './pass-k.js';

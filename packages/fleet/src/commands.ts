@@ -58,11 +58,6 @@ export type FleetCommand = { kind: string } & Record<string, unknown>;
 /** The HAL's own fleet commands (see {@link fleetCommandSchema}). */
 export const FleetCommandSchema: z.ZodType<FleetCommand> = fleetCommandSchema();
 
-/** The command kinds a fleet understands. */
-export const FLEET_COMMAND_KINDS: readonly string[] = Object.freeze(
-  HAL_CALL_TABLE.filter(isFleetCall).map((spec) => spec.name),
-);
-
 /** Checks a command; a bad one is an INVALID_PARAMETER HalError naming what is wrong. */
 export function parseFleetCommand(
   input: unknown,

@@ -2,11 +2,10 @@
 export { Fleet } from './fleet.js';
 export type { FleetOptions } from './fleet.js';
 
-export { FLEET_MODES, fleetReport } from './report.js';
+export { FLEET_MODES } from './report.js';
 export type { FleetMode, FleetReport, MemberResult } from './report.js';
 
 export {
-  FLEET_COMMAND_KINDS,
   FleetCommandSchema,
   fleetCommandSchema,
   parseFleetCommand,
@@ -16,7 +15,6 @@ export type { FleetCommand } from './commands.js';
 
 export type { FleetMember } from './members.js';
 
-export { DEFAULT_CALL_TIMEOUT_MS } from './synchronized.js';
 export type { MemberCall, SynchronizedOptions } from './synchronized.js';
 
 export { LeaderFollower } from './leader-follower.js';
@@ -27,7 +25,7 @@ export type {
   LeaderFollowerOptions,
 } from './leader-follower-options.js';
 export { FORMATION_SHAPES, formationOffsets } from './formation.js';
-export type { FollowerAction, FormationOffset, FormationShape } from './formation.js';
+export type { FormationOffset, FormationShape } from './formation.js';
 
 export { SteppedScheduler, realTimeScheduler } from './scheduler.js';
 export type { FleetScheduler } from './scheduler.js';

@@ -56,11 +56,6 @@ export function cameraProjection(camera: CameraModel): CameraProjection {
   };
 }
 
-/** The lens position in the robot's frame. */
-export function lensPosition(camera: CameraModel): Vec3 {
-  return { x: camera.forwardM, y: camera.leftM, z: camera.heightM };
-}
-
 /**
  * The direction (robot frame, not of unit length: its forward component along the optical axis
  * is 1) of the ray through image point (u, v).

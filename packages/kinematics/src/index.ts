@@ -1,18 +1,8 @@
-export { getStepsPerCm, PI, V1_GEOMETRY, wheelCircumferenceCm } from './geometry.js';
+export { getStepsPerCm, V1_GEOMETRY } from './geometry.js';
 export type { MotionLimits, RobotGeometry } from './geometry.js';
-export {
-  calculateArcSpeeds,
-  distanceToSteps,
-  exactStepsForDistance,
-  rotationArcCm,
-  rotationToSteps,
-  StepAccumulator,
-  stepsToDistance,
-  truncateSteps,
-  velocityToStepsPerSecond,
-} from './steps.js';
+export { distanceToSteps, rotationArcCm, rotationToSteps, StepAccumulator } from './steps.js';
 export type { WheelPair } from './steps.js';
-export { calculateMoveDuration, toMicros, TrapezoidalProfile, VelocityProfile } from './profile.js';
+export { TrapezoidalProfile, VelocityProfile } from './profile.js';
 export { MovePlan, VelocityPlan } from './planner.js';
 export type { StepPlan } from './planner.js';
 export { integrateOdometry, OdometryIntegrator } from './odometry.js';
@@ -23,7 +13,6 @@ export type { MotionHandle, MotionReport, MoveOutcome } from './robot-model/moti
 export type { SafetyTrip } from './robot-model/robot-safety.js';
 export { checkSetting, FIRMWARE_SETTINGS } from './robot-model/settings.js';
 export type { FirmwareSetting, FirmwareSettingKey } from './robot-model/settings.js';
-export { MAX_DRIVE_DURATION_MS } from './robot-model/speed-limits.js';
 export type { BodyScales, MotionScales, WheelScale } from './robot-model/wheel-scale.js';
 export { blockingContact, NOTHING_TO_TOUCH } from './robot-model/step-contact.js';
 export type {
@@ -35,9 +24,7 @@ export type {
 export {
   cameraProjection,
   floorPointOfPixel,
-  focalLengthPx,
   horizonRow,
-  lensPosition,
   nearestVisibleFloorM,
   pixelOfPoint,
   pixelRay,

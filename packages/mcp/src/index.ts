@@ -16,5 +16,3 @@ export type {
   RobotEventType,
   RobotLogLine,
 } from './events.js';
-export { summarizeMotion } from './motion-words.js';
-export type { MotionSummary, ProgressUnit } from './motion-words.js';

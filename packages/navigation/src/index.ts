@@ -1,13 +1,11 @@
-export { cellCentre, worldToCell } from './grid/geometry.js';
+export { worldToCell } from './grid/geometry.js';
 export type { Cell, GridSpec, Point, Pose2D } from './grid/geometry.js';
 export { gridImageDataUrl, renderGridImage } from './grid/image.js';
 export type { GridImageOptions, RgbaImage } from './grid/image.js';
 export type { KnownMap } from './grid/known-map.js';
-export { DEFAULT_LOG_ODDS } from './grid/log-odds.js';
 export type { CellState, LogOddsModel } from './grid/log-odds.js';
 export { OccupancyGrid } from './grid/occupancy-grid.js';
 export type { CellCounts, OccupancyGridOptions } from './grid/occupancy-grid.js';
-export { DEFAULT_RANGE_SENSORS } from './grid/range-sensor-update.js';
 export type { RangeReadings, RangeSensorModel } from './grid/range-sensor-update.js';
 export { describeWorld } from './grid/summary.js';
 export type { WorldSummaryOptions } from './grid/summary.js';
@@ -22,24 +20,14 @@ export { ObstacleMap } from './planner/obstacle-map.js';
 export { NavigationError } from './errors.js';
 export type { NavigationErrorCode } from './errors.js';
 
-export {
-  NavigationDecisionSchema,
-  createDecisionSchema,
-  decisionJsonSchema,
-  parseDecision,
-} from './decision/schema.js';
-export type {
-  DecisionBounds,
-  NavigationAction,
-  NavigationActionType,
-  NavigationDecision,
-} from './decision/schema.js';
+export { NavigationDecisionSchema, decisionJsonSchema, parseDecision } from './decision/schema.js';
+export type { DecisionBounds, NavigationDecision } from './decision/schema.js';
 export type { ActionReport, DecisionContext, DecisionProvider } from './decision/provider.js';
 export { FrontierExplorationProvider, GoalSeekingProvider } from './decision/deterministic.js';
 export type { FrontierExplorationOptions } from './decision/deterministic.js';
 export { OpenAICompatibleProvider } from './decision/llm-provider.js';
 export type { OpenAICompatibleOptions, ResponseFormatMode } from './decision/llm-options.js';
-export { findFrontier, reachableFrontiers } from './grid/frontier.js';
+export { reachableFrontiers } from './grid/frontier.js';
 export type { Frontier, FrontierCell, FrontierOptions } from './grid/frontier.js';
 
 export { NavigationBridge } from './bridge/navigation-bridge.js';

@@ -5,7 +5,6 @@ export { PhysicalHAL } from './hal/physical-hal.js';
 export { WireBinding } from './hal/wire-binding.js';
 export type { PhysicalHALOptions, RobotIdentity } from './hal/options.js';
 export type { StartPose } from './pose-tracker.js';
-export { calibrationParams, robotCalibration } from './hal/calibration.js';
 export type { CalibrationSource, RobotCalibration, WheelCalibration } from './hal/calibration.js';
 export {
   calibrationDir,
@@ -17,15 +16,10 @@ export {
   writeCalibrationFile,
 } from './calibration/calibration-file.js';
 export type { CalibrationFile } from './calibration/calibration-file.js';
-export {
-  calibratedGeometry,
-  calibrationFileOf,
-  calibrationSource,
-} from './calibration/calibration-source.js';
+export { calibratedGeometry, calibrationSource } from './calibration/calibration-source.js';
 export { DEVICE_SETTING_RANGES } from './protocol/device-config.js';
 export type { SettingRange } from './protocol/device-config.js';
 
-export { DEFAULT_SAFETY_LANE } from './safety-lane.js';
 export type { SafetyLaneTiming } from './safety-lane.js';
 export type { SessionState } from './session.js';
 export type { ReportedSteps } from './pose-tracker.js';
@@ -46,7 +40,6 @@ export { serialTransport } from './transport/serial.js';
 export type {
   SerialPortLike,
   SerialPortOpener,
-  SerialTransport,
   SerialTransportOptions,
 } from './transport/serial.js';
 

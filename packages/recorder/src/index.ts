@@ -2,7 +2,7 @@ export { McapRecorder } from './recorder.js';
 export type { RecorderOptions, RecorderStats } from './recorder-options.js';
 export { recordHal, RECORDER_VERSION } from './record-hal.js';
 export type { RecordHalOptions } from './record-hal-options.js';
-export { memorySink, openFileSink } from './file-sink.js';
+export { memorySink } from './file-sink.js';
 export type { RecordingSink } from './file-sink.js';
 export { readRecording, readRecordingFile } from './read-recording.js';
 export type { ReadRecordingOptions, Recording } from './read-recording.js';
@@ -13,13 +13,11 @@ export type { RecordingReadErrorCode } from './recording-read-error.js';
 export type { ChunkCompression } from './compression.js';
 export {
   AGENT_EVENT,
-  AgentEventRecordSchema,
   CALL_RECORD,
   HAL_POSE,
   HalCallRecordSchema,
   LINK_STATS,
   LinkStatsSchema,
-  RECORDER_LOSS,
   RecorderLossSchema,
   SAFETY_EVENT,
   SafetyEventSchema,
@@ -46,15 +44,14 @@ export {
   quaternionFromEuler,
 } from './foxglove-schemas.js';
 export type { NamedJsonSchema } from './foxglove-schemas.js';
-export { GRID, SCENE_UPDATE } from './foxglove-scene-schemas.js';
-export { MAX_PENDING_LOOKS, PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
+export { PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
 export type {
   PerceivedLook,
   PerceptionRecording,
   RecordablePerception,
   RecordPerceptionOptions,
 } from './record-perception.js';
-export { OCCUPANCY, PERCEPTION_FRAME } from './perception-messages.js';
+export { OCCUPANCY } from './perception-messages.js';
 export type { PerceivedGrid, PerceivedObject, PerceivedSighting } from './perception-messages.js';
 export { summarizeRecording } from './summary.js';
 export type { RecordingSummary, RobotSummary } from './summary.js';

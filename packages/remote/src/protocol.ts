@@ -3,7 +3,6 @@
 // payload it carries. See docs/remote.md.
 import {
   DeviceInfoSchema,
-  HAL_CALL_TABLE,
   EnvelopeSchema,
   HALModeSchema,
   HalError,
@@ -13,7 +12,7 @@ import {
   makeEnvelope,
   parseEnvelope,
 } from '@hal/types';
-import type { CallName, CallTable, Envelope, ReadCallName } from '@hal/types';
+import type { Envelope } from '@hal/types';
 import { z } from 'zod';
 
 /** The payload schema names, one per message kind. */
@@ -35,36 +34,6 @@ export const MESSAGE_SCHEMAS = {
   /** server -> client: your role changed. */
   control: 'hal.remote.control',
 } as const;
-
-/** The names of the calls of a table a client can make (all of them). */
-export function remoteCalls(table: CallTable = HAL_CALL_TABLE): readonly string[] {
-  return Object.freeze(table.map((spec) => spec.name));
-}
-
-/** Calls answered with a `HALToolResult`. */
-export const RESULT_CALLS: readonly ResultCallName[] = Object.freeze(
-  HAL_CALL_TABLE.filter((spec) => spec.kind === 'motion' || spec.kind === 'result').map(
-    (spec) => spec.name as ResultCallName,
-  ),
-);
-/** Calls answered with a value (checked with `READ_RESULT_SCHEMAS` of `@hal/types`). */
-export const VALUE_CALLS: readonly ValueCallName[] = Object.freeze(
-  HAL_CALL_TABLE.filter((spec) => spec.kind === 'value').map((spec) => spec.name as ValueCallName),
-);
-/** Every call a client can make; `log` is answered with an empty reply. */
-export const REMOTE_CALLS: readonly RemoteCallName[] = remoteCalls() as readonly RemoteCallName[];
-export type ResultCallName = Exclude<CallName, ReadCallName | 'log'>;
-export type ValueCallName = ReadCallName;
-export type RemoteCallName = CallName;
-
-/** The calls of a table only the controlling client may make; the rest anyone may. */
-export function controllerCalls(table: CallTable = HAL_CALL_TABLE): ReadonlySet<string> {
-  return new Set(table.filter((spec) => spec.controllerOnly).map((spec) => spec.name));
-}
-
-/** Calls only the controlling client may make; the rest (reads, stop, e-stop) anyone may. */
-export const CONTROLLER_CALLS: ReadonlySet<RemoteCallName> =
-  controllerCalls() as ReadonlySet<RemoteCallName>;
 
 /** Most arguments any call takes, plus headroom. */
 export const MAX_ARGS = 8;

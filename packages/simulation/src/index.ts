@@ -16,19 +16,11 @@ export type { LedState, SimRobotOptions } from './robot/sim-robot.js';
 export { BodyErrorSchema } from './robot/body-error.js';
 export type { BodyError, BodyErrorInput } from './robot/body-error.js';
 export type { Contact, ContactTest } from './robot/contact.js';
-export type { MotionHandle, MotionReport, MoveOutcome } from './robot/motion-report.js';
+export type { MotionHandle, MotionReport } from './robot/motion-report.js';
 export type { SafetyTrip } from './robot/motion-report.js';
 
-export {
-  BoxObstacleSchema,
-  CylinderObstacleSchema,
-  ObstacleSchema,
-  StartPoseSchema,
-  WallSchema,
-  WorldMapSchema,
-  parseMap,
-} from './map.js';
-export type { StartPose, WorldMap, WorldMapInput } from './map.js';
+export { WorldMapSchema, parseMap } from './map.js';
+export type { WorldMap, WorldMapInput } from './map.js';
 export { BUILTIN_MAPS } from './maps/index.js';
 export type { BuiltinMapName } from './maps/index.js';
 
@@ -37,10 +29,9 @@ export type { BoxSolid, CylinderSolid, Point, Rgb, Solid, SolidRole } from './sh
 
 export { readDistanceSensors, scanAround } from './sensors.js';
 export type { RangeSensorOptions } from './sensors.js';
-export { IMU_BANDWIDTH_HZ, SimulatedImu } from './gyro.js';
 export type { ImuOptions } from './gyro.js';
 
-export { cameraModelOf, cameraPose, renderRobotView } from './camera.js';
+export { renderRobotView } from './camera.js';
 export type { CameraOptions, RgbaImage } from './camera.js';
 export { defaultJpegEncoder, encodeJpeg } from './jpeg.js';
 export { canvasJpegEncoder, jpegJsEncoder, loadSharpEncoder } from './jpeg-encoders.js';

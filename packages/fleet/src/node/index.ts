@@ -6,23 +6,17 @@ export type { DeviceFactories, DeviceHALContext } from './create-device-hal.js';
 export {
   DeviceConfigSchema,
   FleetConfigSchema,
-  FleetNatsSchema,
-  NatsDeviceSchema,
   PhysicalDeviceSchema,
   SimulatedDeviceSchema,
-  parseDeviceConfig,
   parseFleetConfig,
 } from './device-config.js';
 export type {
   DeviceConfig,
-  DeviceConfigInput,
   FleetConfig,
   FleetConfigInput,
-  NatsDeviceConfig,
   PhysicalDeviceConfig,
   SimulatedDeviceConfig,
 } from './device-config.js';
 export type { DeviceHealth, DeviceManagerEvents, DeviceTelemetry } from './device-status.js';
-export { OfflineGuardHAL } from './offline-guard.js';
 export { discoverNatsDevices } from './discover.js';
 export type { DiscoveredDevice } from './discover.js';
