@@ -1,7 +1,9 @@
 import { readdirSync } from 'node:fs';
 import { configDefaults, defineConfig } from 'vitest/config';
+import { SlowFirstSequencer } from './tests/helpers/slow-first-sequencer.js';
 
 const packageNames = readdirSync(new URL('./packages', import.meta.url));
+const PUBLISH_FILES = ['tests/publish/installs.test.ts', 'tests/publish/packages.test.ts'];
 
 // Everything inside the repository runs from source through the "@hal/source" export condition,
 // so no test needs a build step.
@@ -15,6 +17,8 @@ export default defineConfig({
     // (vitest's default on two cores is one worker). On a 2-core machine, in one full run each:
     // 378 s with three workers, 330 s with four, with the cores still 15 % idle.
     maxWorkers: 4,
+    // The files of minutes first, so that none starts last and runs alone at the end.
+    sequence: { sequencer: SlowFirstSequencer },
     // A timeout is there to catch a hang, not to time a test: the CPU-bound property and
     // simulation tests take seconds, and several times that on a loaded 2-core machine, past
     // vitest's default of 5 s.
@@ -38,7 +42,19 @@ export default defineConfig({
         test: {
           name: 'tests',
           include: ['tests/**/*.test.ts'],
-          exclude: [...configDefaults.exclude, 'tests/e2e/**'],
+          exclude: [...configDefaults.exclude, 'tests/e2e/**', ...PUBLISH_FILES],
+          testTimeout: 60_000,
+          hookTimeout: 60_000,
+        },
+      },
+      {
+        // The tests of the packed tarballs: one folder for the run, where they pack the packages
+        // and install the app with every tarball once for all of them (tests/publish/shared.ts).
+        extends: true as const,
+        test: {
+          name: 'publish',
+          include: PUBLISH_FILES,
+          globalSetup: ['tests/publish/published.global.ts'],
           testTimeout: 60_000,
           hookTimeout: 60_000,
         },

@@ -7,21 +7,21 @@
 //
 // Needs what packages.test.ts needs (pnpm, npm, tar, the npm registry or a warm npm cache).
 import { execFile } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import {
   fakeModel,
   fakeWheel,
   sha256,
   startFakeIndex,
-} from '../../packages/agent-local/src/fake-index.fixture.js';
+} from '@hal/agent-local/testing';
 import { relativeLinks } from '../docs/markdown-links.js';
 import { startAppCommand } from './app-process.js';
 import { compileImports } from './declarations.js';
+import { everythingAppOnce, packedOnce, publishWork } from './shared.js';
 import { TARBALL_TABLE_HEADER, tarballTable } from './tarball-table.js';
 import {
   cleanEnv,
@@ -32,7 +32,6 @@ import {
   workspaceVersion,
 } from './temp-app.js';
 import type { Manifest, PackedPackage } from './workspace-packages.js';
-import { build, packAll, staleBuilds, workspacePackages } from './workspace-packages.js';
 
 const run = promisify(execFile);
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
@@ -69,15 +68,10 @@ describe('installs a user makes from the packed tarballs', () => {
   };
 
   beforeAll(async () => {
-    work = mkdtempSync(join(tmpdir(), 'hal-installs-'));
-    const sources = workspacePackages(repoRoot).filter((p) => p.manifest.private !== true);
-    await build(repoRoot, staleBuilds(sources));
-    packed = await packAll(repoRoot, join(work, 'tarballs'));
+    // the run's tarballs, packed once for this file and packages.test.ts
+    work = publishWork();
+    packed = await packedOnce(repoRoot);
   }, 300_000);
-
-  afterAll(() => {
-    if (work) rmSync(work, { recursive: true, force: true });
-  });
 
   it("each tarball's README links only to files in the tarball or to web addresses", async () => {
     const broken: string[] = [];
@@ -133,20 +127,9 @@ describe('installs a user makes from the packed tarballs', () => {
     let manifests: Manifest[];
 
     beforeAll(async () => {
-      appDir = join(work, 'everything-app');
-      mkdirSync(appDir);
+      // installed once for the run, without overrides, and shared with packages.test.ts
       manifests = await Promise.all(packed.map((p) => packedManifest(p.filename)));
-      await installApp(
-        appDir,
-        packed,
-        {
-          three: workspaceVersion(repoRoot, 'three', 'packages/simulation'),
-          '@types/three': workspaceVersion(repoRoot, '@types/three', 'packages/simulation'),
-          '@types/node': workspaceVersion(repoRoot, '@types/node'),
-          typescript: workspaceVersion(repoRoot, 'typescript'),
-        },
-        { overrides: false },
-      );
+      appDir = await everythingAppOnce(repoRoot, packed);
     }, 300_000);
 
     it('installs no node-llama-cpp and none of its prebuilt llama.cpp builds', () => {

@@ -1,33 +1,27 @@
 // The packages as a user gets them from npm. Packs every package under packages/ (found at run
 // time) with `pnpm pack`, installs the tarballs with npm into a temporary app outside the
-// workspace, runs a plain `node` ESM program there that imports each package by name and drives
-// SimulationHAL, runs the installed `hal` against the firmware emulator over UDP, serial,
-// WebSocket and NATS, and bundles the library packages for the browser with vite.
+// workspace (both once for the run, shared with installs.test.ts: shared.ts), runs a plain `node`
+// ESM program there that imports each package by name and drives SimulationHAL, runs the
+// installed `hal` against the firmware emulator over UDP, serial, WebSocket and NATS, and bundles
+// the library packages for the browser with vite.
 //
 // Needs: pnpm and npm on PATH, tar, and the npm registry or a warm npm cache for the third-party
 // dependencies (zod, crc, serialport, jpeg-js, three): npm installs them with --prefer-offline;
 // the cube-emulator (firmware/scripts/test.sh builds it) and nats-server.
 // Packs the dist/ that `pnpm test` builds just before (a stale or missing dist is rebuilt first).
-// Everything it writes is in a temporary folder, removed at the end.
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+// Everything it writes is in the run's temporary folder (published.global.ts), removed at the end.
+import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { TRANSPORTS, expectFromRobot, statusOver } from '../cli/every-transport.js';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import { startNatsServer, stopAllNatsServers } from '../nats/nats-server.js';
 import { bundleForBrowser, isNativePackage, packageDirOf } from './browser-bundle.js';
-import {
-  cleanEnv,
-  installApp,
-  packedFiles,
-  packedManifest,
-  runAppCommand,
-  runNodeApp,
-} from './temp-app.js';
+import { everythingAppOnce, packedOnce } from './shared.js';
+import { cleanEnv, packedFiles, packedManifest, runAppCommand, runNodeApp } from './temp-app.js';
 import type { Manifest, PackedPackage, WorkspacePackage } from './workspace-packages.js';
-import { build, packAll, staleBuilds, workspacePackages } from './workspace-packages.js';
+import { workspacePackages } from './workspace-packages.js';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 
@@ -58,24 +52,14 @@ function nodeOnly(manifest: { exports?: Record<string, unknown> }): boolean {
   return entries.length > 0 && entries.every(entryNodeOnly);
 }
 
-/** The version of three the workspace uses: the one a user's app adds for the scene binding. */
-function threeVersion(): string {
-  const manifest = join(repoRoot, 'packages/simulation/node_modules/three/package.json');
-  return `^${(JSON.parse(readFileSync(manifest, 'utf8')) as { version: string }).version}`;
-}
-
 describe('the packages as published', () => {
-  let work: string;
   let appDir: string;
   let published: Published[];
 
   beforeAll(async () => {
-    work = mkdtempSync(join(tmpdir(), 'hal-published-'));
-    appDir = join(work, 'app');
     // A package marked private is not published (none is today).
     const sources = workspacePackages(repoRoot).filter((p) => p.manifest.private !== true);
-    await build(repoRoot, staleBuilds(sources));
-    const packed = await packAll(repoRoot, join(work, 'tarballs'));
+    const packed = await packedOnce(repoRoot);
     published = await Promise.all(
       sources.map(async (source) => {
         const tarball = packed.find((p) => p.name === source.manifest.name);
@@ -87,17 +71,9 @@ describe('the packages as published', () => {
         return { source, packed: tarball, manifest, files };
       }),
     );
-    mkdirSync(appDir);
-    await installApp(
-      appDir,
-      published.map((p) => p.packed),
-      { three: threeVersion() },
-    );
+    // every tarball and three (for the scene binding), as a user installs them
+    appDir = await everythingAppOnce(repoRoot, packed);
   }, 300_000);
-
-  afterAll(() => {
-    if (work) rmSync(work, { recursive: true, force: true });
-  });
 
   it('packs every package under packages/ with its metadata, dist and license, and no workspace specifier', () => {
     expect(published.length).toBeGreaterThanOrEqual(6);
