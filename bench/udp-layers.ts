@@ -17,9 +17,8 @@ import { PerformanceObserver } from 'node:perf_hooks';
 import { parseArgs } from 'node:util';
 import { PhysicalHAL, udpTransport } from '@hal/physical';
 import { MessageCodec } from '@hal/physical/protocol';
+import { Session } from '@hal/physical/testing';
 import { silentLogger } from '@hal/types';
-// the session is internal to the package: this tool reaches it where it lies
-import { Session } from '../packages/physical/src/session.js';
 import { startEmulator } from '../tests/physical/emulator.js';
 import { openRawUdpClient, setLedJson } from './raw-udp-client.js';
 import { percentile } from './report/figures.js';

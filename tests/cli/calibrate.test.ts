@@ -5,7 +5,7 @@ import { readFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { runHal } from '@hal/cli';
 import { describe, expect, it } from 'vitest';
-import { fakeTty } from '../../packages/cli/src/teleop/fake-tty.fixture.js';
+import { fakeTty } from '@hal/cli/testing';
 import { LONGEST_HOST_TIMEOUT_MS, startEmulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';
 import {

@@ -1,3 +1,3 @@
-// Runs `hal` in-process from a test outside the package: the package's own capture fixture.
-export { captureIO } from '../../packages/cli/src/capture-io.fixture.js';
-export type { CapturedIO } from '../../packages/cli/src/capture-io.fixture.js';
+// Runs `hal` in-process from a test outside the package, with @hal/cli/testing's captureIO.
+export { captureIO } from '@hal/cli/testing';
+export type { CapturedIO } from '@hal/cli/testing';

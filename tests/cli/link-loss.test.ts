@@ -4,7 +4,7 @@
 // host timeout is what stops it, and exits non-zero.
 import { runHal } from '@hal/cli';
 import { afterEach, describe, expect, it } from 'vitest';
-import { fakeTty } from '../../packages/cli/src/teleop/fake-tty.fixture.js';
+import { fakeTty } from '@hal/cli/testing';
 import { startEmulator, stopAllEmulators } from '../physical/emulator.js';
 import type { Emulator } from '../physical/emulator.js';
 import { captureIO } from './capture-io.js';

@@ -7,13 +7,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { runHal } from '@hal/cli';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import {
-  fakeModel,
-  fakeWheel,
-  sha256,
-  startFakeIndex,
-} from '../../packages/agent-local/src/fake-index.fixture.js';
-import type { FakeIndex } from '../../packages/agent-local/src/fake-index.fixture.js';
+import { fakeModel, fakeWheel, sha256, startFakeIndex } from '@hal/agent-local/testing';
+import type { FakeIndex } from '@hal/agent-local/testing';
 import { HAL_FROM_SOURCE, HAL_LAUNCHER, runHalProcess } from '../helpers/hal-process.js';
 import { captureIO } from './capture-io.js';
 

@@ -12,12 +12,7 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
 import { beforeAll, describe, expect, it } from 'vitest';
-import {
-  fakeModel,
-  fakeWheel,
-  sha256,
-  startFakeIndex,
-} from '@hal/agent-local/testing';
+import { fakeModel, fakeWheel, sha256, startFakeIndex } from '@hal/agent-local/testing';
 import { relativeLinks } from '../docs/markdown-links.js';
 import { startAppCommand } from './app-process.js';
 import { compileImports } from './declarations.js';

@@ -1,3 +1,3 @@
 // What every reader of a recording expects (each message valid against its channel's JSON Schema,
 // log times that never go backwards): the recorder's own check, for the cross-process tests.
-export { expectWellFormed } from '../../packages/recorder/src/validate.fixture.js';
+export { expectWellFormed } from '@hal/recorder/testing';

@@ -6,7 +6,7 @@ import { readRecordingFile } from '@hal/recorder';
 import { SimulationHAL, World } from '@hal/simulation';
 import { Command } from 'commander';
 import { afterEach, describe, expect, it } from 'vitest';
-import { captureIO } from './capture-io.fixture.js';
+import { captureIO } from './testing/capture-io.js';
 import {
   addGuardOptions,
   GUARD_TOPIC,

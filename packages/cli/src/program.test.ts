@@ -1,7 +1,7 @@
 import { Command } from 'commander';
 import { HalError } from '@hal/types';
 import { describe, expect, it } from 'vitest';
-import { captureIO } from './capture-io.fixture.js';
+import { captureIO } from './testing/capture-io.js';
 import { CliError } from './cli-error.js';
 import { emit } from './io.js';
 import { buildProgram, runHal, runProgram } from './program.js';

@@ -1,6 +1,6 @@
 // Waits, bounded, for a command running in-process to write something (tests of long-running
 // commands: `serve`, `status --watch`, `teleop`).
-import type { CapturedIO } from './capture-io.fixture.js';
+import type { CapturedIO } from './testing/capture-io.js';
 
 /** Resolves once `match(io)` is true; rejects with what was written after `timeoutMs`. */
 export async function waitForOutput(

@@ -8,7 +8,7 @@ import { readRecording } from './read-recording.js';
 import { recordHal } from './record-hal.js';
 import { McapRecorder } from './recorder.js';
 import { summarizeRecording } from './summary.js';
-import { expectWellFormed } from './validate.fixture.js';
+import { expectWellFormed } from './testing/well-formed.js';
 
 describe('robotNamespace', () => {
   it('leaves the topics of one robot as they are, and puts a namespaced robot under /<namespace>', () => {

@@ -10,7 +10,7 @@ import { readRecording } from './read-recording.js';
 import type { Recording } from './read-recording.js';
 import { recordHal } from './record-hal.js';
 import { McapRecorder } from './recorder.js';
-import { expectWellFormed } from './validate.fixture.js';
+import { expectWellFormed } from './testing/well-formed.js';
 
 async function recorded(
   run: (hal: HardwareAbstractionLayer) => Promise<void>,

@@ -5,7 +5,7 @@ import { readRecording } from './read-recording.js';
 import { MAX_PENDING_LOOKS, PERCEPTION_TOPICS, recordPerception } from './record-perception.js';
 import type { PerceivedLook, RecordablePerception } from './record-perception.js';
 import { McapRecorder } from './recorder.js';
-import { expectWellFormed } from './validate.fixture.js';
+import { expectWellFormed } from './testing/well-formed.js';
 
 const BOX: PerceivedObject = {
   id: 'red box 1',

@@ -4,7 +4,7 @@ import { memorySink } from './file-sink.js';
 import { CALL_RECORD, TOPICS } from './messages.js';
 import { readRecording } from './read-recording.js';
 import { McapRecorder } from './recorder.js';
-import { expectWellFormed } from './validate.fixture.js';
+import { expectWellFormed } from './testing/well-formed.js';
 
 function call(n: number): Record<string, unknown> {
   return {

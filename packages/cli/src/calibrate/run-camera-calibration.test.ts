@@ -4,7 +4,7 @@
 import { SimulationHAL, World } from '@hal/simulation';
 import { V1_CAMERA } from '@hal/types';
 import { afterEach, describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import type { Prompter } from './prompt.js';
 import { runCameraCalibration } from './run-camera-calibration.js';
 

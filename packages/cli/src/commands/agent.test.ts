@@ -3,8 +3,8 @@
 // the cores).
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
-import type { CapturedIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
+import type { CapturedIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 
 const MODEL_MS = 120_000; // a busy shared CPU can be slow; a quiet one takes seconds

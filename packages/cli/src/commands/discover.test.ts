@@ -4,7 +4,7 @@ import { afterEach, describe, expect, it } from 'vitest';
 import { Bonjour } from 'bonjour-service';
 import { announceRobot } from '@hal/discovery';
 import type { Announcer } from '@hal/discovery';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 
 const announcers: Announcer[] = [];

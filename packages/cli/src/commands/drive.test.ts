@@ -3,7 +3,7 @@ import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { SimulationHAL } from '@hal/simulation';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 import { waitForOutput } from '../wait-output.fixture.js';
 

@@ -2,8 +2,8 @@
 import { randomBytes } from 'node:crypto';
 import { afterEach, describe, expect, it } from 'vitest';
 import { discoverRobots, findRobot } from '@hal/discovery';
-import { captureIO } from '../capture-io.fixture.js';
-import type { CapturedIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
+import type { CapturedIO } from '../testing/capture-io.js';
 import { builtEmulatorPath } from '../emulate/emulator-path.fixture.js';
 import { runHal } from '../program.js';
 

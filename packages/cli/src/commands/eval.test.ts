@@ -5,7 +5,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { EvalReport } from '@hal/eval';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 
 const MODEL_MS = 240_000; // a busy shared CPU can be slow; a quiet one takes seconds

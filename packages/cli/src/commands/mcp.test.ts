@@ -7,7 +7,7 @@ import { PassThrough } from 'node:stream';
 import { Client } from '@modelcontextprotocol/sdk/client/index.js';
 import { StreamableHTTPClientTransport } from '@modelcontextprotocol/sdk/client/streamableHttp.js';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 import { waitForOutput } from '../wait-output.fixture.js';
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 import { waitForOutput } from '../wait-output.fixture.js';
 

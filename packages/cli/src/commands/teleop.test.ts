@@ -2,10 +2,10 @@ import { serveHal } from '@hal/remote/server';
 import type { HalServer } from '@hal/remote/server';
 import { SimulationHAL } from '@hal/simulation';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
-import { fakeTty } from '../teleop/fake-tty.fixture.js';
-import type { FakeTty } from '../teleop/fake-tty.fixture.js';
+import { fakeTty } from '../testing/fake-tty.js';
+import type { FakeTty } from '../testing/fake-tty.js';
 
 /** Polls `check` until it is true, at most `timeoutMs`. */
 async function until(check: () => Promise<boolean> | boolean, timeoutMs = 10_000): Promise<void> {

@@ -1,6 +1,6 @@
 import { createServer } from 'node:net';
 import { describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 
 /** A 127.0.0.1 port nothing listens on. */

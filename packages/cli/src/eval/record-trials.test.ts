@@ -8,7 +8,7 @@ import { McapIndexedReader } from '@mcap/core';
 import type { McapTypes } from '@mcap/core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { EvalReport } from '@hal/eval';
-import { captureIO } from '../capture-io.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
 import { runHal } from '../program.js';
 
 let dir = '';

