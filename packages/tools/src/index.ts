@@ -5,7 +5,6 @@ export { toolBackedHal } from './tool-backed-hal.js';
 export { STOP_TOOL, TOOL_CATALOG, toolCatalog } from './catalog.js';
 export type { ToolEntry, ToolSafety } from './catalog.js';
 
-export { toolParameters } from './json-schema.js';
 export type { JsonSchemaObject } from './json-schema.js';
 export { parseArguments } from './arguments.js';
 

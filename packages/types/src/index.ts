@@ -21,9 +21,7 @@ export {
   HALConfigSchema,
   RobotConfigSchema,
   V1_ROBOT,
-  maxDistancePerCommandCm,
   maxLinearSpeedMPerS,
-  maxRotationPerCommandDeg,
   minLinearSpeedMPerS,
   robotConfig,
   stepsPerCm,
@@ -76,7 +74,6 @@ export {
   RotateParamsSchema,
   SetLEDParamsSchema,
   SpeakParamsSchema,
-  V1_CALL_SCHEMAS,
   createCallSchemas,
 } from './schemas/calls.js';
 export type {
@@ -118,7 +115,6 @@ export {
   LOG_LEVELS,
   LineSensorsSchema,
   LogParamsSchema,
-  MAX_LOG_MESSAGE_LENGTH,
   NoParamsSchema,
   READ_RESULT_SCHEMAS,
   SCAN_MODES,
@@ -127,21 +123,10 @@ export {
 export type { LogParams, NoParams, ReadCallName, ScanParams } from './schemas/reads.js';
 
 export { HalBoundary } from './validation.js';
-export {
-  DEFAULT_ESTOP_REASON,
-  ESTOP_REASON_MAX_BYTES,
-  sanitizeEstopReason,
-} from './estop-reason.js';
+export { ESTOP_REASON_MAX_BYTES, sanitizeEstopReason } from './estop-reason.js';
 export type { HalBoundaryOptions } from './validation.js';
 
-export {
-  CAPABILITIES,
-  findCapability,
-  formatCapability,
-  hasCapability,
-  isCapabilityCompatible,
-  parseCapability,
-} from './capabilities.js';
+export { CAPABILITIES, hasCapability, parseCapability } from './capabilities.js';
 export type { Capability } from './capabilities.js';
 
 export {
