@@ -3,7 +3,6 @@ import { configDefaults, defineConfig } from 'vitest/config';
 import { SlowFirstSequencer } from './tests/helpers/slow-first-sequencer.js';
 
 const packageNames = readdirSync(new URL('./packages', import.meta.url));
-const PUBLISH_FILES = ['tests/publish/installs.test.ts', 'tests/publish/packages.test.ts'];
 
 // Everything inside the repository runs from source through the "@hal/source" export condition,
 // so no test needs a build step.
@@ -42,18 +41,9 @@ export default defineConfig({
         test: {
           name: 'tests',
           include: ['tests/**/*.test.ts'],
-          exclude: [...configDefaults.exclude, 'tests/e2e/**', ...PUBLISH_FILES],
-          testTimeout: 60_000,
-          hookTimeout: 60_000,
-        },
-      },
-      {
-        // The tests of the packed tarballs: one folder for the run, where they pack the packages
-        // and install the app with every tarball once for all of them (tests/publish/shared.ts).
-        extends: true as const,
-        test: {
-          name: 'publish',
-          include: PUBLISH_FILES,
+          exclude: [...configDefaults.exclude, 'tests/e2e/**'],
+          // a folder for the run, where the tests of the packed tarballs pack the packages and
+          // install the app with every tarball once for all of them (tests/publish/shared.ts)
           globalSetup: ['tests/publish/published.global.ts'],
           testTimeout: 60_000,
           hookTimeout: 60_000,

@@ -1,6 +1,7 @@
-// Global setup of the publish project: a temporary folder for the run, where the test files that
-// need the packed tarballs and the app with every tarball find them, made once (shared.ts), and
-// which is removed when the run ends.
+// Global setup of the tests project: an empty temporary folder for the run, where the test files
+// that need the packed tarballs and the app with every tarball make them, once for all of them
+// (shared.ts); removed when the run ends. A rerun in watch mode gets a fresh folder, so it packs
+// the sources as they are then.
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -14,7 +15,15 @@ declare module 'vitest' {
 }
 
 export default function publishWork(project: TestProject): () => void {
-  const work = mkdtempSync(join(tmpdir(), 'hal-published-'));
-  project.provide('publishWork', work);
-  return () => rmSync(work, { recursive: true, force: true });
+  const folders: string[] = [];
+  const fresh = () => {
+    const work = mkdtempSync(join(tmpdir(), 'hal-published-'));
+    folders.push(work);
+    project.provide('publishWork', work);
+  };
+  fresh();
+  project.onTestsRerun(fresh);
+  return () => {
+    for (const work of folders) rmSync(work, { recursive: true, force: true });
+  };
 }
