@@ -12,7 +12,6 @@ import type {
   Logger,
   SafetyStatus,
 } from '@hal/types';
-// the contract suite's own reference HAL, a test fixture @hal/types does not export
 import { ReferenceHAL } from '@hal/types/testing';
 import { ForwardingHAL } from './forwarding-hal.js';
 import type { HostLatchPolicy, SendOptions } from './forwarding-hal.js';

@@ -3,7 +3,6 @@ import type { AddressInfo } from 'node:net';
 import { afterEach, describe, expect, it } from 'vitest';
 import { scoped } from '@hal/types';
 import type { LogLevel } from '@hal/types';
-// the contract suite's own reference HAL, a test fixture @hal/types does not export
 import { ReferenceHAL } from '@hal/types/testing';
 import { ControllerWatch } from './controller-watch.js';
 
