@@ -116,8 +116,15 @@ describe('a run of the emulated cube, recorded and replayed', () => {
     expect(replay['outcomeMismatches']).toBe(0);
     expect(replay['maxPositionM'] as number).toBeLessThan(0.0002);
     expect(replay['stepMismatches']).toBe(0);
-    // the four motions reported their wheel steps on both sides, so "equal" compared something
-    expect(calls.filter((c) => c.steps !== undefined).map((c) => c.call)).toHaveLength(4);
+    // the four motions, and the e-stop (the steps of the motion it ended), reported their wheel
+    // steps on both sides, so "equal" compared something
+    expect(calls.filter((c) => c.steps !== undefined).map((c) => c.call)).toEqual([
+      'locomotion.moveForward',
+      'locomotion.rotate',
+      'locomotion.moveBackward',
+      'locomotion.rotate',
+      'safety.emergencyStop',
+    ]);
     expect(readFileSync(svg, 'utf8')).toContain('<polyline');
   }, 60_000);
 });
