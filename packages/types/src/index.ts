@@ -175,4 +175,4 @@ export type {
   RobotPort,
   RobotSpeaker,
 } from './robot-port.js';
-export { ROBOT_PART_CAPABILITY } from './robot-port.js';
+export { lastTripError, ROBOT_PART_CAPABILITY } from './robot-port.js';

@@ -149,3 +149,11 @@ export interface RobotPort {
   imu?(): IMUReading;
   readonly speaker?: RobotSpeaker;
 }
+
+/**
+ * How a safety status names the robot's last trip (a step-limit or host-timeout stop, an e-stop)
+ * in its `errors`, in both worlds.
+ */
+export function lastTripError(trip: { reason: string; detail: string }): string {
+  return `last trip: ${trip.reason} (${trip.detail})`;
+}

@@ -1,4 +1,4 @@
-import { EstopLatch, isHalError } from '@hal/types';
+import { EstopLatch, isHalError, lastTripError } from '@hal/types';
 import type { SafetyStatus } from '@hal/types';
 import type { Command, StatusReply } from '../protocol/schemas.js';
 import type { SessionState } from '../session.js';
@@ -79,7 +79,7 @@ export class SafetyCache {
     const errors: string[] = [];
     if (this.#linkError !== undefined) errors.push(this.#linkError);
     const trip = this.#lastStatus?.safety.last_trip;
-    if (trip !== undefined) errors.push(`last trip: ${trip.reason} (${trip.detail})`);
+    if (trip !== undefined) errors.push(lastTripError(trip));
     const status: SafetyStatus = {
       emergencyStopped: this.isEstopped(),
       batteryLevel: 100,

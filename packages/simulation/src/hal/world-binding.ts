@@ -2,6 +2,7 @@ import {
   CAPABILITIES,
   ROBOT_PART_CAPABILITY,
   HalError,
+  lastTripError,
   scoped,
   silentLogger,
   V1_ROBOT,
@@ -276,7 +277,7 @@ export class WorldBinding implements RobotPort {
   safetyStatus(): SafetyStatus {
     const r = this.robot;
     const errors: string[] = [];
-    if (r.lastTrip !== undefined) errors.push(`${r.lastTrip.reason}: ${r.lastTrip.detail}`);
+    if (r.lastTrip !== undefined) errors.push(lastTripError(r.lastTrip));
     const status: SafetyStatus = {
       emergencyStopped: r.emergencyStopped,
       batteryLevel: 100,
