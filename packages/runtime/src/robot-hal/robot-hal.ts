@@ -1,6 +1,5 @@
 import { HalBoundary } from '@hal/types';
 import type {
-  CallTable,
   CommunicationInterface,
   DeviceInfo,
   HALMode,
@@ -39,7 +38,7 @@ export class RobotHAL<Port extends RobotPort = RobotPort> implements HardwareAbs
   #opening: Promise<void> | undefined;
   readonly #logs: string[] = [];
 
-  constructor(binding: Port, options: { calls?: CallTable } = {}) {
+  constructor(binding: Port) {
     this.binding = binding;
     this.mode = binding.mode;
     this.boundary = new HalBoundary({
@@ -49,7 +48,6 @@ export class RobotHAL<Port extends RobotPort = RobotPort> implements HardwareAbs
       // initialised is enough here: a lost link is reported by the call itself, as NOT_CONNECTED
       isReady: () => this.#initialized,
       now: () => binding.now(),
-      ...(options.calls === undefined ? {} : { calls: options.calls }),
     });
     // the call schemas for the robot now, not on the first call after it changed
     binding.onConfigChanged?.(() => this.boundary.schemas());
