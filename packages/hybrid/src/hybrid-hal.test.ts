@@ -179,7 +179,7 @@ describe('HybridHAL', () => {
       expect(() => twin.robot.moveSteps(50_000, 50_000)).toThrow(/step/); // more than one command allows: the twin trips and latches
       expect(hal.safety.isEmergencyStopped()).toBe(true);
       const status = SafetyStatusSchema.parse(hal.safety.getSafetyStatus());
-      expect(status.errors.some((e) => e.startsWith('twin: step_limit'))).toBe(true);
+      expect(status.errors.some((e) => e.startsWith('twin: last trip: step_limit'))).toBe(true);
       expect((await hal.locomotion.moveForward(1)).code).toBe('EMERGENCY_STOPPED');
       expect((await hal.safety.resetEmergencyStop()).success).toBe(true);
       expect(hal.safety.isEmergencyStopped()).toBe(false);
