@@ -1,5 +1,5 @@
 import { RobotHAL } from '@hal/runtime';
-import type { HALConfig } from '@hal/types';
+import type { HALConfig, RobotConfig } from '@hal/types';
 import type { ReportedSteps } from '../pose-tracker.js';
 import type { StatusReply } from '../protocol/schemas.js';
 import type { SessionState } from '../session.js';
@@ -66,7 +66,7 @@ export class PhysicalHAL extends RobotHAL<WireBinding> {
    * robot configuration now in use; RANGE_EXCEEDED naming the field when a value is outside the
    * firmware's range (nothing is sent), the robot's own code when it refuses.
    */
-  async applyCalibration(calibration: WheelCalibration) {
+  async applyCalibration(calibration: WheelCalibration): Promise<RobotConfig> {
     return await this.binding.applyCalibration(calibration);
   }
 

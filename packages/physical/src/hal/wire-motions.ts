@@ -92,6 +92,6 @@ export async function wireResetEmergencyStop(ctx: HalContext): Promise<boolean> 
   return (await ctx.command('reset_estop', {})).was_estopped;
 }
 
-/** Re-exported for the binding's error of a command with no session. */
+/** The error of a command sent with no session open (before `open()`, after `close()`). */
 export const notInitialised = (): HalError =>
   new HalError('NOT_READY', 'the HAL is not initialised');

@@ -1,5 +1,5 @@
 import { RobotHAL } from '@hal/runtime';
-import type { HALConfig, RobotConfig, TypedEmitter } from '@hal/types';
+import type { HALConfig, TypedEmitter } from '@hal/types';
 import type { SimRobot } from '../robot/sim-robot.js';
 import type { World } from '../world.js';
 import type { SimulationHALEvents } from './events.js';
@@ -43,11 +43,6 @@ export class SimulationHAL extends RobotHAL<WorldBinding> {
   /** The simulated robot this HAL drives (looked up by id: a map change re-creates it). */
   get robot(): SimRobot {
     return this.binding.robot;
-  }
-
-  /** The geometry and limits of the simulated robot, which every call is validated against. */
-  override get robotConfig(): RobotConfig {
-    return this.binding.config();
   }
 
   /**
